@@ -1,0 +1,31 @@
+#!/usr/bin/env bash
+# Installs the Debian 12 packages Styk needs. Idempotent: apt-get skips what is present, and the
+# package index is refreshed only when a package is missing.
+# Usage: scripts/install-deps.sh [--test]   (--test adds the test-only peers: calculix-ccx, time)
+set -euo pipefail
+
+packages=(
+  cmake ninja-build g++ pkg-config ccache make
+  libeigen3-dev libsuitesparse-dev libopenblas-dev libmetis-dev
+  petsc-dev
+  libhdf5-dev libcli11-dev libfmt-dev nlohmann-json3-dev
+  libgtest-dev
+)
+if [[ "${1:-}" == "--test" ]]; then
+  packages+=(calculix-ccx time python3)
+fi
+
+missing=()
+for p in "${packages[@]}"; do
+  dpkg-query -W -f='${Status}' "$p" 2>/dev/null | grep -q "install ok installed" || missing+=("$p")
+done
+if (( ${#missing[@]} == 0 )); then
+  exit 0
+fi
+
+SUDO=""
+if [[ $(id -u) -ne 0 ]]; then SUDO="sudo"; fi
+echo "install-deps: installing ${missing[*]}" >&2
+export DEBIAN_FRONTEND=noninteractive
+$SUDO apt-get update -qq
+$SUDO apt-get install -y -qq --no-install-recommends "${missing[@]}" >/dev/null
