@@ -1,0 +1,207 @@
+// TElement defaults (BEE, DEE) and template methods (Jacobian, stiffness, face loads, stresses).
+//
+// Every template method allocates its workspaces once per call, before the integration-point
+// loop; inside the loop only fixed-size temporaries and `noalias()` products are used.
+#include <cmath>
+#include <cstdio>
+#include <stdexcept>
+#include <string>
+#include <vector>
+
+#include <Eigen/Dense>
+
+#include "styk/core/element.hpp"
+
+namespace styk {
+
+namespace {
+
+// "element 12 (C3D8)": how every message names an element.
+std::string element_label(const ElementGeometry& g, const TElement& e) {
+  return "element " + std::to_string(g.id) + " (" + e.name() + ")";
+}
+
+std::string format_number(double value) {
+  char buffer[32];
+  std::snprintf(buffer, sizeof buffer, "%.6g", value);
+  return buffer;
+}
+
+void check_geometry(const ElementGeometry& g, const TElement& e) {
+  if (g.X.rows() != e.node_count() || g.X.cols() != 3)
+    throw InputError(g.where, element_label(g, e) + ": has " + std::to_string(g.X.rows()) +
+                                  " nodes, expected " + std::to_string(e.node_count()));
+}
+
+const FaceDef& checked_face(const ElementGeometry& g, const TElement& e, int face) {
+  const auto& faces = e.faces();
+  if (face < 0 || face >= static_cast<int>(faces.size()))
+    throw InputError(g.where, element_label(g, e) + " has no face S" + std::to_string(face + 1) +
+                                  " (faces S1..S" + std::to_string(faces.size()) + ")");
+  return faces[face];
+}
+
+// Free natural coordinates (s, t) of a face on `axis`, in cyclic order after it, so that
+// x,s x x,t points along +axis on the reference element.
+void face_directions(int axis, int& s, int& t) {
+  s = (axis + 1) % 3;
+  t = (axis + 2) % 3;
+}
+
+// Visits the face integration points: calls visit(N, dN, x_s x x_t, weight) with the shape
+// functions, the natural derivatives and the (unnormalised, +axis oriented) surface normal.
+template <typename Visit>
+void for_each_face_point(const ElementGeometry& g, const TElement& e, const FaceDef& face,
+                         Visit&& visit) {
+  std::vector<double> points, weights;
+  gauss_legendre(e.face_rule_order(), points, weights);
+  int s = 0, t = 0;
+  face_directions(face.axis, s, t);
+  const int n = e.node_count();
+  Eigen::VectorXd N(n);
+  Eigen::MatrixXd dN(n, 3);
+  Eigen::Matrix3d J;
+  for (std::size_t a = 0; a < points.size(); ++a)
+    for (std::size_t b = 0; b < points.size(); ++b) {
+      Vec3 xi{};
+      xi[face.axis] = face.value;
+      xi[s] = points[a];
+      xi[t] = points[b];
+      e.der(xi, N, dN);
+      J.noalias() = dN.transpose() * g.X;  // row i = dx / dxi_i
+      const Eigen::Vector3d normal = J.row(s).transpose().cross(J.row(t).transpose());
+      visit(N, normal, weights[a] * weights[b]);
+    }
+}
+
+}  // namespace
+
+void TElement::bee(const Eigen::Ref<const Eigen::MatrixXd>& dNdx,
+                   Eigen::Ref<Eigen::MatrixXd> B) const {
+  B.setZero();
+  for (Eigen::Index a = 0; a < dNdx.rows(); ++a) {
+    const double dx = dNdx(a, 0), dy = dNdx(a, 1), dz = dNdx(a, 2);
+    const Eigen::Index c = 3 * a;
+    B(0, c) = dx;
+    B(1, c + 1) = dy;
+    B(2, c + 2) = dz;
+    B(3, c) = dy;  // gamma_12
+    B(3, c + 1) = dx;
+    B(4, c) = dz;  // gamma_13
+    B(4, c + 2) = dx;
+    B(5, c + 1) = dz;  // gamma_23
+    B(5, c + 2) = dy;
+  }
+}
+
+void TElement::dee(const Material& material, Matrix6d& D) const {
+  // Messages are composed only on failure: dee() runs once per element in every assembly.
+  auto fail = [&](const std::string& what) {
+    throw InputError(material.where, "material " + material.name + ": " + what);
+  };
+  if (!material.young || !material.poisson)
+    fail("*ELASTIC (Young's modulus and Poisson's ratio) is required by element type " + name());
+  const double E = *material.young, nu = *material.poisson;
+  if (!(E > 0.0)) fail("Young's modulus " + format_number(E) + " must be positive");
+  if (!(nu > -1.0 && nu < 0.5))
+    fail("Poisson's ratio " + format_number(nu) + " must lie in (-1, 0.5)");
+  const double lambda = E * nu / ((1.0 + nu) * (1.0 - 2.0 * nu));
+  const double mu = E / (2.0 * (1.0 + nu));
+  D.setZero();
+  D.topLeftCorner<3, 3>().setConstant(lambda);
+  D.topLeftCorner<3, 3>().diagonal().array() += 2.0 * mu;
+  D.bottomRightCorner<3, 3>().diagonal().setConstant(mu);  // engineering shear strains
+}
+
+double TElement::jacobian(const ElementGeometry& g, const Eigen::Ref<const Eigen::MatrixXd>& dN,
+                          Eigen::Ref<Eigen::MatrixXd> dNdx, int point) const {
+  Eigen::Matrix3d J;
+  J.noalias() = dN.transpose() * g.X;  // J(i, j) = dx_j / dxi_i
+  const double det = J.determinant();
+  // Degenerate means small relative to the lengths of the three natural tangents (Hadamard's
+  // bound), so the test does not depend on the unit of length.
+  const double scale = J.row(0).norm() * J.row(1).norm() * J.row(2).norm();
+  if (!(det > 1e-12 * scale))
+    throw InputError(g.where, element_label(g, *this) + ": Jacobian determinant " +
+                                  format_number(det) + " at integration point " +
+                                  std::to_string(point) +
+                                  " is not positive: the element is inverted or degenerate");
+  dNdx.noalias() = dN * J.inverse().transpose();
+  return det;
+}
+
+void TElement::stiffness(const ElementGeometry& g, const Material& material, RuleKind kind,
+                         Eigen::MatrixXd& K) const {
+  check_geometry(g, *this);
+  const int n = node_count();
+  Matrix6d D;
+  dee(material, D);
+  const IntegrationRule r = rule(kind);
+  Eigen::VectorXd N(n);
+  Eigen::MatrixXd dN(n, 3), dNdx(n, 3), B(6, 3 * n), DB(6, 3 * n);
+  K.setZero(3 * n, 3 * n);
+  for (int k = 0; k < r.size(); ++k) {
+    der(r.points[k], N, dN);
+    const double detJ = jacobian(g, dN, dNdx, k + 1);
+    bee(dNdx, B);
+    DB.noalias() = D * B;
+    K.noalias() += (r.weights[k] * detJ) * B.transpose() * DB;
+  }
+  // The product above is symmetric only up to round-off; solvers (CHOLMOD) want it exact.
+  K = 0.5 * (K + K.transpose()).eval();
+}
+
+void TElement::pressure_load(const ElementGeometry& g, int face, double p,
+                             Eigen::VectorXd& f) const {
+  check_geometry(g, *this);
+  const FaceDef& fd = checked_face(g, *this, face);
+  const double orientation = fd.value > 0.0 ? 1.0 : -1.0;
+  f.setZero(3 * node_count());
+  for_each_face_point(g, *this, fd,
+                      [&](const Eigen::VectorXd& N, const Eigen::Vector3d& normal, double w) {
+                        // Positive pressure pushes into the element: against the outward normal.
+                        const Eigen::Vector3d traction = (-p * orientation * w) * normal;
+                        for (Eigen::Index a = 0; a < N.size(); ++a)
+                          f.segment<3>(3 * a) += N(a) * traction;
+                      });
+}
+
+void TElement::nodal_areas(const ElementGeometry& g, int face, Eigen::VectorXd& area) const {
+  check_geometry(g, *this);
+  const FaceDef& fd = checked_face(g, *this, face);
+  area.setZero(node_count());
+  for_each_face_point(g, *this, fd,
+                      [&](const Eigen::VectorXd& N, const Eigen::Vector3d& normal, double w) {
+                        area.noalias() += (w * normal.norm()) * N;
+                      });
+}
+
+void TElement::strains_stresses(const ElementGeometry& g, const Material& material, RuleKind kind,
+                                const Eigen::Ref<const Eigen::VectorXd>& u, Eigen::MatrixXd& strain,
+                                Eigen::MatrixXd& stress) const {
+  check_geometry(g, *this);
+  const int n = node_count();
+  if (u.size() != 3 * n)
+    throw std::invalid_argument(element_label(g, *this) + ": displacement vector has " +
+                                std::to_string(u.size()) + " entries, expected " +
+                                std::to_string(3 * n));
+  Matrix6d D;
+  dee(material, D);
+  const IntegrationRule r = rule(kind);
+  Eigen::VectorXd N(n);
+  Eigen::MatrixXd dN(n, 3), dNdx(n, 3), B(6, 3 * n);
+  strain.resize(r.size(), 6);
+  stress.resize(r.size(), 6);
+  Eigen::Matrix<double, 6, 1> engineering;
+  for (int k = 0; k < r.size(); ++k) {
+    der(r.points[k], N, dN);
+    jacobian(g, dN, dNdx, k + 1);
+    bee(dNdx, B);
+    engineering.noalias() = B * u;
+    stress.row(k).noalias() = (D * engineering).transpose();
+    strain.row(k) = engineering.transpose();
+    strain.row(k).tail<3>() *= 0.5;  // report tensor shear components eps_ij = gamma_ij / 2
+  }
+}
+
+}  // namespace styk

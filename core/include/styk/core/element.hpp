@@ -38,8 +38,9 @@ struct IntegrationRule {
 };
 
 // A face of the reference element: the element-local node indices on it (corners first, in the
-// order that makes the outward normal by the right-hand rule), and the natural coordinate it lies
-// on (axis 0/1/2 = xi/eta/zeta, value -1 or +1).
+// Abaqus face order, which circles the face with the normal pointing INTO the element), and the
+// natural coordinate it lies on (axis 0/1/2 = xi/eta/zeta, value -1 or +1). Normals are computed
+// from axis/value, never from the node order.
 struct FaceDef {
   std::vector<int> nodes;
   int axis = 2;

@@ -1,0 +1,41 @@
+// register_builtin_elements: what it provides, and that it goes through the registry rules.
+#include <gtest/gtest.h>
+
+#include "styk/elements/builtin.hpp"
+
+namespace styk {
+namespace {
+
+TEST(BuiltinElements, RegistersC3D8AndC3D20AsBuiltIn) {
+  ElementRegistry registry;
+  register_builtin_elements(registry);
+  EXPECT_EQ(registry.names(), (std::vector<std::string>{"C3D20", "C3D8"}));
+  const ElementRegistry::Entry* entry = registry.entry("c3d20");
+  ASSERT_NE(entry, nullptr);
+  EXPECT_EQ(entry->source, "built-in");
+  EXPECT_EQ(entry->element->node_count(), 20);
+  EXPECT_EQ(entry->element->rule(RuleKind::Full).size(), 27);
+  EXPECT_EQ(entry->element->rule(RuleKind::Reduced).size(), 8);
+  const TElement* c3d8 = registry.find("C3d8");
+  ASSERT_NE(c3d8, nullptr);
+  EXPECT_EQ(c3d8->rule(RuleKind::Full).size(), 8);
+  EXPECT_EQ(c3d8->face_rule_order(), 2);
+  EXPECT_FALSE(c3d8->description().empty());
+  // C3D8R has a rule but no registered type until it gets hourglass control.
+  EXPECT_EQ(registry.find("C3D8R"), nullptr);
+}
+
+TEST(BuiltinElements, RegisteringTwiceThrowsNamingTheSources) {
+  ElementRegistry registry;
+  register_builtin_elements(registry);
+  try {
+    register_builtin_elements(registry);
+    FAIL() << "duplicate registration accepted";
+  } catch (const std::invalid_argument& error) {
+    EXPECT_NE(std::string(error.what()).find("C3D8"), std::string::npos) << error.what();
+    EXPECT_NE(std::string(error.what()).find("built-in"), std::string::npos) << error.what();
+  }
+}
+
+}  // namespace
+}  // namespace styk
