@@ -1,0 +1,163 @@
+// The .dat report in CalculiX's layout. Each block is: an empty line, the header
+// " <what> for set <SET> and time <E14.7>", an empty line, then one row per node (I10 then
+// 1P,3(1X,E13.6)) or per integration point (I10,1X,I3 then 1P,6(1X,E13.6)); a force total is
+// (6X,1P,3(1X,E13.6)). Verified against ccx 2.20 output (tests/unit/io/dat_writer_test.cpp).
+#include <algorithm>
+#include <cinttypes>
+#include <cstdio>
+#include <stdexcept>
+#include <string>
+#include <vector>
+
+#include "fortran_format.hpp"
+#include "styk/io/dat_writer.hpp"
+
+namespace styk {
+
+namespace {
+
+constexpr const char* kWholeModel = "ALL";
+
+std::string increment_label(const IncrementResult& inc) {
+  return "step " + std::to_string(inc.step) + ", increment " + std::to_string(inc.increment);
+}
+
+class DatPrinter {
+ public:
+  DatPrinter(std::ostream& out, const Model& model) : out_(out), model_(model) {}
+
+  void print(const IncrementResult& inc) {
+    if (inc.step < 1 || inc.step > static_cast<int>(model_.steps.size()))
+      throw std::runtime_error("results of " + increment_label(inc) + " name step " +
+                               std::to_string(inc.step) + " but the model has " +
+                               std::to_string(model_.steps.size()) + " steps");
+    for (const OutputRequest& request : model_.steps[inc.step - 1].outputs) {
+      if (request.kind == OutputRequest::Kind::NodePrint)
+        print_nodes(request, inc);
+      else if (request.kind == OutputRequest::Kind::ElementPrint)
+        print_elements(request, inc);
+    }
+  }
+
+ private:
+  void header(const std::string& what, const std::string& set, double time) {
+    out_ << "\n " << what << " for set " << set << " and time " << io::fortran_e14_7(time)
+         << "\n\n";
+  }
+
+  void print_nodes(const OutputRequest& request, const IncrementResult& inc) {
+    const std::vector<int> nodes = node_rows(request);
+    const std::string set = request.set.empty() ? kWholeModel : request.set;
+    for (const std::string& var : request.vars) {
+      if (var != "U" && var != "RF")
+        throw InputError(request.where, "*NODE PRINT: variable " + var +
+                                            " cannot be printed to the .dat file (Styk prints U "
+                                            "and RF)");
+      const bool displacement = var == "U";
+      const std::vector<Vec3>& field = displacement ? inc.U : inc.RF;
+      if (field.size() != model_.node_ids.size())
+        throw std::runtime_error("*NODE PRINT asks for " + var + " but the results of " +
+                                 increment_label(inc) + " hold no " + var + " for every node");
+      header(displacement ? "displacements (vx,vy,vz)" : "forces (fx,fy,fz)", set, inc.total_time);
+      Vec3 total{0.0, 0.0, 0.0};
+      for (const int n : nodes) {
+        write_id(model_.node_ids[n]);
+        for (int k = 0; k < 3; ++k) {
+          out_ << ' ' << io::fortran_e13_6(field[n][k]);
+          total[k] += field[n][k];
+        }
+        out_ << '\n';
+      }
+      // ccx prints totals for forces only, whatever TOTALS= says for other variables.
+      if (request.totals && !displacement) {
+        header("total force (fx,fy,fz)", set, inc.total_time);
+        out_ << "      ";
+        for (int k = 0; k < 3; ++k) out_ << ' ' << io::fortran_e13_6(total[k]);
+        out_ << '\n';
+      }
+    }
+  }
+
+  void print_elements(const OutputRequest& request, const IncrementResult& inc) {
+    const std::vector<int> elements = element_rows(request);
+    const std::string set = request.set.empty() ? kWholeModel : request.set;
+    for (const std::string& var : request.vars) {
+      if (var != "S" && var != "E")
+        throw InputError(request.where, "*EL PRINT: variable " + var +
+                                            " cannot be printed to the .dat file (Styk prints S "
+                                            "and E)");
+      const bool stress = var == "S";
+      const std::vector<Tensor6>& field = stress ? inc.S : inc.E;
+      if (inc.ip_offset.size() != model_.elements.size() + 1 ||
+          field.size() != static_cast<std::size_t>(inc.ip_offset.back()))
+        throw std::runtime_error("*EL PRINT asks for " + var + " but the results of " +
+                                 increment_label(inc) + " hold no " + var +
+                                 " at the integration points");
+      header(stress ? "stresses (elem, integ.pnt.,sxx,syy,szz,sxy,sxz,syz)"
+                    : "strains (elem, integ.pnt.,exx,eyy,ezz,exy,exz,eyz)",
+             set, inc.total_time);
+      for (const int e : elements) {
+        for (int p = inc.ip_offset[e]; p < inc.ip_offset[e + 1]; ++p) {
+          write_id(model_.elements[e].id);
+          char point[16];
+          std::snprintf(point, sizeof point, " %3d", p - inc.ip_offset[e] + 1);
+          out_ << point;
+          for (const double v : field[p]) out_ << ' ' << io::fortran_e13_6(v);
+          out_ << '\n';
+        }
+      }
+    }
+  }
+
+  void write_id(Id id) {
+    char buffer[32];
+    std::snprintf(buffer, sizeof buffer, "%10" PRId64, static_cast<std::int64_t>(id));
+    out_ << buffer;
+  }
+
+  // ccx keeps its sets sorted by number, so its rows come in id order; so do ours.
+  std::vector<int> node_rows(const OutputRequest& request) const {
+    std::vector<int> nodes;
+    if (request.set.empty()) {
+      nodes.resize(model_.node_ids.size());
+      for (std::size_t i = 0; i < nodes.size(); ++i) nodes[i] = static_cast<int>(i);
+    } else {
+      const NodeSet* set = model_.find_nset(request.set);
+      if (set == nullptr)
+        throw InputError(request.where, "*NODE PRINT: node set " + request.set + " is not defined");
+      nodes = set->nodes;
+    }
+    std::sort(nodes.begin(), nodes.end(),
+              [&](int a, int b) { return model_.node_ids[a] < model_.node_ids[b]; });
+    return nodes;
+  }
+
+  std::vector<int> element_rows(const OutputRequest& request) const {
+    std::vector<int> elements;
+    if (request.set.empty()) {
+      elements.resize(model_.elements.size());
+      for (std::size_t i = 0; i < elements.size(); ++i) elements[i] = static_cast<int>(i);
+    } else {
+      const ElementSet* set = model_.find_elset(request.set);
+      if (set == nullptr)
+        throw InputError(request.where,
+                         "*EL PRINT: element set " + request.set + " is not defined");
+      elements = set->elements;
+    }
+    std::sort(elements.begin(), elements.end(),
+              [&](int a, int b) { return model_.elements[a].id < model_.elements[b].id; });
+    return elements;
+  }
+
+  std::ostream& out_;
+  const Model& model_;
+};
+
+}  // namespace
+
+void write_dat(std::ostream& out, const Model& model, const Results& results) {
+  DatPrinter printer(out, model);
+  for (const IncrementResult& inc : results.increments) printer.print(inc);
+}
+
+}  // namespace styk

@@ -1,0 +1,194 @@
+// VTK XML UnstructuredGrid writer (file format version 1.0, UInt64 block headers). Every data
+// array is written inline as format="binary": base64 of [byte count as UInt64][raw little-endian
+// values], header and values encoded as one stream, which is what VTK expects for uncompressed
+// inline data.
+#include <cmath>
+#include <cstdint>
+#include <cstring>
+#include <fstream>
+#include <limits>
+#include <stdexcept>
+#include <string>
+#include <vector>
+
+#include "base64.hpp"
+#include "styk/io/vtu_export.hpp"
+#include "temp_file.hpp"
+#include "vtk_cell_map.hpp"
+
+namespace styk {
+
+namespace {
+
+bool little_endian() {
+  const std::uint16_t probe = 1;
+  return *reinterpret_cast<const unsigned char*>(&probe) == 1;
+}
+
+template <typename T>
+const char* vtk_type_name();
+template <>
+const char* vtk_type_name<double>() {
+  return "Float64";
+}
+template <>
+const char* vtk_type_name<std::int64_t>() {
+  return "Int64";
+}
+template <>
+const char* vtk_type_name<std::uint8_t>() {
+  return "UInt8";
+}
+
+class VtuWriter {
+ public:
+  explicit VtuWriter(std::ostream& out) : out_(out) {}
+
+  // `component_names` may be empty; otherwise one per component (shown by ParaView).
+  template <typename T>
+  void array(const std::string& name, int components, const std::vector<T>& values,
+             const std::vector<std::string>& component_names = {}) {
+    out_ << "        <DataArray type=\"" << vtk_type_name<T>() << "\"";
+    if (!name.empty()) out_ << " Name=\"" << name << "\"";
+    out_ << " NumberOfComponents=\"" << components << "\" NumberOfTuples=\""
+         << values.size() / components << "\"";
+    for (std::size_t k = 0; k < component_names.size(); ++k)
+      out_ << " ComponentName" << k << "=\"" << component_names[k] << "\"";
+    out_ << " format=\"binary\">\n          ";
+    const std::uint64_t bytes = values.size() * sizeof(T);
+    std::string block(sizeof bytes + bytes, '\0');
+    std::memcpy(block.data(), &bytes, sizeof bytes);
+    if (bytes > 0) std::memcpy(block.data() + sizeof bytes, values.data(), bytes);
+    encoded_.clear();
+    io::base64_append(block.data(), block.size(), encoded_);
+    out_ << encoded_ << "\n        </DataArray>\n";
+  }
+
+ private:
+  std::ostream& out_;
+  std::string encoded_;
+};
+
+std::vector<double> flatten(const std::vector<Vec3>& v) {
+  std::vector<double> out;
+  out.reserve(3 * v.size());
+  for (const Vec3& x : v) out.insert(out.end(), x.begin(), x.end());
+  return out;
+}
+
+double mises(const Tensor6& s) {
+  const double d1 = s[0] - s[1], d2 = s[1] - s[2], d3 = s[2] - s[0];
+  return std::sqrt(0.5 * (d1 * d1 + d2 * d2 + d3 * d3) +
+                   3.0 * (s[3] * s[3] + s[4] * s[4] + s[5] * s[5]));
+}
+
+std::string increment_label(const IncrementResult& inc) {
+  return "step " + std::to_string(inc.step) + ", increment " + std::to_string(inc.increment);
+}
+
+void check_sizes(const Model& model, const IncrementResult& inc) {
+  const std::size_t nodes = model.node_ids.size();
+  for (const auto* field : {&inc.U, &inc.RF})
+    if (!field->empty() && field->size() != nodes)
+      throw std::runtime_error("results of " + increment_label(inc) + " hold " +
+                               std::to_string(field->size()) + " nodal vectors for " +
+                               std::to_string(nodes) + " nodes");
+  if (!inc.S.empty() && (inc.ip_offset.size() != model.elements.size() + 1 ||
+                         inc.S.size() != static_cast<std::size_t>(inc.ip_offset.back())))
+    throw std::runtime_error("results of " + increment_label(inc) +
+                             ": stresses do not match ip_offset and the elements");
+}
+
+}  // namespace
+
+VtuExportSummary write_vtu(const std::string& path, const Model& model,
+                           const IncrementResult* inc) {
+  if (inc != nullptr) check_sizes(model, *inc);
+  VtuExportSummary summary;
+  std::vector<std::int64_t> connectivity, offsets, element_ids;
+  std::vector<std::uint8_t> types;
+  std::vector<int> exported;  // element index of each cell
+  for (int e = 0; e < model.element_count(); ++e) {
+    const Element& element = model.elements[e];
+    const io::VtkCellMapping* cell = io::vtk_cell_mapping(element.type);
+    if (cell == nullptr || element.node_count < static_cast<int>(cell->node_order.size())) {
+      ++summary.skipped_by_type[element.type];
+      continue;
+    }
+    const int* nodes = model.element_nodes(e);
+    for (const int k : cell->node_order) connectivity.push_back(nodes[k]);
+    offsets.push_back(static_cast<std::int64_t>(connectivity.size()));
+    types.push_back(static_cast<std::uint8_t>(cell->vtk_type));
+    element_ids.push_back(element.id);
+    exported.push_back(e);
+  }
+  summary.cells_written = static_cast<int>(exported.size());
+
+  io::TempFile temp(path);
+  {
+    std::ofstream out(temp.temp_path(), std::ios::binary | std::ios::trunc);
+    if (!out) throw std::runtime_error("cannot create " + temp.temp_path());
+    VtuWriter writer(out);
+    out << "<?xml version=\"1.0\"?>\n"
+        << "<VTKFile type=\"UnstructuredGrid\" version=\"1.0\" byte_order=\""
+        << (little_endian() ? "LittleEndian" : "BigEndian") << "\" header_type=\"UInt64\">\n"
+        << "  <UnstructuredGrid>\n";
+    if (inc != nullptr) {
+      // TimeValue is the field ParaView reads as the dataset's time.
+      out << "    <FieldData>\n";
+      writer.array("TimeValue", 1, std::vector<double>{inc->total_time});
+      writer.array("step", 1, std::vector<std::int64_t>{inc->step});
+      writer.array("increment", 1, std::vector<std::int64_t>{inc->increment});
+      out << "    </FieldData>\n";
+    }
+    out << "    <Piece NumberOfPoints=\"" << model.node_count() << "\" NumberOfCells=\""
+        << exported.size() << "\">\n";
+
+    out << "      <PointData>\n";
+    if (inc != nullptr && !inc->U.empty()) writer.array("U", 3, flatten(inc->U));
+    if (inc != nullptr && !inc->RF.empty()) writer.array("RF", 3, flatten(inc->RF));
+    out << "      </PointData>\n";
+
+    out << "      <CellData>\n";
+    writer.array("element_id", 1, element_ids);
+    if (inc != nullptr && !inc->S.empty()) {
+      // VTK's symmetric-tensor component order is XX YY ZZ XY YZ XZ; ours is 11 22 33 12 13 23.
+      std::vector<double> mean, mean_mises;
+      mean.reserve(6 * exported.size());
+      mean_mises.reserve(exported.size());
+      for (const int e : exported) {
+        const int first = inc->ip_offset[e], last = inc->ip_offset[e + 1];
+        Tensor6 s{};
+        for (int p = first; p < last; ++p)
+          for (int k = 0; k < 6; ++k) s[k] += inc->S[p][k];
+        const double scale =
+            last > first ? 1.0 / (last - first) : std::numeric_limits<double>::quiet_NaN();
+        for (double& v : s) v *= scale;
+        mean.insert(mean.end(), {s[0], s[1], s[2], s[3], s[5], s[4]});
+        mean_mises.push_back(mises(s));
+      }
+      writer.array("S_ip_mean", 6, mean, {"XX", "YY", "ZZ", "XY", "YZ", "XZ"});
+      writer.array("S_ip_mean_mises", 1, mean_mises);
+    }
+    out << "      </CellData>\n";
+
+    out << "      <Points>\n";
+    writer.array("Points", 3, flatten(model.coords));
+    out << "      </Points>\n";
+
+    out << "      <Cells>\n";
+    writer.array("connectivity", 1, connectivity);
+    writer.array("offsets", 1, offsets);
+    writer.array("types", 1, types);
+    out << "      </Cells>\n"
+        << "    </Piece>\n"
+        << "  </UnstructuredGrid>\n"
+        << "</VTKFile>\n";
+    out.close();
+    if (!out) throw std::runtime_error("cannot write " + temp.temp_path());
+  }
+  temp.commit();
+  return summary;
+}
+
+}  // namespace styk
