@@ -1,0 +1,312 @@
+#include "deck_reader.hpp"
+
+#include <algorithm>
+
+#include "numbers.hpp"
+
+namespace styk::inp {
+
+namespace {
+constexpr bool kData = true;
+constexpr bool kNoData = false;
+
+// Set names start with a letter or '_'; anything else in an id-or-set field is read as an id.
+bool names_a_set(const std::string& text) {
+  const char c = text.empty() ? '0' : text.front();
+  return (c >= 'A' && c <= 'Z') || (c >= 'a' && c <= 'z') || c == '_';
+}
+}  // namespace
+
+const std::vector<DeckReader::KeywordSpec>& DeckReader::keywords() {
+  using S = Scope;
+  using V = Value;
+  static const std::vector<KeywordSpec> table = {
+      {"HEADING", S::Model, {}, &DeckReader::on_heading, kData},
+      {"NODE", S::Model, {{"NSET", false, V::Required}}, &DeckReader::on_node, kData},
+      {"ELEMENT",
+       S::Model,
+       {{"TYPE", true, V::Required}, {"ELSET", false, V::Required}},
+       &DeckReader::on_element,
+       kData},
+      {"NSET",
+       S::Model,
+       {{"NSET", true, V::Required}, {"GENERATE", false, V::None}},
+       &DeckReader::on_nset,
+       kData},
+      {"ELSET",
+       S::Model,
+       {{"ELSET", true, V::Required}, {"GENERATE", false, V::None}},
+       &DeckReader::on_elset,
+       kData},
+      {"MATERIAL", S::Model, {{"NAME", true, V::Required}}, &DeckReader::on_material, kNoData},
+      {"ELASTIC", S::Material, {{"TYPE", false, V::Required}}, &DeckReader::on_elastic, kData},
+      {"DENSITY", S::Material, {}, &DeckReader::on_density, kData},
+      {"EXPANSION",
+       S::Material,
+       {{"ZERO", false, V::Required}, {"TYPE", false, V::Required}},
+       &DeckReader::on_expansion,
+       kData},
+      {"SOLID SECTION",
+       S::Model,
+       {{"ELSET", true, V::Required}, {"MATERIAL", true, V::Required}},
+       &DeckReader::on_solid_section,
+       kData},
+      {"BOUNDARY", S::Anywhere, {{"OP", false, V::Required}}, &DeckReader::on_boundary, kData},
+      {"STEP",
+       S::Model,
+       {{"NAME", false, V::Required}, {"NLGEOM", false, V::Optional}, {"INC", false, V::Required}},
+       &DeckReader::on_step,
+       kNoData},
+      {"STATIC", S::Step, {{"SOLVER", false, V::Required}}, &DeckReader::on_static, kData},
+      {"CLOAD", S::Step, {{"OP", false, V::Required}}, &DeckReader::on_cload, kData},
+      {"DLOAD", S::Step, {{"OP", false, V::Required}}, &DeckReader::on_dload, kData},
+      {"NODE PRINT",
+       S::Step,
+       {{"NSET", false, V::Required}, {"TOTALS", false, V::Required}},
+       &DeckReader::on_node_print,
+       kData},
+      {"EL PRINT", S::Step, {{"ELSET", false, V::Required}}, &DeckReader::on_el_print, kData},
+      {"NODE FILE", S::Step, {{"NSET", false, V::Required}}, &DeckReader::on_node_file, kData},
+      {"EL FILE", S::Step, {{"ELSET", false, V::Required}}, &DeckReader::on_el_file, kData},
+      {"END STEP", S::Step, {}, &DeckReader::on_end_step, kNoData},
+  };
+  return table;
+}
+
+DeckReader::DeckReader(const std::string& path, const ElementRegistry& registry)
+    : source_(path), registry_(registry) {
+  model_.source = path;
+}
+
+Model DeckReader::read() {
+  while (std::optional<Card> card = source_.next()) {
+    if (!card->is_keyword) {
+      if (last_keyword_.empty())
+        throw InputError(card->where, "data line " + quote(card->text) +
+                                          " before the first keyword (keyword lines start with "
+                                          "'*', comments with '**')");
+      throw InputError(card->where, "unexpected data line " + quote(card->text) + ": *" +
+                                        last_keyword_ + " takes no data lines");
+    }
+    dispatch(parse_keyword_line(card->text, card->where));
+  }
+  finish();
+  return std::move(model_);
+}
+
+void DeckReader::dispatch(const KeywordLine& kw) {
+  const std::vector<KeywordSpec>& table = keywords();
+  const auto spec = std::find_if(table.begin(), table.end(),
+                                 [&](const KeywordSpec& s) { return kw.name == s.name; });
+  if (spec == table.end()) {
+    std::string known;
+    for (const KeywordSpec& s : table) known += std::string(known.empty() ? "*" : ", *") + s.name;
+    throw InputError(kw.where, "unknown keyword " + kw.label() + " (Styk reads " + known +
+                                   ", *INCLUDE; see docs/input.md)");
+  }
+  if (spec->scope != Scope::Material) material_ = -1;
+  switch (spec->scope) {
+    case Scope::Model:
+      if (in_step_)
+        throw InputError(kw.where,
+                         kw.label() + " is not allowed inside a step (the step starts at " +
+                             current_step().where.str() +
+                             (kw.name == "STEP" ? " and has no *END STEP)"
+                                                : "); model data goes before the first *STEP"));
+      break;
+    case Scope::Material:
+      if (in_step_) throw InputError(kw.where, kw.label() + " is not allowed inside a step");
+      break;
+    case Scope::Step:
+      if (!in_step_)
+        throw InputError(kw.where,
+                         kw.label() + " is only allowed inside a step (*STEP ... *END STEP)");
+      break;
+    case Scope::Anywhere:
+      break;
+  }
+  check_parameters(*spec, kw);
+  last_keyword_ = kw.name;
+  (this->*(spec->handler))(kw);
+}
+
+void DeckReader::check_parameters(const KeywordSpec& spec, const KeywordLine& kw) const {
+  for (const Parameter& p : kw.params) {
+    const auto ps = std::find_if(spec.params.begin(), spec.params.end(),
+                                 [&](const ParamSpec& s) { return p.name == s.name; });
+    if (ps == spec.params.end()) {
+      std::string accepted;
+      for (const ParamSpec& s : spec.params)
+        accepted += std::string(accepted.empty() ? "" : ", ") + s.name +
+                    (s.value == Value::Required ? "=" : "");
+      throw InputError(kw.where, "unknown parameter " + p.name + " on " + kw.label() +
+                                     (accepted.empty() ? " (it takes no parameters)"
+                                                       : " (accepted: " + accepted + ")"));
+    }
+    if (ps->value == Value::Required && (!p.has_value || p.value.empty()))
+      throw InputError(kw.where, "parameter " + p.name + " of " + kw.label() + " needs a value (" +
+                                     p.name + "=...)");
+    if (ps->value == Value::None && p.has_value)
+      throw InputError(kw.where, "parameter " + p.name + " of " + kw.label() +
+                                     " takes no value (read " + p.name + "=" + p.value + ")");
+  }
+  for (const ParamSpec& s : spec.params)
+    if (s.required && !kw.find(s.name))
+      throw InputError(kw.where, kw.label() + " needs " + s.name + "=");
+}
+
+std::optional<DataLine> DeckReader::next_data_line() {
+  const Card* card = source_.peek();
+  if (!card || card->is_keyword) return std::nullopt;
+  std::optional<Card> taken = source_.next();
+  return split_data_line(taken->text, taken->where);
+}
+
+void DeckReader::expect_fields(const DataLine& line, std::size_t min, std::size_t max,
+                               const std::string& layout) const {
+  const std::size_t n = line.fields.size();
+  if (n >= min && n <= max) return;
+  throw InputError(line.where, "*" + last_keyword_ + " data line has " + std::to_string(n) +
+                                   " field" + (n == 1 ? "" : "s") + ", expected " + layout);
+}
+
+std::optional<DataLine> DeckReader::single_data_line(const KeywordLine& kw, bool required,
+                                                     const std::string& layout) {
+  std::optional<DataLine> line = next_data_line();
+  if (!line && required) throw InputError(kw.where, kw.label() + " needs a data line: " + layout);
+  if (line) {
+    if (std::optional<DataLine> extra = next_data_line())
+      throw InputError(extra->where, kw.label() + " takes one data line (" + layout +
+                                         "); temperature-dependent or repeated data is not "
+                                         "supported");
+  }
+  return line;
+}
+
+std::string DeckReader::set_name(const KeywordLine& kw, const char* param) const {
+  const Parameter* p = kw.find(param);
+  const std::string name = normalize_name(p->value);
+  const char c = name.empty() ? '0' : name.front();
+  const bool starts_ok = (c >= 'A' && c <= 'Z') || c == '_';
+  if (!starts_ok || name.find(' ') != std::string::npos)
+    throw InputError(kw.where, std::string(param) + "=" + p->value +
+                                   ": a set name starts with a letter and has no blanks");
+  return name;
+}
+
+int DeckReader::node_by_id(Id id, const SourceLoc& where, const std::string& context) const {
+  const int index = model_.node_index(id);
+  if (index < 0)
+    throw InputError(where, context + ": node " + std::to_string(id) +
+                                " is not defined (nodes must be defined by *NODE before they "
+                                "are used)");
+  return index;
+}
+
+int DeckReader::element_by_id(Id id, const SourceLoc& where, const std::string& context) const {
+  const int index = model_.element_index(id);
+  if (index < 0)
+    throw InputError(where, context + ": element " + std::to_string(id) +
+                                " is not defined (elements must be defined by *ELEMENT before "
+                                "they are used)");
+  return index;
+}
+
+std::vector<int> DeckReader::nodes_of(const DataLine& line, std::size_t field,
+                                      const std::string& what) {
+  const std::string& text = field < line.fields.size() ? line.fields[field] : std::string();
+  if (!names_a_set(text))
+    return {
+        node_by_id(id_field(line, field, what), line.where, "field " + std::to_string(field + 1))};
+  const NodeSet* set = model_.find_nset(text);
+  if (!set)
+    throw InputError(line.where, "field " + std::to_string(field + 1) + " (" + what +
+                                     "): node set " + normalize_name(text) +
+                                     " is not defined; node sets: " + some_names(model_.nsets));
+  return set->nodes;
+}
+
+std::vector<int> DeckReader::elements_of(const DataLine& line, std::size_t field,
+                                         const std::string& what) {
+  const std::string& text = field < line.fields.size() ? line.fields[field] : std::string();
+  if (!names_a_set(text))
+    return {element_by_id(id_field(line, field, what), line.where,
+                          "field " + std::to_string(field + 1))};
+  const ElementSet* set = model_.find_elset(text);
+  if (!set)
+    throw InputError(line.where, "field " + std::to_string(field + 1) + " (" + what +
+                                     "): element set " + normalize_name(text) +
+                                     " is not defined; element sets: " + some_names(model_.elsets));
+  return set->elements;
+}
+
+NodeSet& DeckReader::nset(const std::string& name, const SourceLoc& where) {
+  NodeSet& set = model_.nsets[name];
+  if (set.name.empty()) {
+    set.name = name;
+    set.where = where;
+  }
+  return set;
+}
+
+ElementSet& DeckReader::elset(const std::string& name, const SourceLoc& where) {
+  ElementSet& set = model_.elsets[name];
+  if (set.name.empty()) {
+    set.name = name;
+    set.where = where;
+  }
+  return set;
+}
+
+void DeckReader::finish() {
+  const SourceLoc deck{model_.source, 0};
+  if (in_step_)
+    throw InputError(current_step().where,
+                     "the deck ends inside this step: *END STEP is missing (truncated file?)");
+  if (model_.node_count() == 0) throw InputError(deck, "the deck defines no nodes (*NODE)");
+  if (model_.element_count() == 0)
+    throw InputError(deck, "the deck defines no elements (*ELEMENT)");
+  if (model_.steps.empty())
+    throw InputError(deck, "the deck has no analysis step (*STEP ... *END STEP)");
+  for (const Material& m : model_.materials)
+    if (!m.young) throw InputError(m.where, "material " + m.name + " has no *ELASTIC constants");
+  assign_sections();
+}
+
+void DeckReader::assign_sections() {
+  for (std::size_t s = 0; s < model_.sections.size(); ++s) {
+    Section& section = model_.sections[s];
+    section.material_index = model_.material_index(section.material);
+    if (section.material_index < 0) {
+      std::string names;
+      for (const Material& m : model_.materials) names += (names.empty() ? "" : ", ") + m.name;
+      throw InputError(section.where, "*SOLID SECTION names material " + section.material +
+                                          ", which is not defined; materials: " +
+                                          (names.empty() ? "none are defined" : names));
+    }
+    const ElementSet* set = model_.find_elset(section.elset);
+    if (!set)
+      throw InputError(section.where,
+                       "*SOLID SECTION names element set " + section.elset +
+                           ", which is not defined; element sets: " + some_names(model_.elsets));
+    for (int e : set->elements) {
+      Element& element = model_.elements[e];
+      if (element.section >= 0) {
+        const Section& other = model_.sections[element.section];
+        throw InputError(section.where,
+                         "element " + std::to_string(element.id) + " (in ELSET=" + section.elset +
+                             ") already has a section (ELSET=" + other.elset + " at " +
+                             other.where.str() + "); an element belongs to one section only");
+      }
+      element.section = static_cast<int>(s);
+    }
+  }
+  for (const Element& element : model_.elements)
+    if (element.section < 0)
+      throw InputError(element.where, "element " + std::to_string(element.id) + " (" +
+                                          element.type +
+                                          ") has no section: no *SOLID SECTION names an element "
+                                          "set containing it");
+}
+
+}  // namespace styk::inp

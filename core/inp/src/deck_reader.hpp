@@ -1,0 +1,113 @@
+// DeckReader: the state of reading one deck into a Model. The keyword table (deck_reader.cpp)
+// checks where a keyword may appear and which parameters it takes, then calls one handler per
+// keyword; the handlers live in mesh_keywords.cpp, property_keywords.cpp and step_keywords.cpp.
+#pragma once
+
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "card.hpp"
+#include "card_source.hpp"
+#include "styk/core/element_registry.hpp"
+#include "styk/core/model.hpp"
+
+namespace styk::inp {
+
+class DeckReader {
+ public:
+  DeckReader(const std::string& path, const ElementRegistry& registry);
+  Model read();
+
+  // Where a keyword may appear.
+  enum class Scope { Model, Material, Step, Anywhere };
+  enum class Value { None, Required, Optional };  // flag, NAME=value, either
+  struct ParamSpec {
+    const char* name;
+    bool required;
+    Value value;
+  };
+  using Handler = void (DeckReader::*)(const KeywordLine&);
+  struct KeywordSpec {
+    const char* name;
+    Scope scope;
+    std::vector<ParamSpec> params;
+    Handler handler;
+    bool takes_data;
+  };
+  static const std::vector<KeywordSpec>& keywords();
+
+ private:
+  void dispatch(const KeywordLine& kw);
+  void check_parameters(const KeywordSpec& spec, const KeywordLine& kw) const;
+  std::optional<DataLine> next_data_line();
+  void finish();
+  void assign_sections();
+
+  // mesh_keywords.cpp
+  void on_heading(const KeywordLine& kw);
+  void on_node(const KeywordLine& kw);
+  void on_element(const KeywordLine& kw);
+  void on_nset(const KeywordLine& kw);
+  void on_elset(const KeywordLine& kw);
+  // property_keywords.cpp
+  void on_material(const KeywordLine& kw);
+  void on_elastic(const KeywordLine& kw);
+  void on_density(const KeywordLine& kw);
+  void on_expansion(const KeywordLine& kw);
+  void on_solid_section(const KeywordLine& kw);
+  // step_keywords.cpp
+  void on_step(const KeywordLine& kw);
+  void on_static(const KeywordLine& kw);
+  void on_end_step(const KeywordLine& kw);
+  void on_boundary(const KeywordLine& kw);
+  void on_cload(const KeywordLine& kw);
+  void on_dload(const KeywordLine& kw);
+  void on_node_print(const KeywordLine& kw);
+  void on_el_print(const KeywordLine& kw);
+  void on_node_file(const KeywordLine& kw);
+  void on_el_file(const KeywordLine& kw);
+  void read_output(const KeywordLine& kw, OutputRequest::Kind kind);
+
+  // Helpers shared by the handlers.
+  // Node indices named by one field: a node id or the name of a node set.
+  std::vector<int> nodes_of(const DataLine& line, std::size_t field, const std::string& what);
+  std::vector<int> elements_of(const DataLine& line, std::size_t field, const std::string& what);
+  int node_by_id(Id id, const SourceLoc& where, const std::string& context) const;
+  int element_by_id(Id id, const SourceLoc& where, const std::string& context) const;
+  NodeSet& nset(const std::string& name, const SourceLoc& where);
+  ElementSet& elset(const std::string& name, const SourceLoc& where);
+  std::string set_name(const KeywordLine& kw, const char* param) const;
+  Material& current_material(const KeywordLine& kw);
+  Step& current_step() { return model_.steps.back(); }
+  void expect_fields(const DataLine& line, std::size_t min, std::size_t max,
+                     const std::string& layout) const;
+  std::optional<DataLine> single_data_line(const KeywordLine& kw, bool required,
+                                           const std::string& layout);
+
+  CardSource source_;
+  const ElementRegistry& registry_;
+  Model model_;
+  int material_ = -1;  // the *MATERIAL block being read, -1 outside one
+  bool in_step_ = false;
+  std::string last_keyword_;  // for "takes no data lines" messages
+  // Where each node was defined (file index into files_, line), for duplicate-id messages.
+  std::vector<std::pair<int, int>> node_lines_;
+  std::vector<std::string> files_;
+};
+
+// "A, B, C and 4 more" or "none are defined" for messages.
+template <class Map>
+std::string some_names(const Map& sets) {
+  if (sets.empty()) return "none are defined";
+  std::string out;
+  std::size_t shown = 0;
+  for (const auto& kv : sets) {
+    if (shown == 8) return out + " and " + std::to_string(sets.size() - shown) + " more";
+    out += (shown ? ", " : "") + kv.first;
+    ++shown;
+  }
+  return out;
+}
+
+}  // namespace styk::inp

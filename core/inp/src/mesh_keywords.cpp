@@ -1,0 +1,161 @@
+// *HEADING, *NODE, *ELEMENT, *NSET, *ELSET.
+#include <algorithm>
+
+#include "deck_reader.hpp"
+#include "numbers.hpp"
+
+namespace styk::inp {
+
+namespace {
+// Abaqus data lines hold at most 16 entries; a full line continues on the next one.
+constexpr std::size_t kEntriesPerLine = 16;
+
+template <class Vec>
+void sort_unique(Vec& v) {
+  std::sort(v.begin(), v.end());
+  v.erase(std::unique(v.begin(), v.end()), v.end());
+}
+}  // namespace
+
+void DeckReader::on_heading(const KeywordLine&) {
+  // Heading lines are free text: read them raw, commas and all.
+  while (const Card* card = source_.peek()) {
+    if (card->is_keyword) break;
+    if (!model_.heading.empty()) model_.heading += '\n';
+    model_.heading += source_.next()->text;
+  }
+}
+
+void DeckReader::on_node(const KeywordLine& kw) {
+  NodeSet* set = kw.find("NSET") ? &nset(set_name(kw, "NSET"), kw.where) : nullptr;
+  while (std::optional<DataLine> line = next_data_line()) {
+    if (files_.empty() || files_.back() != line->where.file) files_.push_back(line->where.file);
+    expect_fields(*line, 2, 4, "node id, x, y, z (y and z default to 0)");
+    const Id id = id_field(*line, 0, "node id");
+    Vec3 x{0.0, 0.0, 0.0};
+    for (std::size_t i = 1; i < line->fields.size(); ++i)
+      x[i - 1] =
+          real_field(*line, i, std::string(1, static_cast<char>('x' + i - 1)) + " coordinate");
+    const int existing = model_.node_index(id);
+    if (existing >= 0) {
+      const auto [f, l] = node_lines_[existing];
+      throw InputError(line->where, "node " + std::to_string(id) + " is defined twice (first at " +
+                                        SourceLoc{files_[f], l}.str() + ")");
+    }
+    const int index = model_.add_node(id, x, line->where);
+    node_lines_.emplace_back(static_cast<int>(files_.size()) - 1, line->where.line);
+    if (set) set->nodes.push_back(index);
+  }
+  if (set) sort_unique(set->nodes);
+}
+
+void DeckReader::on_element(const KeywordLine& kw) {
+  const std::string type = normalize_name(kw.find("TYPE")->value);
+  const TElement* formulation = registry_.find(type);
+  if (!formulation) {
+    std::string known;
+    for (const std::string& name : registry_.names()) known += (known.empty() ? "" : ", ") + name;
+    std::string message =
+        "unknown element type " + type + "; registered types: " + (known.empty() ? "none" : known);
+    if (!registry_.searched_paths.empty())
+      message += " (plug-ins searched in " + registry_.searched_paths + ")";
+    throw InputError(kw.where, message);
+  }
+  const auto n = static_cast<std::size_t>(formulation->node_count());
+  ElementSet* set = kw.find("ELSET") ? &elset(set_name(kw, "ELSET"), kw.where) : nullptr;
+  std::vector<int> nodes;
+  while (std::optional<DataLine> line = next_data_line()) {
+    // Continuation: a line ending with ',' or holding the maximum 16 entries goes on.
+    bool more = line->trailing_comma || line->fields.size() == kEntriesPerLine;
+    while (line->fields.size() < n + 1 && more) {
+      std::optional<DataLine> next = next_data_line();
+      if (!next) break;
+      line->fields.insert(line->fields.end(), next->fields.begin(), next->fields.end());
+      more = next->trailing_comma || next->fields.size() == kEntriesPerLine;
+    }
+    const Id id = id_field(*line, 0, "element id");
+    const std::string context = "element " + std::to_string(id) + " (" + type + ")";
+    if (line->fields.size() != n + 1)
+      throw InputError(line->where,
+                       context + " needs " + std::to_string(n) + " nodes, the data line gives " +
+                           std::to_string(line->fields.size() - 1) +
+                           " (lines with more than 16 entries continue on the next line after a "
+                           "trailing ',')");
+    nodes.clear();
+    for (std::size_t i = 1; i <= n; ++i) {
+      const int node = node_by_id(id_field(*line, i, "node " + std::to_string(i) + " of element"),
+                                  line->where, context);
+      if (std::find(nodes.begin(), nodes.end(), node) != nodes.end())
+        throw InputError(line->where, context + ": node " + line->fields[i] +
+                                          " appears twice in the connectivity");
+      nodes.push_back(node);
+    }
+    const int index = model_.add_element(id, type, nodes, line->where);
+    if (set) set->elements.push_back(index);
+  }
+  if (set) sort_unique(set->elements);
+}
+
+void DeckReader::on_nset(const KeywordLine& kw) {
+  const std::string name = set_name(kw, "NSET");
+  const bool generate = kw.find("GENERATE") != nullptr;
+  std::vector<int> members = nset(name, kw.where).nodes;
+  while (std::optional<DataLine> line = next_data_line()) {
+    if (generate) {
+      expect_fields(*line, 2, 3, "first, last[, increment]");
+      const Id first = id_field(*line, 0, "first node");
+      const Id last = id_field(*line, 1, "last node");
+      const Id step = line->fields.size() > 2 ? id_field(*line, 2, "increment") : 1;
+      if (last < first)
+        throw InputError(line->where, "GENERATE range " + std::to_string(first) + ", " +
+                                          std::to_string(last) + ": last is smaller than first");
+      for (Id id = first;; id += step) {  // written so that id never overflows
+        members.push_back(node_by_id(id, line->where, "NSET=" + name + ", GENERATE"));
+        if (last - id < step) break;
+      }
+      continue;
+    }
+    for (std::size_t i = 0; i < line->fields.size(); ++i) {
+      if (line->fields[i].empty()) continue;
+      if (normalize_name(line->fields[i]) == name)
+        throw InputError(line->where, "node set " + name + " cannot contain itself");
+      const std::vector<int> nodes = nodes_of(*line, i, "node id or node set");
+      members.insert(members.end(), nodes.begin(), nodes.end());
+    }
+  }
+  sort_unique(members);
+  model_.nsets[name].nodes = std::move(members);
+}
+
+void DeckReader::on_elset(const KeywordLine& kw) {
+  const std::string name = set_name(kw, "ELSET");
+  const bool generate = kw.find("GENERATE") != nullptr;
+  std::vector<int> members = elset(name, kw.where).elements;
+  while (std::optional<DataLine> line = next_data_line()) {
+    if (generate) {
+      expect_fields(*line, 2, 3, "first, last[, increment]");
+      const Id first = id_field(*line, 0, "first element");
+      const Id last = id_field(*line, 1, "last element");
+      const Id step = line->fields.size() > 2 ? id_field(*line, 2, "increment") : 1;
+      if (last < first)
+        throw InputError(line->where, "GENERATE range " + std::to_string(first) + ", " +
+                                          std::to_string(last) + ": last is smaller than first");
+      for (Id id = first;; id += step) {  // written so that id never overflows
+        members.push_back(element_by_id(id, line->where, "ELSET=" + name + ", GENERATE"));
+        if (last - id < step) break;
+      }
+      continue;
+    }
+    for (std::size_t i = 0; i < line->fields.size(); ++i) {
+      if (line->fields[i].empty()) continue;
+      if (normalize_name(line->fields[i]) == name)
+        throw InputError(line->where, "element set " + name + " cannot contain itself");
+      const std::vector<int> elements = elements_of(*line, i, "element id or element set");
+      members.insert(members.end(), elements.begin(), elements.end());
+    }
+  }
+  sort_unique(members);
+  model_.elsets[name].elements = std::move(members);
+}
+
+}  // namespace styk::inp

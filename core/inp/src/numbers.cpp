@@ -1,0 +1,103 @@
+#include "numbers.hpp"
+
+#include <charconv>
+#include <cmath>
+#include <system_error>
+
+namespace styk::inp {
+
+namespace {
+
+std::string field_label(std::size_t index, const std::string& what) {
+  return "field " + std::to_string(index + 1) + " (" + what + ")";
+}
+
+std::string_view without_plus(std::string_view text) {
+  if (text.size() > 1 && text.front() == '+' && text[1] != '-') text.remove_prefix(1);
+  return text;
+}
+
+// Converts text; returns an empty string on success, otherwise what is wrong with it.
+std::string to_real(std::string_view text, double& value) {
+  if (text.empty()) return "empty, expected a number";
+  const std::string_view digits = without_plus(text);
+  const auto [end, ec] = std::from_chars(digits.data(), digits.data() + digits.size(), value);
+  if (ec == std::errc::result_out_of_range) return "out of range for a double, read " + quote(text);
+  if (ec != std::errc() || end != digits.data() + digits.size()) {
+    std::string why = "expected a number, read " + quote(text);
+    if (text.find_first_of("dD") != std::string_view::npos &&
+        text.find_first_of("0123456789") != std::string_view::npos)
+      why += " (Fortran 'D' exponents are not supported; write E)";
+    return why;
+  }
+  if (!std::isfinite(value)) return "expected a finite number, read " + quote(text);
+  return {};
+}
+
+std::string to_integer(std::string_view text, std::int64_t& value) {
+  if (text.empty()) return "empty, expected an integer";
+  const std::string_view digits = without_plus(text);
+  const auto [end, ec] = std::from_chars(digits.data(), digits.data() + digits.size(), value);
+  if (ec == std::errc::result_out_of_range)
+    return "out of range for an integer, read " + quote(text);
+  if (ec != std::errc() || end != digits.data() + digits.size())
+    return "expected an integer, read " + quote(text);
+  return {};
+}
+
+const std::string& field_text(const DataLine& line, std::size_t index, const std::string& what) {
+  if (index >= line.fields.size())
+    throw InputError(line.where, field_label(index, what) + " is missing (the line has " +
+                                     std::to_string(line.fields.size()) + " field" +
+                                     (line.fields.size() == 1 ? "" : "s") + ")");
+  return line.fields[index];
+}
+
+}  // namespace
+
+double real_field(const DataLine& line, std::size_t index, const std::string& what) {
+  double value = 0.0;
+  const std::string why = to_real(field_text(line, index, what), value);
+  if (!why.empty()) throw InputError(line.where, field_label(index, what) + ": " + why);
+  return value;
+}
+
+std::int64_t integer_field(const DataLine& line, std::size_t index, const std::string& what) {
+  std::int64_t value = 0;
+  const std::string why = to_integer(field_text(line, index, what), value);
+  if (!why.empty()) throw InputError(line.where, field_label(index, what) + ": " + why);
+  return value;
+}
+
+Id id_field(const DataLine& line, std::size_t index, const std::string& what) {
+  const std::int64_t value = integer_field(line, index, what);
+  if (value < 1)
+    throw InputError(line.where, field_label(index, what) + ": ids must be positive, read " +
+                                     std::to_string(value));
+  return value;
+}
+
+double real_value(const std::string& text, const std::string& what, const SourceLoc& where) {
+  double value = 0.0;
+  const std::string why = to_real(text, value);
+  if (!why.empty()) throw InputError(where, what + ": " + why);
+  return value;
+}
+
+std::int64_t integer_value(const std::string& text, const std::string& what,
+                           const SourceLoc& where) {
+  std::int64_t value = 0;
+  const std::string why = to_integer(text, value);
+  if (!why.empty()) throw InputError(where, what + ": " + why);
+  return value;
+}
+
+bool looks_like_integer(const std::string& text) {
+  std::size_t i = (!text.empty() && (text[0] == '+' || text[0] == '-')) ? 1 : 0;
+  if (i == text.size()) return false;
+  for (; i < text.size(); ++i)
+    if (text[i] < '0' || text[i] > '9') return false;
+  return true;
+}
+
+}  // namespace styk::inp

@@ -1,0 +1,26 @@
+// Strict conversion of data-line fields to numbers: the whole field must be consumed, nan and inf
+// are rejected, and every failure names the field, what it should hold and what was read.
+#pragma once
+
+#include <string>
+
+#include "card.hpp"
+#include "styk/core/model.hpp"
+
+namespace styk::inp {
+
+// Field `index` (0-based) of `line`; `what` names it in messages ("x coordinate", "node id").
+double real_field(const DataLine& line, std::size_t index, const std::string& what);
+std::int64_t integer_field(const DataLine& line, std::size_t index, const std::string& what);
+// A user id: an integer >= 1.
+Id id_field(const DataLine& line, std::size_t index, const std::string& what);
+
+// Conversions of parameter values; `what` is e.g. "INC= of *STEP".
+double real_value(const std::string& text, const std::string& what, const SourceLoc& where);
+std::int64_t integer_value(const std::string& text, const std::string& what,
+                           const SourceLoc& where);
+
+// True when the text is an optionally signed run of digits (an id rather than a set name).
+bool looks_like_integer(const std::string& text);
+
+}  // namespace styk::inp

@@ -1,0 +1,171 @@
+#include "styk/inp/writer.hpp"
+
+#include <charconv>
+#include <string>
+
+namespace styk {
+
+namespace {
+
+// Abaqus data lines hold at most 16 entries.
+constexpr int kEntriesPerLine = 16;
+
+// Shortest text that reads back to exactly the same double.
+std::string num(double value) {
+  char buf[32];
+  const auto result = std::to_chars(buf, buf + sizeof buf, value);
+  return std::string(buf, result.ptr);
+}
+
+void write_id_lines(std::ostream& out, const std::vector<int>& indices,
+                    const std::vector<Id>& ids_by_index) {
+  int on_line = 0;
+  for (std::size_t i = 0; i < indices.size(); ++i) {
+    out << ids_by_index[indices[i]];
+    const bool last = i + 1 == indices.size();
+    if (last || ++on_line == kEntriesPerLine) {
+      out << '\n';
+      on_line = 0;
+    } else {
+      out << ", ";
+    }
+  }
+}
+
+void write_mesh(const Model& model, std::ostream& out) {
+  out << "*NODE\n";
+  for (int n = 0; n < model.node_count(); ++n) {
+    const Vec3& x = model.coords[n];
+    out << model.node_ids[n] << ", " << num(x[0]) << ", " << num(x[1]) << ", " << num(x[2]) << '\n';
+  }
+  std::string type;
+  for (int e = 0; e < model.element_count(); ++e) {
+    const Element& element = model.elements[e];
+    if (element.type != type) {
+      type = element.type;
+      out << "*ELEMENT, TYPE=" << type << '\n';
+    }
+    // Id plus up to 15 nodes on the first line, then 16 per continuation line.
+    out << element.id;
+    int on_line = 1;
+    const int* nodes = model.element_nodes(e);
+    for (int i = 0; i < element.node_count; ++i) {
+      if (on_line == kEntriesPerLine) {
+        out << ",\n";
+        on_line = 0;
+      } else {
+        out << ", ";
+      }
+      out << model.node_ids[nodes[i]];
+      ++on_line;
+    }
+    out << '\n';
+  }
+  std::vector<Id> element_ids;
+  element_ids.reserve(model.elements.size());
+  for (const Element& element : model.elements) element_ids.push_back(element.id);
+  for (const auto& [name, set] : model.nsets) {
+    out << "*NSET, NSET=" << name << '\n';
+    write_id_lines(out, set.nodes, model.node_ids);
+  }
+  for (const auto& [name, set] : model.elsets) {
+    out << "*ELSET, ELSET=" << name << '\n';
+    write_id_lines(out, set.elements, element_ids);
+  }
+}
+
+void write_properties(const Model& model, std::ostream& out) {
+  for (const Material& m : model.materials) {
+    out << "*MATERIAL, NAME=" << m.name << '\n';
+    if (m.young && m.poisson)
+      out << "*ELASTIC\n" << num(*m.young) << ", " << num(*m.poisson) << '\n';
+    if (m.density) out << "*DENSITY\n" << num(*m.density) << '\n';
+    if (m.expansion)
+      out << "*EXPANSION, ZERO=" << num(m.expansion_reference) << '\n' << num(*m.expansion) << '\n';
+  }
+  for (const Section& s : model.sections) {
+    out << "*SOLID SECTION, ELSET=" << s.elset << ", MATERIAL=" << s.material << '\n';
+    if (s.thickness) out << num(*s.thickness) << '\n';
+  }
+}
+
+void write_boundaries(const Model& model, const std::vector<Boundary>& boundaries, bool op_new,
+                      std::ostream& out) {
+  if (boundaries.empty() && !op_new) return;
+  out << "*BOUNDARY" << (op_new ? ", OP=NEW" : "") << '\n';
+  for (const Boundary& b : boundaries)
+    out << model.node_ids[b.node] << ", " << b.dof << ", " << b.dof << ", " << num(b.value) << '\n';
+}
+
+const char* solver_name(LinearSolverKind kind) {
+  switch (kind) {
+    case LinearSolverKind::Cholmod:
+      return "SPOOLES";  // read back as the direct solver; CalculiX knows this name
+    case LinearSolverKind::Iterative:
+      return "ITERATIVE CHOLESKY";
+    case LinearSolverKind::Automatic:
+      break;
+  }
+  return nullptr;
+}
+
+const char* output_keyword(OutputRequest::Kind kind) {
+  switch (kind) {
+    case OutputRequest::Kind::NodePrint:
+      return "*NODE PRINT";
+    case OutputRequest::Kind::ElementPrint:
+      return "*EL PRINT";
+    case OutputRequest::Kind::NodeFile:
+      return "*NODE FILE";
+    case OutputRequest::Kind::ElementFile:
+      return "*EL FILE";
+  }
+  return "";
+}
+
+void write_step(const Model& model, const Step& step, std::ostream& out) {
+  out << "*STEP";
+  if (!step.name.empty()) out << ", NAME=" << step.name;
+  out << '\n';
+  if (step.has_procedure) {
+    const StaticProcedure& p = step.procedure;
+    out << "*STATIC";
+    if (const char* solver = solver_name(p.solver)) out << ", SOLVER=" << solver;
+    out << '\n' << num(p.initial_increment) << ", " << num(p.total_time) << '\n';
+  }
+  write_boundaries(model, step.boundaries, step.boundary_op_new, out);
+  if (!step.cloads.empty() || step.cload_op_new) {
+    out << "*CLOAD" << (step.cload_op_new ? ", OP=NEW" : "") << '\n';
+    for (const ConcentratedLoad& c : step.cloads)
+      out << model.node_ids[c.node] << ", " << c.dof << ", " << num(c.value) << '\n';
+  }
+  if (!step.dloads.empty() || step.dload_op_new) {
+    out << "*DLOAD" << (step.dload_op_new ? ", OP=NEW" : "") << '\n';
+    for (const DistributedLoad& d : step.dloads)
+      out << model.elements[d.element].id << ", P" << d.face << ", " << num(d.magnitude) << '\n';
+  }
+  for (const OutputRequest& o : step.outputs) {
+    const bool nodal =
+        o.kind == OutputRequest::Kind::NodePrint || o.kind == OutputRequest::Kind::NodeFile;
+    out << output_keyword(o.kind);
+    if (!o.set.empty()) out << (nodal ? ", NSET=" : ", ELSET=") << o.set;
+    if (o.totals) out << ", TOTALS=YES";
+    out << '\n';
+    for (std::size_t i = 0; i < o.vars.size(); ++i) out << (i ? ", " : "") << o.vars[i];
+    out << '\n';
+  }
+  out << "*END STEP\n";
+}
+
+}  // namespace
+
+void write_inp(const Model& model, std::ostream& out) {
+  out << "** Written by Styk" << (model.source.empty() ? "" : " from " + model.source) << '\n';
+  if (!model.heading.empty()) out << "*HEADING\n" << model.heading << '\n';
+  write_mesh(model, out);
+  write_properties(model, out);
+  write_boundaries(model, model.boundaries, false, out);
+  for (const Step& step : model.steps) write_step(model, step, out);
+}
+
+}  // namespace styk

@@ -1,0 +1,239 @@
+#!/usr/bin/env python3
+"""Writes the broken decks of tests/inputs/bad/ and their manifest.tsv.
+
+Each deck is the small base model below with one thing broken. The line the error must point at
+is marked with '>>' in the text (or the text starts with '@@' for errors about the deck as a whole,
+line 0) (the marker is removed when the file is written), so the manifest's
+line numbers cannot drift from the decks. manifest.tsv columns:
+    deck <TAB> expected exit code of `styk solve` <TAB> expected line (0 = the deck as a whole)
+    <TAB> substring the message must contain
+Decks named solver_*.inp are valid input that the solver must reject (the reader accepts them).
+Run from anywhere: python3 tests/inputs/make_bad_decks.py
+"""
+import os
+
+HERE = os.path.join(os.path.dirname(os.path.abspath(__file__)), "bad")
+
+NODES = """*NODE, NSET=ALL
+1, 0., 0., 0.
+2, 1., 0., 0.
+3, 1., 1., 0.
+4, 0., 1., 0.
+5, 0., 0., 1.
+6, 1., 0., 1.
+7, 1., 1., 1.
+8, 0., 1., 1.
+"""
+ELEMENTS = """*ELEMENT, TYPE=C3D8, ELSET=BLOCK
+1, 1, 2, 3, 4, 5, 6, 7, 8
+"""
+SETS = """*NSET, NSET=FIXED
+1, 4, 5, 8
+*NSET, NSET=TIP
+2, 3, 6, 7
+"""
+MATERIAL = """*MATERIAL, NAME=STEEL
+*ELASTIC
+210000., 0.3
+"""
+SECTION = "*SOLID SECTION, ELSET=BLOCK, MATERIAL=STEEL\n"
+BOUNDARY = "*BOUNDARY\nFIXED, 1, 3\n"
+STEP = """*STEP
+*STATIC
+*CLOAD
+TIP, 3, -1.
+*NODE PRINT, NSET=TIP
+U
+*END STEP
+"""
+BASE = NODES + ELEMENTS + SETS + MATERIAL + SECTION + BOUNDARY + STEP
+
+
+def base(**replace):
+    """The base deck with parts replaced: base(STEP='...')."""
+    parts = dict(NODES=NODES, ELEMENTS=ELEMENTS, SETS=SETS, MATERIAL=MATERIAL, SECTION=SECTION,
+                 BOUNDARY=BOUNDARY, STEP=STEP)
+    parts.update(replace)
+    return "".join(parts[k] for k in ("NODES", "ELEMENTS", "SETS", "MATERIAL", "SECTION",
+                                      "BOUNDARY", "STEP"))
+
+
+# (deck, description, text with '>>' marking the offending line, exit code, substring)
+DECKS = [
+    ("unknown_keyword", "a keyword Styk does not read",
+     base(SECTION=SECTION + ">>*SURFACE BEHAVIOR, PRESSURE-OVERCLOSURE=HARD\n"), 1,
+     "unknown keyword *SURFACE BEHAVIOR"),
+    ("unknown_parameter", "a misspelt parameter",
+     base(NODES=NODES.replace("*NODE, NSET=ALL", ">>*NODE, NSETT=ALL")), 1,
+     "unknown parameter NSETT on *NODE"),
+    ("unknown_element_type", "an element type nobody registered",
+     base(ELEMENTS=">>*ELEMENT, TYPE=C3D99, ELSET=BLOCK\n1, 1, 2, 3, 4, 5, 6, 7, 8\n"), 1,
+     "unknown element type C3D99"),
+    ("wrong_node_count", "a C3D8 with seven nodes",
+     base(ELEMENTS="*ELEMENT, TYPE=C3D8, ELSET=BLOCK\n>>1, 1, 2, 3, 4, 5, 6, 7\n"), 1,
+     "needs 8 nodes, the data line gives 7"),
+    ("missing_node", "an element using a node that is not defined",
+     base(ELEMENTS="*ELEMENT, TYPE=C3D8, ELSET=BLOCK\n>>1, 1, 2, 3, 4, 5, 6, 7, 99\n"), 1,
+     "node 99 is not defined"),
+    ("duplicate_node", "node 3 defined twice",
+     base(NODES=NODES + ">>3, 2., 2., 2.\n"), 1, "node 3 is defined twice"),
+    ("duplicate_element", "element 1 defined twice",
+     base(ELEMENTS=ELEMENTS + ">>1, 1, 2, 3, 4, 5, 6, 7, 8\n"), 1, "element 1 is defined twice"),
+    ("repeated_node_in_element", "an element listing one node twice",
+     base(ELEMENTS="*ELEMENT, TYPE=C3D8, ELSET=BLOCK\n>>1, 1, 2, 3, 4, 5, 6, 7, 7\n"), 1,
+     "appears twice in the connectivity"),
+    ("undefined_nset", "a boundary on a node set that does not exist",
+     base(BOUNDARY="*BOUNDARY\n>>FIXD, 1, 3\n"), 1, "node set FIXD is not defined"),
+    ("undefined_elset", "a section on an element set that does not exist",
+     base(SECTION=">>*SOLID SECTION, ELSET=BLOK, MATERIAL=STEEL\n"), 1,
+     "element set BLOK, which is not defined"),
+    ("undefined_material", "a section naming a material that does not exist",
+     base(SECTION=">>*SOLID SECTION, ELSET=BLOCK, MATERIAL=ALUMINIUM\n"), 1,
+     "material ALUMINIUM, which is not defined"),
+    ("section_without_material", "a section without MATERIAL=",
+     base(SECTION=">>*SOLID SECTION, ELSET=BLOCK\n"), 1, "*SOLID SECTION needs MATERIAL="),
+    ("material_without_elastic", "a material with a density but no elastic constants",
+     base(MATERIAL=">>*MATERIAL, NAME=STEEL\n*DENSITY\n7.85e-9\n"), 1,
+     "material STEEL has no *ELASTIC"),
+    ("elastic_missing_value", "*ELASTIC with E but no Poisson's ratio",
+     base(MATERIAL="*MATERIAL, NAME=STEEL\n*ELASTIC\n>>210000.\n"), 1, "expected E, nu"),
+    ("elastic_orthotropic", "an elastic type Styk does not read",
+     base(MATERIAL="*MATERIAL, NAME=STEEL\n>>*ELASTIC, TYPE=ORTHO\n1., 1., 1., 1., 1., 1., 1., 1., 1.\n"),
+     1, "TYPE=ORTHO is not supported"),
+    ("poisson_out_of_range", "Poisson's ratio 0.5",
+     base(MATERIAL="*MATERIAL, NAME=STEEL\n*ELASTIC\n>>210000., 0.5\n"), 1,
+     "Poisson's ratio must lie in (-1, 0.5)"),
+    ("negative_thickness", "a negative section thickness",
+     base(SECTION=SECTION + ">>-2.\n"), 1, "thickness must be positive"),
+    ("zero_thickness", "a zero section thickness",
+     base(SECTION=SECTION + ">>0.\n"), 1, "thickness must be positive"),
+    ("non_numeric_field", "a coordinate that is not a number",
+     base(NODES=NODES.replace("7, 1., 1., 1.", ">>7, 1., 1.0x, 1.")), 1,
+     "field 3 (y coordinate): expected a number, read '1.0x'"),
+    ("fortran_exponent", "a Fortran D exponent",
+     base(MATERIAL="*MATERIAL, NAME=STEEL\n*ELASTIC\n>>2.1D5, 0.3\n"), 1,
+     "Fortran 'D' exponents are not supported"),
+    ("nan_coordinate", "a coordinate that reads as NaN",
+     base(NODES=NODES.replace("6, 1., 0., 1.", ">>6, nan, 0., 1.")), 1,
+     "expected a finite number, read 'nan'"),
+    ("number_out_of_range", "a coordinate beyond the range of a double",
+     base(NODES=NODES.replace("6, 1., 0., 1.", ">>6, 1e999, 0., 1.")), 1,
+     "out of range for a double"),
+    ("negative_node_id", "a node id below 1",
+     base(NODES=NODES + ">>-4, 2., 2., 2.\n"), 1, "ids must be positive"),
+    ("empty_mesh", "materials and a step but no nodes or elements",
+     "@@" + MATERIAL + "*STEP\n*STATIC\n*END STEP\n", 1, "the deck defines no nodes"),
+    ("no_elements", "nodes but no elements",
+     "@@" + NODES + MATERIAL + "*STEP\n*STATIC\n*END STEP\n", 1, "the deck defines no elements"),
+    ("no_steps", "a model without an analysis step",
+     "@@" + base(STEP=""), 1, "the deck has no analysis step"),
+    ("truncated", "a deck that ends inside a step (no *END STEP)",
+     base(STEP=">>*STEP\n*STATIC\n*CLOAD\nTIP, 3, -1.\n"), 1, "*END STEP is missing"),
+    ("step_inside_step", "a second *STEP before *END STEP",
+     base(STEP="*STEP\n*STATIC\n>>*STEP\n*STATIC\n*END STEP\n"), 1, "has no *END STEP"),
+    ("step_without_procedure", "a step without *STATIC",
+     base(STEP="*STEP\n*CLOAD\nTIP, 3, -1.\n>>*END STEP\n"), 1, "has no procedure"),
+    ("nlgeom", "geometric nonlinearity requested",
+     base(STEP=">>*STEP, NLGEOM\n*STATIC\n*END STEP\n"), 1,
+     "geometric nonlinearity is not supported"),
+    ("unknown_solver", "*STATIC, SOLVER= with a name Styk does not know",
+     base(STEP="*STEP\n>>*STATIC, SOLVER=MUMPS\n*END STEP\n"), 1, "SOLVER=MUMPS is not known"),
+    ("cload_outside_step", "a load in the model part of the deck",
+     base(BOUNDARY=BOUNDARY + ">>*CLOAD\nTIP, 3, -1.\n"), 1,
+     "*CLOAD is only allowed inside a step"),
+    ("node_inside_step", "model data inside a step",
+     base(STEP="*STEP\n*STATIC\n>>*NODE\n9, 3., 3., 3.\n*END STEP\n"), 1,
+     "*NODE is not allowed inside a step"),
+    ("dload_bad_label", "a distributed load type Styk does not read",
+     base(STEP="*STEP\n*STATIC\n*DLOAD\n>>BLOCK, GRAV, 9.81, 0., 0., -1.\n*END STEP\n"), 1,
+     "load label 'GRAV' is not supported"),
+    ("dof_out_of_range", "a rotational dof on a solid",
+     base(BOUNDARY="*BOUNDARY\n>>FIXED, 1, 6\n"), 1, "last dof 6 is out of range"),
+    ("temperature_dof", "dof 11 (temperature)",
+     base(BOUNDARY="*BOUNDARY\nFIXED, 1, 3\n>>TIP, 11, 11, 20.\n"), 1,
+     "11 (temperature) is not supported"),
+    ("boundary_encastre", "an Abaqus named boundary type",
+     base(BOUNDARY="*BOUNDARY\n>>FIXED, ENCASTRE\n"), 1, "ENCASTRE are not supported"),
+    ("unknown_output_variable", "a stress request in *NODE PRINT",
+     base(STEP="*STEP\n*STATIC\n*NODE PRINT, NSET=TIP\n>>U, S\n*END STEP\n"), 1,
+     "output variable 'S' is not supported by *NODE PRINT"),
+    ("generate_bad_range", "*NSET, GENERATE with last < first",
+     base(SETS=SETS + "*NSET, NSET=MORE, GENERATE\n>>8, 1, 1\n"), 1,
+     "last is smaller than first"),
+    ("data_before_keyword", "a data line before any keyword",
+     "** the next line has no keyword above it\n>>1, 0., 0., 0.\n" + BASE, 1,
+     "before the first keyword"),
+    ("data_after_dataless_keyword", "data lines under *MATERIAL itself",
+     base(MATERIAL="*MATERIAL, NAME=STEEL\n>>210000., 0.3\n*ELASTIC\n210000., 0.3\n"), 1,
+     "*MATERIAL takes no data lines"),
+    ("elastic_outside_material", "*ELASTIC without *MATERIAL above it",
+     base(SECTION=SECTION + ">>*ELASTIC\n1., 0.3\n"), 1, "*ELASTIC must follow *MATERIAL"),
+    ("element_without_section", "an element that no section covers",
+     base(ELEMENTS=ELEMENTS + "*ELEMENT, TYPE=C3D8\n>>2, 1, 2, 3, 4, 5, 6, 7, 8\n"), 1,
+     "element 2 (C3D8) has no section"),
+    ("element_in_two_sections", "an element claimed by two sections",
+     base(SECTION=SECTION + ">>*SOLID SECTION, ELSET=BLOCK, MATERIAL=STEEL\n"), 1,
+     "already has a section"),
+    ("continuation_then_keyword", "a keyword line ending with ',' followed by a keyword",
+     base(SETS="*NSET, NSET=FIXED,\n>>*NSET, NSET=TIP\n2, 3, 6, 7\n"), 1,
+     "ends with ',' (a continuation)"),
+    ("include_missing", "*INCLUDE of a file that does not exist",
+     base(SETS=SETS + ">>*INCLUDE, INPUT=no_such_part.inp\n"), 1, "no such file"),
+    ("solver_inverted_element", "an inside-out element: valid input, the solver rejects it",
+     base(ELEMENTS="*ELEMENT, TYPE=C3D8, ELSET=BLOCK\n>>1, 5, 6, 7, 8, 1, 2, 3, 4\n"), 1,
+     "Jacobian"),
+    ("solver_unconstrained", "no boundary conditions: valid input, the solver rejects it",
+     "@@" + base(BOUNDARY=""), 1, "free"),
+]
+
+
+def write(name, description, text):
+    whole_deck = text.startswith("@@")
+    lines = text[2:].split("\n") if whole_deck else text.split("\n")
+    header = [f"** Broken deck: {description}."]
+    marked = [i for i, l in enumerate(lines) if l.startswith(">>")]
+    assert len(marked) == (0 if whole_deck else 1), name
+    line = 0
+    if marked:
+        lines[marked[0]] = lines[marked[0]][2:]
+        line = marked[0] + 1 + len(header)
+    with open(os.path.join(HERE, name + ".inp"), "w") as f:
+        f.write("\n".join(header + lines))
+    return line
+
+
+def main():
+    os.makedirs(HERE, exist_ok=True)
+    rows = []
+    for name, description, text, code, substring in DECKS:
+        line = write(name, description, text)
+        rows.append((name + ".inp", code, line, substring))
+
+    # Include cycle: a -> b -> a. Both *INCLUDE lines are line 2, so either deck, read first,
+    # reports the cycle at line 2 of the other.
+    with open(os.path.join(HERE, "include_cycle_a.inp"), "w") as f:
+        f.write("** Broken deck: includes include_cycle_b.inp, which includes this file.\n"
+                "*INCLUDE, INPUT=include_cycle_b.inp\n" + BASE)
+    with open(os.path.join(HERE, "include_cycle_b.inp"), "w") as f:
+        f.write("** Broken deck: includes include_cycle_a.inp, which includes this file.\n"
+                "*INCLUDE, INPUT=include_cycle_a.inp\n")
+    rows.append(("include_cycle_a.inp", 1, 2, "include cycle"))
+    rows.append(("include_cycle_b.inp", 1, 2, "include cycle"))
+
+    # Binary garbage: bytes no text editor would write, NUL on the first line.
+    garbage = bytes((i * 37 + 11) % 256 for i in range(512))
+    with open(os.path.join(HERE, "binary_garbage.inp"), "wb") as f:
+        f.write(b"\x7fELF\x02\x01\x01\x00" + garbage)
+    rows.append(("binary_garbage.inp", 1, 1, "not a text line"))
+
+    # An empty file.
+    open(os.path.join(HERE, "empty_file.inp"), "w").close()
+    rows.append(("empty_file.inp", 1, 0, "the deck defines no nodes"))
+
+    with open(os.path.join(HERE, "manifest.tsv"), "w") as f:
+        for row in rows:
+            f.write("\t".join(str(x) for x in row) + "\n")
+
+
+if __name__ == "__main__":
+    main()

@@ -1,0 +1,12 @@
+// Test doubles for the element registry: the reader needs only an element type's name and node
+// count, so these fakes keep the reader tests independent of the element library.
+#pragma once
+
+#include "styk/core/element_registry.hpp"
+
+namespace styk::test {
+
+// A registry holding fake C3D8 (8 nodes) and C3D20 (20 nodes) types.
+ElementRegistry fake_registry();
+
+}  // namespace styk::test
