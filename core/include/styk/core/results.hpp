@@ -23,6 +23,17 @@ struct IncrementResult {
   std::vector<int> ip_offset;
   std::vector<Tensor6> S;       // stress
   std::vector<Tensor6> E;       // strain, tensor components (eps_12, not gamma_12)
+
+  // Recovered values (SPEC §5); empty when not computed. Element-node values follow the layout
+  // of Model::connectivity (element e's node k at elements[e].first_node + k).
+  std::vector<Tensor6> S_element_nodes;  // integration-point values extrapolated, unaveraged
+  std::vector<Tensor6> E_element_nodes;
+  std::vector<Tensor6> S_centroid;       // per element, evaluated at the element centre
+  std::vector<Tensor6> E_centroid;
+  std::vector<Tensor6> S_nodal_I;        // per node: method I, mean of the element-node values
+  std::vector<Tensor6> S_nodal_II;       // per node: method II, mean of the centroid values
+  std::vector<Tensor6> E_nodal_I;
+  std::vector<Tensor6> E_nodal_II;
 };
 
 struct Results {

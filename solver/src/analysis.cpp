@@ -1,0 +1,158 @@
+// The linear static step driver: check -> pattern -> assemble -> (per step) rigid-body check,
+// order/factorise when the set of prescribed dofs changes, solve, recover.
+#include "styk/solver/analysis.hpp"
+
+#include <memory>
+
+#include "assembly.hpp"
+#include "linear_solver.hpp"
+#include "mechanism_check.hpp"
+#include "parallel.hpp"
+#include "phase_recorder.hpp"
+#include "prepared_model.hpp"
+#include "recovery.hpp"
+#include "step_conditions.hpp"
+#include "stiffness_matrix.hpp"
+
+namespace styk {
+namespace {
+
+using namespace solver_detail;
+
+#ifdef STYK_HAVE_PETSC
+constexpr bool kHaveIterativeSolver = true;
+#else
+constexpr bool kHaveIterativeSolver = false;
+#endif
+
+// Automatic choice: CHOLMOD below this many free dofs, CG + GAMG (tolerance 1e-7) from it on.
+// Measured on the C3D20 cantilever of PERFORMANCE.md, 2 cores, one batch (wall / peak RSS):
+//   51 408 dofs:  CHOLMOD  2.0 s / 0.55 GB   GAMG  5.3 s / 0.19 GB (59 its)
+//   195 000 dofs: CHOLMOD 19.0 s / 2.79 GB   GAMG 20.7 s / 0.61 GB (55 its)
+// CHOLMOD time grows ~ n^1.8 (factorisation flops), GAMG ~ n^1.0; the times cross at ~170k dofs
+// and GAMG needs 3-5x less memory, so the switch sits a little below the crossing.
+constexpr long long kIterativeFromDofs = 150000;
+
+LinearSolverKind choose_solver(const SolveOptions& options, const Step& step,
+                               long long free_dofs) {
+  const bool forced = options.force != LinearSolverKind::Automatic;
+  const LinearSolverKind requested = forced ? options.force : step.procedure.solver;
+  if (requested == LinearSolverKind::Iterative && !kHaveIterativeSolver)
+    throw InputError(forced ? SourceLoc{} : step.procedure.where,
+                     "the iterative solver is not available: this build has no PETSc "
+                     "(configure with STYK_PETSC=ON)");
+  if (requested != LinearSolverKind::Automatic) return requested;
+  return kHaveIterativeSolver && free_dofs >= kIterativeFromDofs ? LinearSolverKind::Iterative
+                                                                 : LinearSolverKind::Cholmod;
+}
+
+std::unique_ptr<LinearSolver> make_solver(LinearSolverKind kind, const SolverContext& context,
+                                          const SolveOptions& options) {
+  if (kind == LinearSolverKind::Iterative)
+    return make_gamg_solver(context, options.iterative_tolerance);
+  return make_cholmod_solver(context);
+}
+
+}  // namespace
+
+Results run_static_analysis(const Model& model, const ElementRegistry& registry,
+                            const SolveOptions& options, ProgressSink* progress,
+                            AnalysisReport* report) {
+  if (report != nullptr) *report = AnalysisReport{};
+  const PhaseRecorder phases(progress, report);
+  const int threads = resolve_threads(options.threads);
+  const SourceLoc whole_model{model.source, 0};
+
+  PreparedModel prepared;
+  std::vector<StepConditions> conditions;
+  {
+    const PhaseRecorder::Scope phase(phases, "check");
+    if (model.steps.empty())
+      throw InputError(whole_model, "the model has no *STEP: there is nothing to analyse");
+    if (model.element_count() == 0)
+      throw InputError(whole_model, "the model has no elements");
+    prepared = prepare_model(model, registry);
+    conditions = accumulate_step_conditions(model, prepared);
+  }
+
+  std::unique_ptr<StiffnessMatrix> K;
+  {
+    const PhaseRecorder::Scope phase(phases, "pattern");
+    K = std::make_unique<StiffnessMatrix>(model, prepared, threads);
+    phases.info("pattern: " + std::to_string(prepared.active_dofs()) + " dofs, " +
+                std::to_string(K->nonzeros()) + " nonzeros, " +
+                std::to_string(K->colouring().colours()) + " element colours");
+  }
+  {
+    const PhaseRecorder::Scope phase(phases, "assemble");
+    assemble_stiffness(model, prepared, *K, threads);
+  }
+
+  const SolverContext context{model, prepared, phases, threads};
+  std::unique_ptr<LinearSolver> solver;
+  LinearSolverKind solver_kind = LinearSolverKind::Automatic;
+  std::vector<int> solver_prescribed;
+  auto set_up_solver = [&](LinearSolverKind kind, const std::vector<int>& prescribed) {
+    solver.reset();  // drops any view of K's arrays before K is reassembled
+    if (!K->pristine()) {
+      const PhaseRecorder::Scope phase(phases, "assemble");
+      assemble_stiffness(model, prepared, *K, threads);
+    }
+    solver = make_solver(kind, context, options);
+    solver->prepare(*K, partition_dofs(prepared.active_dofs(), prescribed));
+    solver_kind = kind;
+    solver_prescribed = prescribed;
+  };
+
+  Results results;
+  double total_time = 0.0;
+  for (std::size_t k = 0; k < model.steps.size(); ++k) {
+    const Step& step = model.steps[k];
+    const std::vector<int> prescribed = prescribed_dofs(conditions[k]);
+    const long long free_dofs = prepared.active_dofs() - static_cast<long long>(prescribed.size());
+    const LinearSolverKind kind = choose_solver(options, step, free_dofs);
+
+    // A new factorisation only when the prescribed set (or the solver) changes; otherwise the
+    // step costs a right-hand side and a solve.
+    if (!solver || kind != solver_kind || prescribed != solver_prescribed) {
+      {
+        const PhaseRecorder::Scope phase(phases, "check");
+        check_rigid_body_modes(model, prepared, K->graph(), prescribed);
+      }
+      try {
+        set_up_solver(kind, prescribed);
+      } catch (const FactorTooLarge& too_large) {
+        const bool automatic = options.force == LinearSolverKind::Automatic &&
+                               step.procedure.solver == LinearSolverKind::Automatic;
+        if (!automatic || !kHaveIterativeSolver) throw;
+        phases.info(std::string(too_large.what()) + "; switching to the iterative solver");
+        set_up_solver(LinearSolverKind::Iterative, prescribed);
+      }
+      if (report != nullptr && report->linear_solver.empty()) {
+        report->linear_solver = solver->description();
+        report->dofs = free_dofs;
+      }
+    }
+
+    const std::vector<double> f = assemble_loads(model, prepared, conditions[k]);
+    std::vector<double> prescribed_value(prepared.active_dofs(), 0.0);
+    for (const DofValue& p : conditions[k].prescribed) prescribed_value[p.dof] = p.value;
+    const std::vector<double> u = solver->solve(f, prescribed_value);
+    if (report != nullptr) report->iterations += solver->iterations();
+
+    IncrementResult increment;
+    increment.step = static_cast<int>(k) + 1;
+    increment.increment = 1;
+    increment.step_time = step.procedure.total_time;
+    total_time += step.procedure.total_time;
+    increment.total_time = total_time;
+    {
+      const PhaseRecorder::Scope phase(phases, "recover");
+      recover_increment(model, prepared, prescribed, u, f, threads, increment);
+    }
+    results.increments.push_back(std::move(increment));
+  }
+  return results;
+}
+
+}  // namespace styk

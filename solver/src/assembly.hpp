@@ -1,0 +1,26 @@
+// Assembly of the global stiffness (element matrices from TElement::stiffness scattered into the
+// node-graph pattern, in parallel over element colours) and of the external load vector.
+#pragma once
+
+#include <vector>
+
+#include <Eigen/Core>
+
+#include "prepared_model.hpp"
+#include "step_conditions.hpp"
+#include "stiffness_matrix.hpp"
+
+namespace styk::solver_detail {
+
+// Fills `geometry` (coordinates, id, deck line) for element e, reusing its storage.
+void element_geometry(const Model& model, int e, ElementGeometry& geometry);
+
+// Overwrites K's values with the assembled stiffness (full integration) and marks it pristine.
+void assemble_stiffness(const Model& model, const PreparedModel& prepared, StiffnessMatrix& K,
+                        int threads);
+
+// External forces on all active dofs: concentrated loads plus consistent pressure loads.
+std::vector<double> assemble_loads(const Model& model, const PreparedModel& prepared,
+                                   const StepConditions& conditions);
+
+}  // namespace styk::solver_detail

@@ -1,0 +1,252 @@
+// Direct solver: CHOLMOD supernodal Cholesky of K_ff (upper triangle, free dofs only), ordered by
+// METIS nested dissection on the node graph (AMD if METIS fails). The factor is kept, so steps
+// that only change loads or prescribed values cost one forward/back substitution.
+#include <unistd.h>
+
+#include <chrono>
+#include <cmath>
+#include <cstdio>
+#include <stdexcept>
+
+#include "cholmod_handles.hpp"
+#include "linear_solver.hpp"
+#include "node_ordering.hpp"
+#include "parallel.hpp"
+
+namespace styk::solver_detail {
+namespace {
+
+std::string format(const char* pattern, double a, double b = 0.0, double c = 0.0) {
+  char buffer[160];
+  std::snprintf(buffer, sizeof buffer, pattern, a, b, c);
+  return buffer;
+}
+
+double physical_memory_bytes() {
+  const long pages = sysconf(_SC_PHYS_PAGES);
+  const long page_size = sysconf(_SC_PAGE_SIZE);
+  return pages > 0 && page_size > 0 ? static_cast<double>(pages) * page_size : 0.0;
+}
+
+class CholmodSolver final : public LinearSolver {
+ public:
+  explicit CholmodSolver(const SolverContext& context)
+      : context_(context), common_(std::make_unique<CholmodCommon>()) {
+    cholmod_common* c = common_->get();
+    c->print = 0;  // our messages, not CHOLMOD's
+    c->supernodal = CHOLMOD_SUPERNODAL;
+    c->quick_return_if_not_posdef = 1;
+  }
+
+  std::string description() const override { return description_; }
+
+  void prepare(StiffnessMatrix& K, const DofPartition& partition) override {
+    partition_ = partition;
+    coupling_ = extract_coupling(K, partition);
+    if (partition.free_count() == 0) return;  // everything prescribed: nothing to factorise
+    {
+      const PhaseRecorder::Scope phase(context_.phases, "order");
+      A_ = upper_free_matrix(K, partition);
+      // K's values are no longer needed (A_ and coupling_ hold what the solves use): free them
+      // before the factor takes its memory.
+      K.release_values();
+      analyse(K.graph(), partition);
+    }
+    const PhaseRecorder::Scope phase(context_.phases, "factorise");
+    factorise();
+  }
+
+  std::vector<double> solve(const std::vector<double>& f,
+                            const std::vector<double>& prescribed_value) override {
+    const PhaseRecorder::Scope phase(context_.phases, "solve");
+    const DofPartition& partition = partition_;
+    std::vector<double> u(f.size(), 0.0);
+    for (int dof : partition.prescribed) u[dof] = prescribed_value[dof];
+    if (partition.free_count() == 0) return u;
+    const std::vector<double> rhs = free_rhs(f, partition, coupling_, prescribed_value);
+    cholmod_common* c = common_->get();
+    const auto n = static_cast<std::size_t>(partition.free_count());
+    CholmodDense b(cholmod_l_allocate_dense(n, 1, n, CHOLMOD_REAL, c), CholmodDenseDeleter{c});
+    if (!b) throw std::runtime_error("CHOLMOD: out of memory for the right-hand side");
+    std::copy(rhs.begin(), rhs.end(), static_cast<double*>(b->x));
+    CholmodDense x(cholmod_l_solve(CHOLMOD_A, L_.get(), b.get(), c), CholmodDenseDeleter{c});
+    if (!x) throw std::runtime_error("CHOLMOD: the triangular solves failed");
+    check_residual(b.get(), x.get());
+
+    const double* xv = static_cast<const double*>(x->x);
+    for (std::size_t i = 0; i < n; ++i) u[partition.free_dofs[i]] = xv[i];
+    return u;
+  }
+
+ private:
+  // Upper triangle of K_ff in CSC. For symmetric K, column j of the upper triangle is row j of K
+  // restricted to columns <= j, so it comes straight out of K's CSR rows (already sorted).
+  CholmodSparse upper_free_matrix(const StiffnessMatrix& K, const DofPartition& partition) {
+    cholmod_common* c = common_->get();
+    const int n = partition.free_count();
+    std::vector<SuiteSparse_long> count(n + 1, 0);
+    const int threads = context_.threads;
+    parallel_for(n, threads, 4096, [&](int begin, int end, int) {
+      for (int j = begin; j < end; ++j) {
+        const int row = partition.free_dofs[j];
+        SuiteSparse_long m = 0;
+        for (int p = K.row_ptr()[row]; p < K.row_ptr()[row + 1]; ++p) {
+          const int i = partition.free_of_dof[K.col()[p]];
+          m += (i >= 0 && i <= j);
+        }
+        count[j + 1] = m;
+      }
+    });
+    for (int j = 0; j < n; ++j) count[j + 1] += count[j];
+    CholmodSparse A(cholmod_l_allocate_sparse(n, n, count[n], /*sorted=*/1, /*packed=*/1,
+                                              /*stype=*/1, CHOLMOD_REAL, c),
+                    CholmodSparseDeleter{c});
+    if (!A) throw std::runtime_error("CHOLMOD: out of memory for the stiffness matrix");
+    auto* Ap = static_cast<SuiteSparse_long*>(A->p);
+    auto* Ai = static_cast<SuiteSparse_long*>(A->i);
+    auto* Ax = static_cast<double*>(A->x);
+    std::copy(count.begin(), count.end(), Ap);
+    parallel_for(n, threads, 4096, [&](int begin, int end, int) {
+      for (int j = begin; j < end; ++j) {
+        const int row = partition.free_dofs[j];
+        SuiteSparse_long at = Ap[j];
+        for (int p = K.row_ptr()[row]; p < K.row_ptr()[row + 1]; ++p) {
+          const int i = partition.free_of_dof[K.col()[p]];
+          if (i >= 0 && i <= j) {
+            Ai[at] = i;
+            Ax[at++] = K.values()[p];
+          }
+        }
+      }
+    });
+    return A;
+  }
+
+  void analyse(const NodeGraph& graph, const DofPartition& partition) {
+    cholmod_common* c = common_->get();
+    std::vector<std::int64_t> perm = metis_free_dof_ordering(graph, partition);
+    c->nmethods = 1;
+    c->postorder = 1;
+    cholmod_factor* L = nullptr;
+    if (static_cast<int>(perm.size()) == partition.free_count()) {
+      c->method[0].ordering = CHOLMOD_GIVEN;
+      std::vector<SuiteSparse_long> given(perm.begin(), perm.end());
+      L = cholmod_l_analyze_p(A_.get(), given.data(), nullptr, 0, c);
+      description_ = "CHOLMOD supernodal Cholesky (METIS node-graph ordering)";
+    } else {
+      context_.phases.info("METIS ordering failed; CHOLMOD uses AMD instead");
+      c->method[0].ordering = CHOLMOD_AMD;
+      L = cholmod_l_analyze(A_.get(), c);
+      description_ = "CHOLMOD supernodal Cholesky (AMD ordering)";
+    }
+    if (L == nullptr) throw std::runtime_error("CHOLMOD: the symbolic analysis ran out of memory");
+    L_ = CholmodFactor(L, CholmodFactorDeleter{c});
+    // Refuse a factor that cannot fit before trying (the supernodal factor is ~8 bytes/entry).
+    const double factor_bytes = 8.0 * c->lnz;
+    const double memory = physical_memory_bytes();
+    if (memory > 0.0 && factor_bytes > 0.8 * memory)
+      throw FactorTooLarge(format(
+          "the Cholesky factor of this model needs %.1f GB, more than the %.1f GB of memory "
+          "here; use *STATIC, SOLVER=ITERATIVE",
+          factor_bytes / 1e9, memory / 1e9));
+  }
+
+  void factorise() {
+    cholmod_common* c = common_->get();
+    const auto start = std::chrono::steady_clock::now();
+    cholmod_l_factorize(A_.get(), L_.get(), c);
+    const double seconds =
+        std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+    if (c->status == CHOLMOD_NOT_POSDEF) throw singular_at(static_cast<long>(L_->minor));
+    if (c->status == CHOLMOD_OUT_OF_MEMORY)
+      throw std::runtime_error("CHOLMOD ran out of memory in the factorisation; use "
+                               "*STATIC, SOLVER=ITERATIVE");
+    if (c->status < CHOLMOD_OK)
+      throw std::runtime_error("CHOLMOD factorisation failed with status " +
+                               std::to_string(c->status));
+    const long tiny_pivot = first_tiny_pivot();
+    if (tiny_pivot >= 0) throw singular_at(tiny_pivot);
+    context_.phases.info(format("CHOLMOD: %.0f dofs, nnz(L) = %.1f M, %.1f GFLOP/s",
+                                static_cast<double>(partition_.free_count()), c->lnz / 1e6,
+                                seconds > 0.0 ? c->fl / seconds / 1e9 : 0.0));
+  }
+
+  // The message for a zero or negative pivot in column `column` of the permuted matrix.
+  InputError singular_at(long column) const {
+    const auto* perm = static_cast<const SuiteSparse_long*>(L_->Perm);
+    const long free = perm != nullptr ? static_cast<long>(perm[column]) : column;
+    const int dof = partition_.free_dofs[free];
+    return InputError(SourceLoc{context_.model.source, 0},
+                      "the stiffness matrix is singular at " +
+                          describe_dof(context_.model, context_.prepared, dof) +
+                          ": the model is a mechanism there or an element is degenerate");
+  }
+
+  // A mechanism rarely gives an exactly negative pivot: round-off leaves a tiny positive one,
+  // and the solve would return huge, meaningless displacements along the mechanism. A pivot
+  // L_kk^2 below kPivotRatio times the diagonal entry it started from means the column is
+  // (numerically) a linear combination of the earlier ones. Returns the first such permuted
+  // column, -1 if none.
+  long first_tiny_pivot() const {
+    constexpr double kPivotRatio = 1e-11;
+    const cholmod_factor* L = L_.get();
+    if (!L->is_super) return -1;
+    const auto* perm = static_cast<const SuiteSparse_long*>(L->Perm);
+    const auto* Ap = static_cast<const SuiteSparse_long*>(A_->p);
+    const auto* Ai = static_cast<const SuiteSparse_long*>(A_->i);
+    const auto* Ax = static_cast<const double*>(A_->x);
+    const auto* super = static_cast<const SuiteSparse_long*>(L->super);
+    const auto* pi = static_cast<const SuiteSparse_long*>(L->pi);
+    const auto* px = static_cast<const SuiteSparse_long*>(L->px);
+    const auto* Lx = static_cast<const double*>(L->x);
+    for (std::size_t s = 0; s < L->nsuper; ++s) {
+      const SuiteSparse_long first = super[s];
+      const SuiteSparse_long columns = super[s + 1] - first;
+      const SuiteSparse_long rows = pi[s + 1] - pi[s];
+      for (SuiteSparse_long j = 0; j < columns; ++j) {
+        const double pivot = Lx[px[s] + j * rows + j];
+        // Diagonal of A in the original column: the last entry of the sorted upper column.
+        const SuiteSparse_long column = perm[first + j];
+        const SuiteSparse_long last = Ap[column + 1] - 1;
+        const double diagonal = last >= Ap[column] && Ai[last] == column ? Ax[last] : 0.0;
+        if (!(pivot * pivot > kPivotRatio * std::abs(diagonal))) return first + j;
+      }
+    }
+    return -1;
+  }
+
+  // ||K_ff x - b|| / ||b|| must be round-off small; a larger value means the factor of a
+  // nearly singular matrix produced garbage.
+  void check_residual(cholmod_dense* b, cholmod_dense* x) {
+    cholmod_common* c = common_->get();
+    CholmodDense r(cholmod_l_copy_dense(b, c), CholmodDenseDeleter{c});
+    if (!r) throw std::runtime_error("CHOLMOD: out of memory for the residual");
+    double one[2] = {1.0, 0.0};
+    double minus_one[2] = {-1.0, 0.0};
+    cholmod_l_sdmult(A_.get(), 0, one, minus_one, x, r.get(), c);
+    const double residual = cholmod_l_norm_dense(r.get(), 2, c);
+    const double scale = cholmod_l_norm_dense(b, 2, c);
+    if (scale > 0.0 && !(residual <= 1e-6 * scale))
+      throw InputError(SourceLoc{context_.model.source, 0},
+                       format("the stiffness matrix is nearly singular: the solution leaves a "
+                              "relative residual of %.2g; the model is close to a mechanism "
+                              "or has badly distorted elements",
+                              residual / scale));
+  }
+
+  SolverContext context_;
+  std::unique_ptr<CholmodCommon> common_;  // declared first: destroyed after the objects below
+  CholmodSparse A_{nullptr, CholmodSparseDeleter{nullptr}};
+  CholmodFactor L_{nullptr, CholmodFactorDeleter{nullptr}};
+  DofPartition partition_;
+  std::vector<CouplingEntry> coupling_;
+  std::string description_ = "CHOLMOD supernodal Cholesky";
+};
+
+}  // namespace
+
+std::unique_ptr<LinearSolver> make_cholmod_solver(const SolverContext& context) {
+  return std::make_unique<CholmodSolver>(context);
+}
+
+}  // namespace styk::solver_detail

@@ -1,0 +1,44 @@
+#include "linear_solver.hpp"
+
+namespace styk::solver_detail {
+
+DofPartition partition_dofs(int active_dofs, const std::vector<int>& prescribed) {
+  DofPartition partition;
+  partition.prescribed = prescribed;
+  partition.free_of_dof.assign(active_dofs, 0);
+  for (int dof : prescribed) partition.free_of_dof[dof] = -1;
+  partition.free_dofs.reserve(active_dofs - prescribed.size());
+  for (int dof = 0; dof < active_dofs; ++dof) {
+    if (partition.free_of_dof[dof] < 0) continue;
+    partition.free_of_dof[dof] = static_cast<int>(partition.free_dofs.size());
+    partition.free_dofs.push_back(dof);
+  }
+  return partition;
+}
+
+std::vector<CouplingEntry> extract_coupling(const StiffnessMatrix& K,
+                                            const DofPartition& partition) {
+  // K is symmetric: K_fp entries are found in the rows of the prescribed dofs (few) rather than
+  // by scanning every free row.
+  std::vector<CouplingEntry> coupling;
+  const std::vector<int>& row_ptr = K.row_ptr();
+  for (int c : partition.prescribed)
+    for (int p = row_ptr[c]; p < row_ptr[c + 1]; ++p) {
+      const int r = K.col()[p];
+      const int free_row = partition.free_of_dof[r];
+      if (free_row >= 0 && K.values()[p] != 0.0) coupling.push_back({free_row, c, K.values()[p]});
+    }
+  return coupling;
+}
+
+std::vector<double> free_rhs(const std::vector<double>& f, const DofPartition& partition,
+                             const std::vector<CouplingEntry>& coupling,
+                             const std::vector<double>& prescribed_value) {
+  std::vector<double> rhs(partition.free_count());
+  for (int i = 0; i < partition.free_count(); ++i) rhs[i] = f[partition.free_dofs[i]];
+  for (const CouplingEntry& entry : coupling)
+    rhs[entry.free_row] -= entry.value * prescribed_value[entry.dof];
+  return rhs;
+}
+
+}  // namespace styk::solver_detail

@@ -1,0 +1,137 @@
+#include "mechanism_check.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+#include <string>
+
+#include <Eigen/Eigenvalues>
+
+namespace styk::solver_detail {
+namespace {
+
+using Matrix6 = Eigen::Matrix<double, 6, 6>;
+using Vector6 = Eigen::Matrix<double, 6, 1>;
+
+// Connected parts of the node graph: label per active node, and the nodes of each part.
+std::vector<std::vector<int>> connected_parts(const NodeGraph& graph) {
+  std::vector<int> part(graph.nodes(), -1);
+  std::vector<std::vector<int>> parts;
+  std::vector<int> stack;
+  for (int seed = 0; seed < graph.nodes(); ++seed) {
+    if (part[seed] >= 0) continue;
+    const int label = static_cast<int>(parts.size());
+    parts.emplace_back();
+    part[seed] = label;
+    stack.push_back(seed);
+    while (!stack.empty()) {
+      const int a = stack.back();
+      stack.pop_back();
+      parts.back().push_back(a);
+      for (std::int64_t p = graph.ptr[a]; p < graph.ptr[a + 1]; ++p) {
+        const int b = graph.adj[p];
+        if (part[b] < 0) {
+          part[b] = label;
+          stack.push_back(b);
+        }
+      }
+    }
+    std::sort(parts.back().begin(), parts.back().end());
+  }
+  return parts;
+}
+
+std::string node_list(const Model& model, const PreparedModel& prepared,
+                      const std::vector<int>& nodes) {
+  // The ten smallest ids, in order, read best.
+  std::vector<Id> ids;
+  ids.reserve(nodes.size());
+  for (int a : nodes) ids.push_back(model.node_ids[prepared.node_of_active[a]]);
+  const std::size_t shown = std::min<std::size_t>(ids.size(), 10);
+  std::partial_sort(ids.begin(), ids.begin() + shown, ids.end());
+  std::string list;
+  for (std::size_t i = 0; i < shown; ++i) {
+    if (i > 0) list += ", ";
+    list += std::to_string(ids[i]);
+  }
+  if (nodes.size() > shown) list += ", ...";
+  return list + " (" + std::to_string(nodes.size()) + (nodes.size() == 1 ? " node" : " nodes") +
+         ")";
+}
+
+// Components below 1e-9 of the largest are round-off of an eigenvector: print them as 0.
+std::string format_vector(Eigen::Vector3d v, double scale) {
+  for (int i = 0; i < 3; ++i)
+    if (std::abs(v[i]) < 1e-9 * scale) v[i] = 0.0;
+  char buffer[96];
+  std::snprintf(buffer, sizeof buffer, "(%.4g, %.4g, %.4g)", v.x(), v.y(), v.z());
+  return buffer;
+}
+
+}  // namespace
+
+void check_rigid_body_modes(const Model& model, const PreparedModel& prepared,
+                            const NodeGraph& graph, const std::vector<int>& prescribed) {
+  static const char* const kAxis[] = {"x", "y", "z"};
+  std::vector<char> is_prescribed(prepared.active_dofs(), 0);
+  for (int dof : prescribed) is_prescribed[dof] = 1;
+  const SourceLoc whole_model{model.source, 0};
+
+  for (const std::vector<int>& part : connected_parts(graph)) {
+    // Translations: some dof of the part must be prescribed in each direction.
+    for (int d = 0; d < 3; ++d) {
+      const bool held = std::any_of(part.begin(), part.end(),
+                                    [&](int a) { return is_prescribed[3 * a + d] != 0; });
+      if (!held)
+        throw InputError(whole_model, std::string("the model can move freely in ") + kAxis[d] +
+                                          ": no constraint reaches nodes " +
+                                          node_list(model, prepared, part) +
+                                          "; constrain at least one of them in " + kAxis[d]);
+    }
+
+    // Rotations: the prescribed dofs must not all be satisfied by a rigid rotation. Rows of
+    // G = sum r r^T are the six rigid-body modes (3 translations, 3 rotations about the part's
+    // centroid, lengths scaled by its size) evaluated at each prescribed dof.
+    Eigen::Vector3d lo = Eigen::Vector3d::Constant(INFINITY);
+    Eigen::Vector3d hi = -lo;
+    Eigen::Vector3d centroid = Eigen::Vector3d::Zero();
+    for (int a : part) {
+      const Vec3& x = model.coords[prepared.node_of_active[a]];
+      const Eigen::Vector3d p(x[0], x[1], x[2]);
+      lo = lo.cwiseMin(p);
+      hi = hi.cwiseMax(p);
+      centroid += p;
+    }
+    centroid /= static_cast<double>(part.size());
+    const double size = (hi - lo).maxCoeff();
+    if (!(size > 0.0)) continue;  // a single point: translations are all it has
+
+    Matrix6 G = Matrix6::Zero();
+    for (int a : part)
+      for (int d = 0; d < 3; ++d) {
+        if (!is_prescribed[3 * a + d]) continue;
+        const Vec3& x = model.coords[prepared.node_of_active[a]];
+        const Eigen::Vector3d p =
+            (Eigen::Vector3d(x[0], x[1], x[2]) - centroid) / size;
+        Vector6 r = Vector6::Zero();
+        r[d] = 1.0;
+        for (int k = 0; k < 3; ++k) r[3 + k] = Eigen::Vector3d::Unit(k).cross(p)[d];
+        G.noalias() += r * r.transpose();
+      }
+    const Eigen::SelfAdjointEigenSolver<Matrix6> eigen(G);
+    if (eigen.eigenvalues()[0] > 1e-12 * eigen.eigenvalues()[5]) continue;
+    const Vector6 mode = eigen.eigenvectors().col(0);
+    const Eigen::Vector3d omega = mode.tail<3>();
+    if (omega.norm() < 1e-6) continue;  // a translation; already excluded above
+    const Eigen::Vector3d t = mode.head<3>();
+    const Eigen::Vector3d through = omega.cross(t) / omega.squaredNorm() * size + centroid;
+    const Eigen::Vector3d axis = omega.normalized();
+    throw InputError(whole_model,
+                     "the model can rotate freely about the axis through " +
+                         format_vector(through, size) + " along " + format_vector(axis, 1.0) +
+                         ": the part with nodes " + node_list(model, prepared, part) +
+                         " is held only on one point or line; constrain a node off that axis");
+  }
+}
+
+}  // namespace styk::solver_detail
