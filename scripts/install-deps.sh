@@ -10,6 +10,7 @@ packages=(
   petsc-dev
   libhdf5-dev libcli11-dev libfmt-dev nlohmann-json3-dev
   libgtest-dev
+  libosmesa6-dev libgl-dev libglx-dev libpng-dev
 )
 if [[ "${1:-}" == "--test" ]]; then
   packages+=(calculix-ccx time python3)

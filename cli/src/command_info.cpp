@@ -1,0 +1,72 @@
+#include <iostream>
+#include <map>
+#include <vector>
+
+#include <fmt/core.h>
+
+#include "commands.hpp"
+#include "exit_codes.hpp"
+#include "registry_setup.hpp"
+#include "styk/inp/reader.hpp"
+
+namespace styk::cli {
+namespace {
+
+int count_active_nodes(const Model& model) {
+  std::vector<char> used(model.node_count(), 0);
+  for (int idx : model.connectivity) used[idx] = 1;
+  int n = 0;
+  for (char u : used) n += u;
+  return n;
+}
+
+const char* solver_name(LinearSolverKind kind) {
+  switch (kind) {
+    case LinearSolverKind::Cholmod: return "direct (CHOLMOD)";
+    case LinearSolverKind::Iterative: return "iterative (CG + AMG)";
+    case LinearSolverKind::Automatic: break;
+  }
+  return "automatic";
+}
+
+}  // namespace
+
+int info_command(const InfoArgs& args) {
+  PluginLibraries libraries;  // outlives the registry: plug-in code lives in it
+  const ElementRegistry registry = make_registry(libraries);
+  const Model model = read_inp(args.deck, registry);
+
+  std::map<std::string, int> by_type;
+  for (const Element& e : model.elements) ++by_type[e.type];
+  const int active = count_active_nodes(model);
+
+  fmt::print("model:     {}\n", model.source);
+  if (!model.heading.empty()) fmt::print("heading:   {}\n", model.heading);
+  fmt::print("nodes:     {} ({} used by elements)\n", model.node_count(), active);
+  fmt::print("elements:  {}\n", model.element_count());
+  for (const auto& [type, n] : by_type) fmt::print("  {:<8} {}\n", type, n);
+  fmt::print("dofs:      {} (3 per used node, before constraints)\n", 3LL * active);
+  fmt::print("node sets: {}\n", model.nsets.size());
+  for (const auto& [name, set] : model.nsets) fmt::print("  {:<24} {} nodes\n", name, set.nodes.size());
+  fmt::print("element sets: {}\n", model.elsets.size());
+  for (const auto& [name, set] : model.elsets)
+    fmt::print("  {:<24} {} elements\n", name, set.elements.size());
+  fmt::print("materials: {}\n", model.materials.size());
+  for (const Material& m : model.materials)
+    fmt::print("  {:<24} E = {}, nu = {}{}\n", m.name, m.young.value_or(0.0), m.poisson.value_or(0.0),
+               m.expansion ? fmt::format(", alpha = {}", *m.expansion) : std::string());
+  fmt::print("sections:  {}\n", model.sections.size());
+  for (const Section& s : model.sections)
+    fmt::print("  elset {:<18} material {}\n", s.elset, s.material);
+  fmt::print("boundary conditions outside steps: {}\n", model.boundaries.size());
+  fmt::print("steps:     {}\n", model.steps.size());
+  for (std::size_t k = 0; k < model.steps.size(); ++k) {
+    const Step& s = model.steps[k];
+    fmt::print("  step {} {}: static, time {}, solver {}; {} boundary, {} cload, {} dload, {} output requests\n",
+               k + 1, s.name, s.procedure.total_time, solver_name(s.procedure.solver),
+               s.boundaries.size(), s.cloads.size(), s.dloads.size(), s.outputs.size());
+  }
+  return kOk;
+}
+
+}  // namespace styk::cli

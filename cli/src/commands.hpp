@@ -1,0 +1,33 @@
+// The sub-commands of `styk`. Each takes plain options (parsed in main.cpp) and returns an exit
+// code; errors travel as exceptions to run_reporting_errors().
+#pragma once
+
+#include <string>
+
+namespace styk::cli {
+
+struct SolveArgs {
+  std::string deck;
+  std::string output_dir = ".";
+  std::string solver = "auto";  // auto | cholmod | iterative
+  int threads = 0;
+  bool quiet = false;
+};
+int solve_command(const SolveArgs& args);
+
+struct InfoArgs {
+  std::string deck;
+};
+int info_command(const InfoArgs& args);
+
+struct ExportArgs {
+  std::string input;            // .styk.h5 results file or .inp deck (mesh only)
+  std::string output;           // .vtu path; default: input stem + .vtu
+  int step = 0;                 // 0 = last
+  int increment = 0;            // 0 = last of the step
+};
+int export_command(const ExportArgs& args);
+
+int elements_command();
+
+}  // namespace styk::cli

@@ -1,0 +1,18 @@
+// Exit codes of the `styk` program (DESIGN.md "Files and interfaces").
+#pragma once
+
+#include <functional>
+
+namespace styk::cli {
+
+enum ExitCode : int {
+  kOk = 0,
+  kBadInput = 1,       // InputError: "file:line: message"
+  kNotConverged = 2,   // NotConvergedError
+  kInternalError = 3,  // anything else: a bug in Styk
+};
+
+// Runs a command, turning the exception types of Styk into exit codes and one message on stderr.
+int run_reporting_errors(const std::function<int()>& command);
+
+}  // namespace styk::cli

@@ -1,0 +1,22 @@
+# The `styk` command-line program. CLI11 is confined to main.cpp (it is slow to compile).
+add_executable(styk
+  src/main.cpp
+  src/exit_codes.cpp
+  src/stderr_progress.cpp
+  src/command_solve.cpp
+  src/command_info.cpp
+  src/command_export.cpp
+  src/command_elements.cpp
+  src/atomic_file.cpp
+  src/registry_setup.cpp
+  src/output_paths.cpp
+)
+target_include_directories(styk PRIVATE src)
+target_link_libraries(styk PRIVATE styk_solver styk_inp styk_io styk_elements CLI11::CLI11 fmt::fmt
+  styk_warnings)
+install(TARGETS styk RUNTIME DESTINATION bin)
+# Element plug-ins: where make_registry() looks by default; build them with the program.
+target_compile_definitions(styk PRIVATE
+  STYK_PLUGIN_BUILD_DIR="${STYK_PLUGIN_BUILD_DIR}"
+  STYK_PLUGIN_INSTALL_DIR="${STYK_PLUGIN_INSTALL_DIR}")
+add_dependencies(styk styk_plugins)
