@@ -63,6 +63,9 @@ struct Section {
   std::string material;       // upper-case
   int material_index = -1;
   std::optional<double> thickness;  // for plane and truss elements (first data line)
+  // Styk-only: integrate the volumetric part of the strain selectively (B-bar, mean dilatation)
+  // against volumetric locking in near-incompressible materials.
+  bool selective_volumetric = false;
   SourceLoc where;
 };
 
