@@ -10,9 +10,10 @@ add_executable(styk
   src/atomic_file.cpp
   src/registry_setup.cpp
   src/output_paths.cpp
+  src/command_mesh.cpp
 )
 target_include_directories(styk PRIVATE src)
-target_link_libraries(styk PRIVATE styk_solver styk_inp styk_io styk_elements CLI11::CLI11 fmt::fmt
+target_link_libraries(styk PRIVATE styk_solver styk_inp styk_io styk_elements styk_mesher CLI11::CLI11 fmt::fmt
   styk_warnings)
 install(TARGETS styk RUNTIME DESTINATION bin)
 # Element plug-ins: where make_registry() looks by default; build them with the program.

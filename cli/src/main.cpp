@@ -6,6 +6,7 @@
 
 #include "commands.hpp"
 #include "exit_codes.hpp"
+#include "mesh_args.hpp"
 
 int main(int argc, char** argv) {
   using namespace styk::cli;
@@ -39,6 +40,14 @@ int main(int argc, char** argv) {
   export_cmd->add_option("--inc", exp.increment, "Increment within the step (default: last)")
       ->check(CLI::NonNegativeNumber);
 
+  MeshArgs mesh;
+  CLI::App* mesh_cmd = app.add_subcommand(
+      "mesh", "Build a SPEC.md model with a parametric builder and write its deck");
+  mesh_cmd->add_option("builder", mesh.builder, "Builder name (see --list)");
+  mesh_cmd->add_option("-o,--output", mesh.output, "Deck to write (.inp)");
+  mesh_cmd->add_flag("--list", mesh.list, "List the builders, their SPEC sections and parameters");
+  mesh_cmd->allow_extras();  // builder parameters: --name value (checked by the builder)
+
   app.add_subcommand("elements", "List the element types available, with rules and source");
 
   try {
@@ -54,6 +63,10 @@ int main(int argc, char** argv) {
     if (*solve_cmd) return solve_command(solve);
     if (*info_cmd) return info_command(info);
     if (*export_cmd) return export_command(exp);
+    if (*mesh_cmd) {
+      mesh.params = mesh_cmd->remaining();
+      return mesh_command(mesh);
+    }
     return elements_command();
   });
 }

@@ -45,14 +45,17 @@ double map_jacobian(const BlockMap& map, const Vec3& xi) {
 
 Block::Block(int step, std::array<int, 3> divisions, std::vector<int> node_index,
              std::vector<int> elements)
-    : step_(step), divisions_(divisions), node_index_(std::move(node_index)),
+    : step_(step),
+      divisions_(divisions),
+      node_index_(std::move(node_index)),
       elements_(std::move(elements)) {
   for (int a = 0; a < 3; ++a) grid_[a] = step_ * divisions_[a] + 1;
 }
 
 int Block::node_at(int i, int j, int k) const {
   if (i < 0 || j < 0 || k < 0 || i >= grid_[0] || j >= grid_[1] || k >= grid_[2]) return -1;
-  return node_index_[i + static_cast<std::size_t>(grid_[0]) * (j + static_cast<std::size_t>(grid_[1]) * k)];
+  return node_index_[i + static_cast<std::size_t>(grid_[0]) *
+                             (j + static_cast<std::size_t>(grid_[1]) * k)];
 }
 
 int Block::element_at(int ex, int ey, int ez) const {
@@ -89,9 +92,12 @@ std::vector<FaceRef> Block::side_faces(int axis, int value) const {
 
 Block mesh_block(Mesh& mesh, const BlockMap& map, const BlockSpec& spec) {
   int step = 0;
-  if (spec.type == "C3D8") step = 1;
-  else if (spec.type == "C3D20") step = 2;
-  else throw std::invalid_argument("mesh_block: element type must be C3D8 or C3D20, not " + spec.type);
+  if (spec.type == "C3D8")
+    step = 1;
+  else if (spec.type == "C3D20")
+    step = 2;
+  else
+    throw std::invalid_argument("mesh_block: element type must be C3D8 or C3D20, not " + spec.type);
   for (int a = 0; a < 3; ++a)
     if (spec.divisions[a] < 1) throw std::invalid_argument("mesh_block: divisions must be >= 1");
 
@@ -114,7 +120,8 @@ Block mesh_block(Mesh& mesh, const BlockMap& map, const BlockSpec& spec) {
     for (int j = 0; j < grid[1]; ++j)
       for (int i = 0; i < grid[0]; ++i) {
         if (step == 2 && (i % 2) + (j % 2) + (k % 2) > 1) continue;  // no C3D20 node there
-        node_index[i + static_cast<std::size_t>(grid[0]) * (j + static_cast<std::size_t>(grid[1]) * k)] =
+        node_index[i + static_cast<std::size_t>(grid[0]) *
+                           (j + static_cast<std::size_t>(grid[1]) * k)] =
             mesh.add_node(map({xi[0][i], xi[1][j], xi[2][k]}));
       }
 
@@ -123,7 +130,8 @@ Block mesh_block(Mesh& mesh, const BlockMap& map, const BlockSpec& spec) {
   elements.reserve(static_cast<std::size_t>(d[0]) * d[1] * d[2]);
   mesh.elements.reserve(mesh.elements.size() + static_cast<std::size_t>(d[0]) * d[1] * d[2]);
   auto node_at = [&](int i, int j, int k) {
-    return node_index[i + static_cast<std::size_t>(grid[0]) * (j + static_cast<std::size_t>(grid[1]) * k)];
+    return node_index[i + static_cast<std::size_t>(grid[0]) *
+                              (j + static_cast<std::size_t>(grid[1]) * k)];
   };
   const int half = step == 1 ? 2 : 1;
   for (int ez = 0; ez < d[2]; ++ez)
@@ -133,11 +141,10 @@ Block mesh_block(Mesh& mesh, const BlockMap& map, const BlockSpec& spec) {
         const int i0 = ex * step, j0 = ey * step, k0 = ez * step;
         for (int c = 0; c < 8; ++c)
           conn[c] = node_at(i0 + kCorners[c][0] / half, j0 + kCorners[c][1] / half,
-                                  k0 + kCorners[c][2] / half);
+                            k0 + kCorners[c][2] / half);
         if (step == 2)
           for (int m = 0; m < 12; ++m)
-            conn[8 + m] = node_at(i0 + kMidEdges[m][0], j0 + kMidEdges[m][1],
-                                        k0 + kMidEdges[m][2]);
+            conn[8 + m] = node_at(i0 + kMidEdges[m][0], j0 + kMidEdges[m][1], k0 + kMidEdges[m][2]);
         elements.push_back(mesh.add_element(spec.type, std::move(conn)));
       }
   if (!spec.elset.empty()) mesh.add_to_element_set(spec.elset, elements);

@@ -99,8 +99,8 @@ BlockMap hex_map(const std::vector<Vec3>& control) {
       // Lagrange 27: each control point's natural coordinates give its 1D factors.
       static const std::vector<Vec3> nat = [] {
         std::vector<Vec3> p = natural_nodes("C3D20");
-        p.insert(p.end(), {{0, 0, -1}, {0, 0, 1}, {0, -1, 0}, {1, 0, 0}, {0, 1, 0}, {-1, 0, 0},
-                           {0, 0, 0}});
+        p.insert(p.end(),
+                 {{0, 0, -1}, {0, 0, 1}, {0, -1, 0}, {1, 0, 0}, {0, 1, 0}, {-1, 0, 0}, {0, 0, 0}});
         return p;
       }();
       double L[3][3];

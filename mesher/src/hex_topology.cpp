@@ -25,14 +25,14 @@ std::map<std::string, std::vector<Vec3>> make_layouts() {
   layouts["C3D20"] = concat(kCorners, kMidEdges);
   layouts["C3D20R"] = layouts["C3D20"];
   // elements-ref section 1: face centres 9 S1, 10 S2, 11 S3, 12 S5, 13 S6, 14 S4.
-  layouts["C3D14"] = concat(kCorners, {{0, 0, -1}, {0, 0, 1}, {0, -1, 0}, {0, 1, 0}, {-1, 0, 0},
-                                       {1, 0, 0}});
+  layouts["C3D14"] =
+      concat(kCorners, {{0, 0, -1}, {0, 0, 1}, {0, -1, 0}, {0, 1, 0}, {-1, 0, 0}, {1, 0, 0}});
   layouts["C3D21"] = concat(layouts["C3D20"], {{0, 0, -1}});
-  layouts["C3D28"] = concat(
-      kCorners, {{-1, -1, 0}, {1, -1, 0}, {1, 1, 0},  {-1, 1, 0},  {0, -1, 1}, {1, 0, 1},
-                 {0, 1, 1},   {-1, 0, 1}, {-a, -1, -1}, {a, -1, -1}, {1, -a, -1}, {1, a, -1},
-                 {a, 1, -1},  {-a, 1, -1}, {-1, a, -1}, {-1, -a, -1}, {-a, -a, -1}, {a, -a, -1},
-                 {a, a, -1},  {-a, a, -1}});
+  layouts["C3D28"] =
+      concat(kCorners, {{-1, -1, 0},  {1, -1, 0},   {1, 1, 0},   {-1, 1, 0},   {0, -1, 1},
+                        {1, 0, 1},    {0, 1, 1},    {-1, 0, 1},  {-a, -1, -1}, {a, -1, -1},
+                        {1, -a, -1},  {1, a, -1},   {a, 1, -1},  {-a, 1, -1},  {-1, a, -1},
+                        {-1, -a, -1}, {-a, -a, -1}, {a, -a, -1}, {a, a, -1},   {-a, a, -1}});
   return layouts;
 }
 
@@ -142,7 +142,8 @@ std::vector<int> rotated_numbering(const std::string& type, const CubeRotation& 
     const Vec3 old = rotate(R, nat[k]);
     for (std::size_t i = 0; i < nat.size(); ++i)
       if (std::abs(nat[i][0] - old[0]) + std::abs(nat[i][1] - old[1]) +
-              std::abs(nat[i][2] - old[2]) < 1e-9)
+              std::abs(nat[i][2] - old[2]) <
+          1e-9)
         perm[k] = static_cast<int>(i);
     if (perm[k] < 0)
       throw std::invalid_argument("mesher: " + type + " cannot be re-oriented that way");

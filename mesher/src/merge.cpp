@@ -29,7 +29,7 @@ int merge_coincident_nodes(Mesh& mesh, double relative_tolerance) {
 
   std::unordered_map<std::uint64_t, int> head;  // cell -> last representative placed there
   head.reserve(n);
-  std::vector<int> next(n, -1);                 // chain of representatives in the same cell
+  std::vector<int> next(n, -1);  // chain of representatives in the same cell
   std::vector<int> old_to_new(n, -1);
   std::vector<int> representative_new(n, -1);
   int count = 0;

@@ -96,8 +96,16 @@ Model to_model(const Mesh& mesh, const std::string& source) {
   const SourceLoc here{source, 0};
   model.node_ids.reserve(mesh.nodes.size());
   model.coords.reserve(mesh.nodes.size());
-  for (std::size_t n = 0; n < mesh.nodes.size(); ++n)
-    model.add_node(static_cast<Id>(n + 1), mesh.nodes[n], here);
+  // Round-off residue of trigonometric maps (cos 90 deg = 6e-17) becomes an exact zero: it is
+  // noise, and CalculiX reads coordinates in 20-character fields, too narrow for 1.2246e-16 at
+  // full precision.
+  const double tiny = 1e-13 * mesh.size();
+  for (std::size_t n = 0; n < mesh.nodes.size(); ++n) {
+    Vec3 x = mesh.nodes[n];
+    for (double& c : x)
+      if (std::abs(c) < tiny) c = 0.0;
+    model.add_node(static_cast<Id>(n + 1), x, here);
+  }
   model.elements.reserve(mesh.elements.size());
   for (std::size_t e = 0; e < mesh.elements.size(); ++e)
     model.add_element(static_cast<Id>(e + 1), mesh.elements[e].type, mesh.elements[e].nodes, here);

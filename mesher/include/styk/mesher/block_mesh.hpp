@@ -13,10 +13,10 @@
 namespace styk::mesher {
 
 struct BlockSpec {
-  std::string type = "C3D20";                  // C3D8 or C3D20
-  std::array<int, 3> divisions{1, 1, 1};       // elements along xi, eta, zeta
+  std::string type = "C3D20";                    // C3D8 or C3D20
+  std::array<int, 3> divisions{1, 1, 1};         // elements along xi, eta, zeta
   std::array<double, 3> grading{1.0, 1.0, 1.0};  // last / first element length per direction
-  std::string elset;                           // element set receiving the block ("" = none)
+  std::string elset;                             // element set receiving the block ("" = none)
 };
 
 class Block {

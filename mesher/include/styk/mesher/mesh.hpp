@@ -73,7 +73,8 @@ struct Mesh {
 };
 
 // A Model holding the mesh: node ids 1..n, element ids 1..m in mesh order, every node set and
-// element set (surfaces and interfaces are not Model data yet). Materials, sections, boundary
+// element set (surfaces and interfaces are not Model data yet); coordinates below 1e-13 x the
+// model size are written as 0. Materials, sections, boundary
 // conditions and steps are the caller's.
 Model to_model(const Mesh& mesh, const std::string& source = "styk mesher");
 

@@ -1,0 +1,194 @@
+// `styk render`: draws a results file (or a deck's mesh) headless through OSMesa into PNG.
+#include <spawn.h>
+#include <sys/wait.h>
+#include <unistd.h>
+
+#include <cerrno>
+#include <cstdio>
+#include <cstdlib>
+#include <filesystem>
+#include <iostream>
+#include <sstream>
+#include <string>
+#include <vector>
+
+#include <fmt/core.h>
+
+#include "registry_setup.hpp"
+#include "render_args.hpp"
+#include "styk/core/diagnostics.hpp"
+#include "styk/inp/reader.hpp"
+#include "styk/io/results_file.hpp"
+#include "styk/render/image.hpp"
+#include "styk/render/osmesa_renderer.hpp"
+#include "styk/render/render_job.hpp"
+
+extern char** environ;
+
+namespace styk::cli {
+namespace {
+
+bool ends_with(const std::string& s, const std::string& suffix) {
+  return s.size() >= suffix.size() &&
+         s.compare(s.size() - suffix.size(), suffix.size(), suffix) == 0;
+}
+
+std::string strip_extension(const std::string& path) {
+  for (const char* ext : {".styk.h5", ".inp", ".INP", ".png", ".gif", ".mp4"})
+    if (ends_with(path, ext)) return path.substr(0, path.size() - std::string(ext).size());
+  return path;
+}
+
+std::vector<std::string> split_list(const std::string& text) {
+  std::vector<std::string> items;
+  std::stringstream stream(text);
+  for (std::string item; std::getline(stream, item, ',');)
+    if (!item.empty()) items.push_back(item);
+  return items;
+}
+
+void parse_size(const std::string& text, int& width, int& height) {
+  char x = 0;
+  char rest = 0;
+  if (std::sscanf(text.c_str(), "%d%c%d%c", &width, &x, &height, &rest) != 3 ||
+      (x != 'x' && x != 'X'))
+    throw InputError({}, "bad picture size '" + text + "'; write WIDTHxHEIGHT, e.g. 1600x1200");
+}
+
+const IncrementResult& pick_increment(const Results& results, int step, int increment,
+                                      const std::string& path) {
+  if (results.increments.empty())
+    throw InputError({path, 0}, "the results file holds no increments");
+  const int want_step = step > 0 ? step : results.increments.back().step;
+  const IncrementResult* found = nullptr;
+  std::string available;
+  for (const IncrementResult& inc : results.increments) {
+    available += fmt::format(" {}/{}", inc.step, inc.increment);
+    if (inc.step == want_step && (increment == 0 || inc.increment == increment)) found = &inc;
+  }
+  if (!found)
+    throw InputError(
+        {path, 0},
+        fmt::format("no step {} increment {} in the results; "
+                    "step/increment available:{}",
+                    want_step, increment == 0 ? std::string("(last)") : std::to_string(increment),
+                    available));
+  return *found;
+}
+
+render::RenderOptions make_options(const RenderArgs& args, bool has_results) {
+  render::RenderOptions o;
+  parse_size(args.size, o.width, o.height);
+  o.mode = render::parse_display_mode(args.mode);
+  o.field = args.field;
+  o.averaging = render::parse_averaging(args.averaging);
+  o.bands = args.bands;
+  o.smooth = args.smooth;
+  o.deform =
+      render::parse_deform(args.deform.empty() ? (has_results ? "auto" : "none") : args.deform);
+  o.undeformed_outline = !args.no_outline;
+  o.view.name = args.view;
+  o.view.azimuth = args.azimuth;
+  o.view.elevation = args.elevation;
+  o.view.zoom = args.zoom;
+  o.view.perspective = args.perspective;
+  o.layers = split_list(args.layers);
+  o.hidden_layers = split_list(args.hide_layers);
+  o.filter = render::parse_element_filter(args.elements, args.types);
+  return o;
+}
+
+// Runs a program found on PATH with arguments (no shell); returns its exit status, -1 if absent.
+int run_program(const std::vector<std::string>& argv) {
+  std::vector<char*> raw;
+  for (const std::string& a : argv) raw.push_back(const_cast<char*>(a.c_str()));
+  raw.push_back(nullptr);
+  pid_t pid = 0;
+  if (posix_spawnp(&pid, raw[0], nullptr, nullptr, raw.data(), environ) != 0) return -1;
+  int status = 0;
+  while (waitpid(pid, &status, 0) < 0 && errno == EINTR) {
+  }
+  return WIFEXITED(status) ? WEXITSTATUS(status) : -1;
+}
+
+bool on_path(const std::string& program) {
+  const char* path = std::getenv("PATH");
+  std::stringstream dirs(path ? path : "");
+  for (std::string dir; std::getline(dirs, dir, ':');)
+    if (!dir.empty() && ::access((dir + "/" + program).c_str(), X_OK) == 0) return true;
+  return false;
+}
+
+int render_job(const RenderArgs& args, const render::RenderJob& job, const std::string& output) {
+  const render::RenderOptions& o = job.options();
+  render::OsmesaRenderer renderer(o.width, o.height);
+  if (args.animate <= 0) {
+    render::write_png(output, renderer.render(job.frame(1.0)));
+    std::cout << "wrote " << output << "\n";
+    return 0;
+  }
+  const bool video = ends_with(output, ".gif") || ends_with(output, ".mp4");
+  if (video && !on_path("ffmpeg"))
+    throw InputError({}, "--animate to " + output +
+                             " needs ffmpeg, which is not on PATH; "
+                             "write a PNG sequence with -o NAME.png instead");
+  const std::string stem = strip_extension(output);
+  std::vector<std::string> frames;
+  for (int i = 0; i < args.animate; ++i) {
+    const double fraction = args.animate == 1 ? 1.0 : double(i) / (args.animate - 1);
+    frames.push_back(fmt::format("{}_{:04d}.png", stem, i));
+    render::write_png(frames.back(), renderer.render(job.frame(fraction)));
+  }
+  if (!video) {
+    std::cout << "wrote " << frames.size() << " frames " << stem << "_0000.png .. " << frames.back()
+              << "\n";
+    return 0;
+  }
+  std::vector<std::string> command = {"ffmpeg",     "-y", "-loglevel", "error",
+                                      "-framerate", "10", "-i",        stem + "_%04d.png"};
+  if (ends_with(output, ".mp4"))
+    command.insert(command.end(),
+                   {"-pix_fmt", "yuv420p", "-vf", "scale=trunc(iw/2)*2:trunc(ih/2)*2"});
+  command.push_back(output);
+  if (run_program(command) != 0) throw std::runtime_error("ffmpeg failed to write " + output);
+  for (const std::string& frame : frames) std::filesystem::remove(frame);
+  std::cout << "wrote " << output << " (" << frames.size() << " frames)\n";
+  return 0;
+}
+
+}  // namespace
+
+int render_command(const RenderArgs& args) {
+  if (args.animate < 0) throw InputError({}, "--animate needs a number of frames >= 1");
+  const std::string output =
+      args.output.empty() ? strip_extension(args.input) + ".png" : args.output;
+  PluginLibraries libraries;  // outlives the registry: plug-in code lives in it
+  const ElementRegistry registry = make_registry(libraries);
+  const bool results_file = ends_with(args.input, ".styk.h5");
+  ResultsFileContents contents;
+  const IncrementResult* increment = nullptr;
+  if (results_file) {
+    try {
+      contents = read_results_file(args.input);
+    } catch (const std::runtime_error& e) {
+      throw InputError({args.input, 0}, e.what());
+    }
+    increment = &pick_increment(contents.results, args.step, args.increment, args.input);
+  } else {
+    if (args.step > 0 || args.increment > 0)
+      throw InputError({args.input, 0},
+                       "--step/--inc need a results file (.styk.h5); a deck "
+                       "holds only the mesh");
+    contents.model = read_inp(args.input, registry);
+  }
+  try {
+    const render::RenderJob job(contents.model, registry, increment,
+                                make_options(args, results_file));
+    return render_job(args, job, output);
+  } catch (const InputError& e) {
+    if (!e.where().file.empty()) throw;
+    throw InputError({args.input, 0}, e.message());  // name the input the option applies to
+  }
+}
+
+}  // namespace styk::cli

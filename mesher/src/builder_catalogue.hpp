@@ -1,0 +1,15 @@
+// Registration of the builders by group (private to the mesher).
+#pragma once
+
+#include <vector>
+
+#include "styk/mesher/builders.hpp"
+
+namespace styk::mesher::detail {
+
+// SPEC §2.1, §3.1.1-§3.1.4: beams.
+void add_beam_builders(std::vector<BuilderInfo>& all);
+// SPEC §2.4, §3.1.5-§3.1.8, §6.2: single element, plate, shells, cylinders, patch test.
+void add_solid_builders(std::vector<BuilderInfo>& all);
+
+}  // namespace styk::mesher::detail

@@ -1,0 +1,54 @@
+// Shared pieces of the SPEC builders (private to the mesher).
+#pragma once
+
+#include <functional>
+#include <string>
+#include <vector>
+
+#include "styk/core/element_registry.hpp"
+#include "styk/core/model.hpp"
+#include "styk/mesher/builders.hpp"
+#include "styk/mesher/geometry_maps.hpp"
+#include "styk/mesher/mesh.hpp"
+
+namespace styk::mesher::detail {
+
+constexpr double kPi = 3.14159265358979323846;
+
+// The element family parameter shared by every builder.
+ParamDecl family_param(const std::string& default_family, const std::vector<std::string>& allowed);
+// Reads and checks it.
+std::string family(const BuilderParams& params, const std::vector<std::string>& allowed);
+// What to mesh blocks with: C3D8 for C3D8/C3D14, C3D20 otherwise.
+std::string base_type(const std::string& family);
+// Converts a base mesh to the family: C3D14 everywhere; C3D21/C3D28 on the layer of
+// `contact_surface` (its faces become S1).
+void apply_family(Mesh& mesh, const std::string& family, const std::string& contact_surface);
+
+// An axis-aligned box as a block map.
+BlockMap box_map(const Vec3& origin, const Vec3& size);
+
+std::vector<int> nodes_where(const Mesh& mesh, const std::function<bool(const Vec3&)>& inside);
+
+// Model of the mesh with material MAT (E, nu) on element set EALL.
+Model finish_model(const Mesh& mesh, const std::string& heading, double young, double poisson);
+
+// Consistent nodal forces of a uniform traction with resultant `total` on the faces (A_i of every
+// face node from TElement::nodal_areas, summed per node).
+std::vector<ConcentratedLoad> traction_loads(const Model& model, const ElementRegistry& registry,
+                                             const std::vector<FaceRef>& faces, const Vec3& total);
+
+// A point force at `target`: on the node there, or shared between the two candidate nodes
+// nearest to it in inverse proportion to their distances (a point between two nodes of an
+// element edge). Returns the loads and the loaded nodes.
+std::vector<ConcentratedLoad> point_force(const Mesh& mesh, const std::vector<int>& candidates,
+                                          const Vec3& target, const Vec3& force,
+                                          std::vector<int>* loaded = nullptr);
+
+void fix(Model& model, const std::vector<int>& nodes, std::initializer_list<int> dofs);
+void add_node_set(Model& model, const std::string& name, const std::vector<int>& nodes);
+Step static_step();
+OutputRequest print_request(OutputRequest::Kind kind, const std::string& set,
+                            std::vector<std::string> vars, bool totals = false);
+
+}  // namespace styk::mesher::detail

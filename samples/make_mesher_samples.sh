@@ -1,0 +1,23 @@
+#!/bin/sh
+# Regenerates the builder decks of samples/ (docs/mesher.md): `styk mesh NAME --param value -o DECK`.
+# Usage: samples/make_mesher_samples.sh [path/to/styk]   (default: build/cli/styk)
+set -e
+STYK=${1:-build/cli/styk}
+cd "$(dirname "$0")"
+case "$STYK" in /*) ;; *) STYK="../$STYK" ;; esac
+m() { out=$1; shift; "$STYK" mesh "$@" -o "$out"; }
+for mesh in 6x1 12x2 12x4 24x8; do
+  m spec-2.1-cantilever-c3d8-$mesh.inp cantilever --element C3D8 --mesh $mesh
+done
+for e in c3d14 c3d21 c3d28; do m spec-2.4-single-$e.inp single-element --element $e; done
+m spec-3.1.1-straight-beam-c3d21-tension.inp straight-beam --element C3D21 --load tension
+m spec-3.1.1-straight-beam-c3d28-bending.inp straight-beam --element C3D28 --load bending
+m spec-3.1.2-beam-distorted-c3d21-bending.inp beam-10x2x2 --element C3D21 --mesh distorted --load bending
+m spec-3.1.3-curved-beam-c3d21.inp curved-beam --element C3D21
+m spec-3.1.4-twisted-c3d21.inp twisted-beam --element C3D21
+m spec-3.1.4-twisted-c3d28.inp twisted-beam --element C3D28
+m spec-3.1.5-thick-plate-c3d21-6x6.inp thick-plate --element C3D21 --n 6
+m spec-3.1.6-hemisphere-c3d21.inp hemisphere --element C3D21
+m spec-3.1.7-thick-cylinder-c3d21.inp thick-cylinder --element C3D21 --poisson 0.49
+m spec-3.1.8-patch-c3d28.inp patch-test --element C3D28
+m spec-6.2-cylinder-wall-c3d28.inp cylinder-wall --element C3D28

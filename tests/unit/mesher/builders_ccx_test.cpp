@@ -1,0 +1,49 @@
+// Decks of the builders that use only standard elements (C3D8, C3D20) load and run in CalculiX:
+// `ccx -i job` in a scratch directory must exit 0 without an *ERROR line.
+#include <cstdlib>
+#include <filesystem>
+#include <fstream>
+#include <sstream>
+#include <string>
+
+#include <gtest/gtest.h>
+
+#include "mesher_checks.hpp"
+#include "styk/inp/writer.hpp"
+#include "styk/mesher/builders.hpp"
+
+namespace styk {
+namespace {
+
+bool have_ccx() { return std::system("command -v ccx > /dev/null 2>&1") == 0; }
+
+TEST(BuildersInCalculix, StandardElementDecksRun) {
+  ASSERT_TRUE(have_ccx()) << "ccx (CalculiX) not found: run scripts/install-deps.sh --test";
+  const test::Elements elements;
+  const auto scratch = std::filesystem::path(::testing::TempDir()) / "styk_mesher_ccx";
+  std::filesystem::create_directories(scratch);
+  for (const mesher::BuilderInfo& b : mesher::builder_catalogue()) {
+    for (const char* fam : {"C3D8", "C3D20"}) {
+      SCOPED_TRACE(b.name + " " + fam);
+      const mesher::BuildResult r =
+          mesher::run_builder(b.name, {{"element", fam}}, elements.registry);
+      const std::string job = b.name + "-" + fam;
+      {
+        std::ofstream out(scratch / (job + ".inp"));
+        write_inp(r.model, out);
+      }
+      const std::string command =
+          "cd '" + scratch.string() + "' && ccx -i '" + job + "' > '" + job + ".log' 2>&1";
+      EXPECT_EQ(std::system(command.c_str()), 0);
+      std::ifstream log(scratch / (job + ".log"));
+      std::stringstream text;
+      text << log.rdbuf();
+      EXPECT_EQ(text.str().find("*ERROR"), std::string::npos) << text.str().substr(0, 2000);
+      EXPECT_NE(text.str().find("Job finished"), std::string::npos) << text.str().substr(0, 2000);
+    }
+  }
+  std::filesystem::remove_all(scratch);
+}
+
+}  // namespace
+}  // namespace styk

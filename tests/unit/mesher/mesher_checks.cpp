@@ -1,0 +1,88 @@
+#include "mesher_checks.hpp"
+
+#include <algorithm>
+#include <array>
+#include <map>
+#include <stdexcept>
+#include <vector>
+
+#include "styk/elements/builtin.hpp"
+
+namespace styk::test {
+
+Elements::Elements() {
+  register_builtin_elements(registry);
+  const auto problems = load_plugins(registry, libraries, {STYK_PLUGIN_BUILD_DIR});
+  for (const char* name : {"C3D14", "C3D21", "C3D28"})
+    if (!registry.find(name))
+      throw std::runtime_error(std::string("plug-in element ") + name + " not found in " +
+                               STYK_PLUGIN_BUILD_DIR +
+                               (problems.empty() ? "" : ": " + problems[0].message));
+}
+
+double volume(const Model& model, const ElementRegistry& registry) {
+  double v = 0.0;
+  for (int e = 0; e < model.element_count(); ++e) {
+    const TElement& t = *registry.find(model.elements[e].type);
+    const int n = t.node_count();
+    ElementGeometry g;
+    g.X.resize(n, 3);
+    g.id = model.elements[e].id;
+    for (int i = 0; i < n; ++i)
+      for (int d = 0; d < 3; ++d) g.X(i, d) = model.coords[model.element_nodes(e)[i]][d];
+    Eigen::VectorXd N(n);
+    Eigen::MatrixXd dN(n, 3), dNdx(n, 3);
+    const IntegrationRule rule = t.rule(RuleKind::Full);
+    for (int p = 0; p < rule.size(); ++p) {
+      t.der(rule.points[p], N, dN);
+      v += t.jacobian(g, dN, dNdx, p + 1) * rule.weights[p];
+    }
+  }
+  return v;
+}
+
+std::string conformity_problem(const Model& model, const ElementRegistry& registry) {
+  struct Use {
+    int element;
+    std::vector<int> nodes;
+  };
+  std::map<std::array<int, 4>, std::vector<Use>> faces;
+  for (int e = 0; e < model.element_count(); ++e) {
+    const TElement& t = *registry.find(model.elements[e].type);
+    for (const FaceDef& f : t.faces()) {
+      std::vector<int> nodes;
+      for (int local : f.nodes) nodes.push_back(model.element_nodes(e)[local]);
+      std::array<int, 4> corners{nodes[0], nodes[1], nodes[2], nodes[3]};
+      std::sort(corners.begin(), corners.end());
+      std::sort(nodes.begin(), nodes.end());
+      faces[corners].push_back({e, nodes});
+    }
+  }
+  for (const auto& [corners, uses] : faces) {
+    const std::string name = "elements " + std::to_string(model.elements[uses[0].element].id);
+    if (uses.size() > 2)
+      return name + ": a face shared by " + std::to_string(uses.size()) + " elements";
+    if (uses.size() == 2 && uses[0].nodes != uses[1].nodes)
+      return name + " and " + std::to_string(model.elements[uses[1].element].id) +
+             ": shared face with different node sets (" + model.elements[uses[0].element].type +
+             " / " + model.elements[uses[1].element].type + ")";
+  }
+  return {};
+}
+
+int free_nodes(const Model& model) {
+  std::vector<char> used(model.node_count(), 0);
+  for (int n : model.connectivity) used[n] = 1;
+  return static_cast<int>(std::count(used.begin(), used.end(), 0));
+}
+
+std::string type_counts(const Model& model) {
+  std::map<std::string, int> counts;
+  for (const Element& e : model.elements) ++counts[e.type];
+  std::string out;
+  for (const auto& [type, n] : counts)
+    out += (out.empty() ? "" : " ") + type + ":" + std::to_string(n);
+  return out;
+}
+
+}  // namespace styk::test
