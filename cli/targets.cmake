@@ -15,6 +15,12 @@ add_executable(styk
 target_include_directories(styk PRIVATE src)
 target_link_libraries(styk PRIVATE styk_solver styk_inp styk_io styk_elements styk_mesher CLI11::CLI11 fmt::fmt
   styk_warnings)
+# `styk render` needs the OSMesa renderer (STYK_OSMESA, on by default).
+if(TARGET styk_render_osmesa)
+  target_sources(styk PRIVATE src/command_render.cpp)
+  target_link_libraries(styk PRIVATE styk_render_osmesa)
+  target_compile_definitions(styk PRIVATE STYK_WITH_RENDER)
+endif()
 install(TARGETS styk RUNTIME DESTINATION bin)
 # Element plug-ins: where make_registry() looks by default; build them with the program.
 target_compile_definitions(styk PRIVATE

@@ -182,8 +182,10 @@ int render_command(const RenderArgs& args) {
     contents.model = read_inp(args.input, registry);
   }
   try {
-    const render::RenderJob job(contents.model, registry, increment,
-                                make_options(args, results_file));
+    render::RenderOptions options = make_options(args, results_file);
+    if (contents.model.source.empty())
+      options.model_name = std::filesystem::path(args.input).filename().string();
+    const render::RenderJob job(contents.model, registry, increment, std::move(options));
     return render_job(args, job, output);
   } catch (const InputError& e) {
     if (!e.where().file.empty()) throw;

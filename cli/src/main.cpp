@@ -7,6 +7,9 @@
 #include "commands.hpp"
 #include "exit_codes.hpp"
 #include "mesh_args.hpp"
+#ifdef STYK_WITH_RENDER
+#include "render_args.hpp"
+#endif
 
 int main(int argc, char** argv) {
   using namespace styk::cli;
@@ -48,6 +51,33 @@ int main(int argc, char** argv) {
   mesh_cmd->add_flag("--list", mesh.list, "List the builders, their SPEC sections and parameters");
   mesh_cmd->allow_extras();  // builder parameters: --name value (checked by the builder)
 
+#ifdef STYK_WITH_RENDER
+  RenderArgs render;
+  CLI::App* render_cmd = app.add_subcommand("render", "Draw a results file (or a deck's mesh) headless into a PNG");
+  render_cmd->add_option("input", render.input, "Results file (.styk.h5) or deck (.inp, mesh only)")->required();
+  render_cmd->add_option("-o,--output", render.output, "Picture (.png; .gif/.mp4 with --animate and ffmpeg); default: input name with .png");
+  render_cmd->add_option("--step", render.step, "Step number (default: last)")->check(CLI::NonNegativeNumber);
+  render_cmd->add_option("--inc", render.increment, "Increment within the step (default: last)")->check(CLI::NonNegativeNumber);
+  render_cmd->add_option("--field", render.field, "Contour field: U, U.x, RF.mag, S.mises, S.p1, S.11, E.22, ... (default: none)");
+  render_cmd->add_option("--averaging", render.averaging, "Stress/strain averaging: none, I, II, centroid (default: II)");
+  render_cmd->add_option("--bands", render.bands, "Contour colours, 2..24 (default: 12)")->check(CLI::Range(2, 24));
+  render_cmd->add_flag("--smooth", render.smooth, "Continuous colours instead of bands");
+  render_cmd->add_option("--deform", render.deform, "Deformation scale: auto, none or a factor (default: auto with results)");
+  render_cmd->add_flag("--no-outline", render.no_outline, "No undeformed outline under the deformed shape");
+  render_cmd->add_option("--mode", render.mode, "points, wireframe, hidden, shaded, shaded-edges (default: shaded)");
+  render_cmd->add_option("--view", render.view, "iso, +x, -x, +y, -y, +z, -z (default: iso)");
+  render_cmd->add_option("--azimuth", render.azimuth, "Turn the view about the screen vertical, degrees");
+  render_cmd->add_option("--elevation", render.elevation, "Raise the eye about the screen horizontal, degrees");
+  render_cmd->add_option("--zoom", render.zoom, "Zoom factor (> 1 enlarges)")->check(CLI::PositiveNumber);
+  render_cmd->add_flag("--perspective", render.perspective, "Perspective instead of orthographic projection");
+  render_cmd->add_option("--layers", render.layers, "Element sets shown as layers, comma-separated (default: whole model)");
+  render_cmd->add_option("--hide-layers", render.hide_layers, "Layers (among --layers) not shown, comma-separated");
+  render_cmd->add_option("--elements", render.elements, "Element id range FIRST-LAST");
+  render_cmd->add_option("--types", render.types, "Element types, comma-separated");
+  render_cmd->add_option("--size", render.size, "Picture size WIDTHxHEIGHT (default: 1600x1200)");
+  render_cmd->add_option("--animate", render.animate, "Write N frames of the deformation from 0 to the scale")->check(CLI::PositiveNumber);
+#endif
+
   app.add_subcommand("elements", "List the element types available, with rules and source");
 
   try {
@@ -63,6 +93,9 @@ int main(int argc, char** argv) {
     if (*solve_cmd) return solve_command(solve);
     if (*info_cmd) return info_command(info);
     if (*export_cmd) return export_command(exp);
+#ifdef STYK_WITH_RENDER
+    if (*render_cmd) return render_command(render);
+#endif
     if (*mesh_cmd) {
       mesh.params = mesh_cmd->remaining();
       return mesh_command(mesh);

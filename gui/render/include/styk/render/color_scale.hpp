@@ -1,0 +1,41 @@
+// The contour colour scale (SPEC §5): blue (minimum) to red (maximum), smooth or in 2..24 bands
+// (default 12), and the numbers the legend prints at the band limits.
+#pragma once
+
+#include <string>
+#include <vector>
+
+#include "styk/render/color.hpp"
+
+namespace styk::render {
+
+constexpr int kMinBands = 2;
+constexpr int kMaxBands = 24;
+constexpr int kDefaultBands = 12;
+
+struct ColorScale {
+  double min = 0.0;
+  double max = 1.0;
+  int bands = kDefaultBands;  // number of colours of a banded scale; the legend's intervals
+  bool smooth = false;        // continuous colours instead of bands
+
+  // Position of a value on the scale, 0 at min and 1 at max (clamped). A scale of zero width puts
+  // everything at 0.
+  double normalized(double value) const;
+  // The colour of band i (0 = lowest) and the continuous colour at position t.
+  Rgb band_color(int i) const;
+  // bands + 1 limits from min to max.
+  std::vector<double> limits() const;
+};
+
+// Continuous rainbow from blue (t = 0) over cyan, green and yellow to red (t = 1): the hue runs
+// linearly from 240 to 0 degrees at full saturation, so equal steps in t give distinct colours.
+Rgb rainbow(double t);
+
+// How the legend prints a number: 4 significant digits in scientific notation, "-1.235E+02".
+std::string format_legend_value(double value);
+
+// Throws InputError when bands is outside kMinBands..kMaxBands.
+void check_band_count(int bands);
+
+}  // namespace styk::render

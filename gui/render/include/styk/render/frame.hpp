@@ -1,0 +1,40 @@
+// One picture, ready to draw: geometry, camera, overlay and how to draw them. Built on the CPU by
+// RenderJob; drawn by GlRenderer (OSMesa or the Qt widget).
+#pragma once
+
+#include <string>
+#include <vector>
+
+#include "styk/render/camera.hpp"
+#include "styk/render/color_scale.hpp"
+#include "styk/render/geometry.hpp"
+#include "styk/render/overlay.hpp"
+
+namespace styk::render {
+
+// SPEC §5 display modes.
+enum class DisplayMode {
+  Points,       // the nodes of the visible elements
+  Wireframe,    // every skin edge, see-through
+  HiddenLine,   // skin edges, hidden ones removed
+  Shaded,       // lit faces with feature lines
+  ShadedEdges,  // lit faces with every skin edge
+};
+
+// "points", "wireframe", "hidden", "shaded", "shaded-edges"; InputError otherwise.
+DisplayMode parse_display_mode(const std::string& text);
+std::string display_mode_name(DisplayMode mode);
+
+struct Frame {
+  int width = 0;
+  int height = 0;
+  DisplayMode mode = DisplayMode::Shaded;
+  FrameGeometry geometry;
+  Camera camera;
+  Overlay overlay;
+  bool has_field = false;
+  ColorScale colors;  // meaningful when has_field
+  float point_size = 3.0f;
+};
+
+}  // namespace styk::render

@@ -1,0 +1,97 @@
+// The CPU side of a picture: the skins of the visible layers (built once) and, per frame, the
+// vertex arrays the GL renderer draws (triangles, mesh edges, feature lines, the undeformed
+// outline, node points) at a deformation scale, coloured by layer or by a scalar field.
+#pragma once
+
+#include <array>
+#include <cstdint>
+#include <memory>
+#include <vector>
+
+#include "styk/core/element_registry.hpp"
+#include "styk/core/model.hpp"
+#include "styk/render/color_scale.hpp"
+#include "styk/render/field.hpp"
+#include "styk/render/layers.hpp"
+#include "styk/render/skin.hpp"
+
+namespace styk::render {
+
+class FaceShapes;
+
+// One vertex of every primitive. Positions are relative to FrameGeometry::origin so that floats
+// keep their precision far from the coordinate origin. t < 0: no field, draw `color`; otherwise
+// the position on the colour scale (0..1).
+struct Vertex {
+  float position[3];
+  float normal[3];  // outward unit normal of the face (zero for lines and points)
+  float color[3];
+  float t;
+};
+
+struct FrameGeometry {
+  Vec3 origin{};
+  std::vector<Vertex> face_vertices;
+  std::vector<std::uint32_t> triangles;  // indices into face_vertices, 3 per triangle
+  std::vector<Vertex> edges;             // line pairs: every edge of every skin face, once
+  std::vector<Vertex> features;          // line pairs: boundary, non-manifold and crease edges
+  std::vector<Vertex> outline;           // line pairs: feature edges of the undeformed shape
+  std::vector<Vertex> points;            // the nodes of the visible elements
+  std::array<float, 3> lower{0, 0, 0};   // bounds of everything above, relative to origin
+  std::array<float, 3> upper{0, 0, 0};
+};
+
+// The visible part of a model: per visible layer, its elements after the filter, their skin and
+// their nodes. Building it is the expensive, view-independent step.
+class SkinModel {
+ public:
+  struct LayerSkin {
+    std::string name;
+    Rgb color;
+    std::vector<int> elements;    // visible elements of the layer (after the filter)
+    std::vector<SkinFace> faces;  // their skin
+    std::vector<int> nodes;       // their nodes, ascending
+  };
+
+  // Hidden layers are skipped. The model and the registry's formulations must outlive this object.
+  SkinModel(const Model& model, const ElementRegistry& registry, const std::vector<Layer>& layers,
+            const ElementFilter& filter);
+  ~SkinModel();
+  SkinModel(const SkinModel&) = delete;
+  SkinModel& operator=(const SkinModel&) = delete;
+
+  const Model& model() const { return model_; }
+  const std::vector<LayerSkin>& layers() const { return layers_; }
+  std::size_t face_count() const;
+  std::vector<int> visible_nodes() const;  // union over the layers, ascending
+  Vec3 centre() const { return centre_; }  // centre of the undeformed visible bounding box
+  double size() const { return size_; }    // diagonal of that box
+  const std::vector<const TElement*>& formulations() const { return formulations_; }
+  const FaceShapes& shapes() const { return *shapes_; }
+
+ private:
+  const Model& model_;
+  std::vector<const TElement*> formulations_;
+  std::unique_ptr<FaceShapes> shapes_;
+  std::vector<LayerSkin> layers_;
+  Vec3 centre_{};
+  double size_ = 0.0;
+};
+
+struct GeometryRequest {
+  const std::vector<Vec3>* displacement = nullptr;  // per node; nullptr = undeformed
+  double scale = 0.0;                               // deformation scale factor
+  const ScalarField* field = nullptr;               // nullptr = layer colours
+  const ColorScale* colors = nullptr;               // required with a field
+  bool points = true;                               // fill FrameGeometry::points
+  bool outline = false;                             // fill FrameGeometry::outline (undeformed)
+  double feature_angle_degrees = 30.0;              // crease angle of feature lines
+};
+
+FrameGeometry build_geometry(const SkinModel& skin, const GeometryRequest& request);
+
+// Minimum and maximum of a field over the visible elements (their nodes, element nodes or
+// elements, as the field is located). {0, 0} when nothing is visible.
+std::array<double, 2> field_range(const SkinModel& skin, const ScalarField& field);
+
+}  // namespace styk::render

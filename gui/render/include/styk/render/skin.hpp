@@ -1,0 +1,37 @@
+// Skin extraction: the faces of a set of elements that no second element of the set shares.
+// Only these are drawn (DESIGN "Headless and desktop rendering"). Face definitions come from each
+// element's TElement::faces() (corners first), so plug-in elements need nothing here.
+#pragma once
+
+#include <cstdint>
+#include <vector>
+
+#include "styk/core/element_registry.hpp"
+#include "styk/core/model.hpp"
+
+namespace styk::render {
+
+struct SkinFace {
+  int element = 0;  // element index
+  int face = 0;     // 0-based face of the element (0 = S1)
+};
+
+// The formulation of every element of the model, looked up once. An element type the registry
+// does not know is an InputError naming it, the element and the types that are known.
+std::vector<const TElement*> element_formulations(const Model& model,
+                                                  const ElementRegistry& registry);
+
+// The faces of `elements` (indices into the model) not shared by two of them. Two faces are the
+// same face when their sorted corner node indices agree (so a C3D20 face meets a C3D21 face).
+// Linear time: faces are bucketed by their smallest corner node (a counting sort over the nodes,
+// a perfect hash on the first key component) and matched within their bucket, whose size is
+// bounded by the valence of one node. The result is ordered by bucket, so it is deterministic.
+std::vector<SkinFace> extract_skin(const Model& model,
+                                   const std::vector<const TElement*>& formulations,
+                                   const std::vector<int>& elements);
+
+// Number of corners (3 or 4) of a face definition: a 4th listed node inside the triangle of the
+// first three (in natural coordinates) is a mid-edge node of a triangle, not a corner.
+int face_corner_count(const TElement& element, const FaceDef& face);
+
+}  // namespace styk::render

@@ -1,0 +1,60 @@
+#include "styk/render/color_scale.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+
+#include "styk/core/diagnostics.hpp"
+
+namespace styk::render {
+
+double ColorScale::normalized(double value) const {
+  const double width = max - min;
+  if (!(width > 0.0)) return 0.0;
+  return std::clamp((value - min) / width, 0.0, 1.0);
+}
+
+Rgb ColorScale::band_color(int i) const {
+  // The first band is pure blue and the last pure red, so the extremes read the same as on the
+  // smooth scale.
+  return rainbow(bands > 1 ? static_cast<double>(i) / (bands - 1) : 0.0);
+}
+
+std::vector<double> ColorScale::limits() const {
+  std::vector<double> out(static_cast<std::size_t>(bands) + 1);
+  for (int i = 0; i <= bands; ++i) out[i] = min + (max - min) * i / bands;
+  out.back() = max;  // exact, whatever the rounding of the line above
+  return out;
+}
+
+Rgb rainbow(double t) {
+  t = std::clamp(t, 0.0, 1.0);
+  const double hue = 4.0 * (1.0 - t);  // sextants of the colour wheel: 4 = blue, 0 = red
+  const int sextant = std::min(static_cast<int>(hue), 3);
+  const float f = static_cast<float>(hue - sextant);
+  switch (sextant) {
+    case 0:
+      return {1.0f, f, 0.0f};  // red -> yellow
+    case 1:
+      return {1.0f - f, 1.0f, 0.0f};  // yellow -> green
+    case 2:
+      return {0.0f, 1.0f, f};  // green -> cyan
+    default:
+      return {0.0f, 1.0f - f, 1.0f};  // cyan -> blue
+  }
+}
+
+std::string format_legend_value(double value) {
+  if (value == 0.0) value = 0.0;  // no "-0.000E+00"
+  char buffer[32];
+  std::snprintf(buffer, sizeof buffer, "%.3E", value);
+  return buffer;
+}
+
+void check_band_count(int bands) {
+  if (bands < kMinBands || bands > kMaxBands)
+    throw InputError({}, "the number of contour bands must be " + std::to_string(kMinBands) + ".." +
+                             std::to_string(kMaxBands) + ", not " + std::to_string(bands));
+}
+
+}  // namespace styk::render

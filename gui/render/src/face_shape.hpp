@@ -1,0 +1,54 @@
+// Private: how one face of one formulation is drawn. The face is parametrised over (s, t) in
+// [0, 1]^2 by the bilinear map of its corners' natural coordinates (a triangle is the quad with
+// its last corner repeated) and evaluated with the element's own shape functions (DER), so curved
+// faces of any formulation, plug-ins included, are drawn without knowing their node layout.
+#pragma once
+
+#include <array>
+#include <map>
+#include <utility>
+#include <vector>
+
+#include "styk/core/element.hpp"
+
+namespace styk::render {
+
+// Shape-function values and tangential derivatives on an (n+1) x (n+1) grid of (s, t), s fastest,
+// restricted to the element nodes that are non-zero on the face.
+struct FacePatch {
+  int segments = 1;
+  std::vector<int> nodes;  // element-local node indices
+  std::vector<double> N;   // [point * nodes.size() + a]
+  std::vector<double> dNds;
+  std::vector<double> dNdt;
+  int points() const { return (segments + 1) * (segments + 1); }
+};
+
+struct FaceShape {
+  int corner_count = 4;
+  std::array<int, 4> corners{};  // element-local; corners[3] == corners[2] for a triangle
+  // Subdivisions per direction of a face whose geometry or field is not bilinear: 1 when the face
+  // has only corner nodes, otherwise 2 x its polynomial degree (the most nodes on one edge minus
+  // one, at least 2 when the face has interior nodes): quadratic faces 4, cubic 6.
+  int curved_segments = 1;
+  // Non-corner face nodes and their (s, t), for the test "is this face bilinear as placed".
+  std::vector<int> extra_nodes;
+  std::vector<std::array<double, 2>> extra_st;
+  FacePatch flat;    // segments = 1
+  FacePatch curved;  // segments = curved_segments
+};
+
+// Face shapes of the formulations of one model, built eagerly for every face of every formulation
+// passed in (a handful), then read-only.
+class FaceShapes {
+ public:
+  explicit FaceShapes(const std::vector<const TElement*>& formulations);
+  const FaceShape& get(const TElement* element, int face) const {
+    return shapes_.at(element)[static_cast<std::size_t>(face)];
+  }
+
+ private:
+  std::map<const TElement*, std::vector<FaceShape>> shapes_;
+};
+
+}  // namespace styk::render

@@ -1,0 +1,249 @@
+#include "styk/render/field.hpp"
+
+#include <algorithm>
+#include <array>
+#include <cctype>
+#include <cmath>
+#include <functional>
+
+#include <Eigen/Eigenvalues>
+
+#include "styk/core/diagnostics.hpp"
+
+namespace styk::render {
+namespace {
+
+std::string lower(std::string s) {
+  for (char& c : s) c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
+  return s;
+}
+
+std::string join(const std::vector<std::string>& items, const char* separator) {
+  std::string out;
+  for (const std::string& item : items) out += (out.empty() ? "" : separator) + item;
+  return out;
+}
+
+// ---- vectors ----------------------------------------------------------------------------------
+// Suffix -> component (0..2) or 3 = magnitude.
+int vector_component(const std::string& suffix) {
+  if (suffix.empty() || suffix == "mag" || suffix == "magnitude") return 3;
+  if (suffix == "x" || suffix == "1") return 0;
+  if (suffix == "y" || suffix == "2") return 1;
+  if (suffix == "z" || suffix == "3") return 2;
+  return -1;
+}
+
+// ---- tensors ----------------------------------------------------------------------------------
+using TensorFunction = std::function<double(const Tensor6&)>;
+
+std::array<double, 3> principal_values(const Tensor6& t) {  // ascending
+  Eigen::Matrix3d m;
+  // clang-format off
+  m << t[0], t[3], t[4],
+       t[3], t[1], t[5],
+       t[4], t[5], t[2];
+  // clang-format on
+  Eigen::SelfAdjointEigenSolver<Eigen::Matrix3d> solver;
+  solver.computeDirect(m, Eigen::EigenvaluesOnly);
+  const Eigen::Vector3d ev = solver.eigenvalues();
+  return {ev(0), ev(1), ev(2)};
+}
+
+double mises(const Tensor6& t) {
+  const double a = t[0] - t[1], b = t[1] - t[2], c = t[2] - t[0];
+  return std::sqrt(0.5 * (a * a + b * b + c * c) + 3.0 * (t[3] * t[3] + t[4] * t[4] + t[5] * t[5]));
+}
+
+// Tensor suffix -> function; empty function when unknown. Mises and Tresca only for stress.
+TensorFunction tensor_function(const std::string& suffix, bool stress) {
+  static const std::array<const char*, 6> kComponents = {"11", "22", "33", "12", "13", "23"};
+  for (int i = 0; i < 6; ++i)
+    if (suffix == kComponents[i]) return [i](const Tensor6& t) { return t[i]; };
+  if (suffix == "p1" || suffix == "max_principal")
+    return [](const Tensor6& t) { return principal_values(t)[2]; };
+  if (suffix == "p2" || suffix == "mid_principal")
+    return [](const Tensor6& t) { return principal_values(t)[1]; };
+  if (suffix == "p3" || suffix == "min_principal")
+    return [](const Tensor6& t) { return principal_values(t)[0]; };
+  if (stress && suffix == "mises") return mises;
+  if (stress && suffix == "tresca")
+    return [](const Tensor6& t) {
+      const auto p = principal_values(t);
+      return p[2] - p[0];
+    };
+  return {};
+}
+
+struct TensorArrays {
+  const std::vector<Tensor6>* element_nodes;
+  const std::vector<Tensor6>* nodal_I;
+  const std::vector<Tensor6>* nodal_II;
+  const std::vector<Tensor6>* centroid;
+  const std::vector<Tensor6>* points;
+};
+
+std::string held_data(const char* q, const TensorArrays& a) {
+  std::vector<std::string> held;
+  if (!a.element_nodes->empty())
+    held.push_back(std::string("averaging none (") + q + "_element_nodes)");
+  if (!a.nodal_I->empty()) held.push_back(std::string("averaging I (") + q + "_nodal_I)");
+  if (!a.nodal_II->empty()) held.push_back(std::string("averaging II (") + q + "_nodal_II)");
+  if (!a.centroid->empty()) held.push_back(std::string("averaging centroid (") + q + "_centroid)");
+  if (!a.points->empty())
+    held.push_back(std::string("integration-point ") + q + " only (not drawable)");
+  return held.empty() ? std::string("no ") + q + " data at all" : join(held, ", ");
+}
+
+ScalarField tensor_field(const Model& model, const IncrementResult& inc, const char* quantity,
+                         const TensorArrays& arrays, const TensorFunction& f, Averaging averaging) {
+  ScalarField field;
+  field.uses_averaging = true;
+  const std::vector<Tensor6>* source = nullptr;
+  std::size_t expected = 0;
+  const char* array_name = "";
+  switch (averaging) {
+    case Averaging::None:
+      source = arrays.element_nodes, expected = model.connectivity.size(),
+      array_name = "_element_nodes";
+      field.location = FieldLocation::ElementNode;
+      break;
+    case Averaging::MethodI:
+      source = arrays.nodal_I, expected = model.coords.size(), array_name = "_nodal_I";
+      field.location = FieldLocation::Node;
+      break;
+    case Averaging::MethodII:
+      source = arrays.nodal_II, expected = model.coords.size(), array_name = "_nodal_II";
+      field.location = FieldLocation::Node;
+      break;
+    case Averaging::Centroid:
+      source = arrays.centroid, expected = model.elements.size(), array_name = "_centroid";
+      field.location = FieldLocation::Element;
+      break;
+  }
+  if (source->empty())
+    throw InputError({}, "step " + std::to_string(inc.step) + " increment " +
+                             std::to_string(inc.increment) + " holds no " + quantity + array_name +
+                             " for averaging " + averaging_name(averaging) +
+                             "; it holds: " + held_data(quantity, arrays));
+  if (source->size() != expected)
+    throw InputError({}, std::string(quantity) + array_name + " has " +
+                             std::to_string(source->size()) + " entries, the model needs " +
+                             std::to_string(expected));
+  field.values.resize(source->size());
+  std::transform(source->begin(), source->end(), field.values.begin(), f);
+  return field;
+}
+
+}  // namespace
+
+Averaging parse_averaging(const std::string& text) {
+  const std::string t = lower(text);
+  if (t == "none" || t == "0") return Averaging::None;
+  if (t == "i" || t == "1") return Averaging::MethodI;
+  if (t == "ii" || t == "2") return Averaging::MethodII;
+  if (t == "centroid") return Averaging::Centroid;
+  throw InputError({}, "unknown averaging '" + text + "'; use none, I, II or centroid");
+}
+
+std::string averaging_name(Averaging averaging) {
+  switch (averaging) {
+    case Averaging::None:
+      return "none";
+    case Averaging::MethodI:
+      return "I";
+    case Averaging::MethodII:
+      return "II";
+    case Averaging::Centroid:
+      return "centroid";
+  }
+  return "?";
+}
+
+std::vector<std::string> field_names() {
+  std::vector<std::string> names;
+  for (const char* v : {"U", "RF"})
+    for (const char* s : {"mag", "x", "y", "z"}) names.push_back(std::string(v) + "." + s);
+  for (const char* q : {"S", "E"}) {
+    for (const char* s : {"11", "22", "33", "12", "13", "23", "p1", "p2", "p3"})
+      names.push_back(std::string(q) + "." + s);
+    if (std::string(q) == "S") {
+      names.push_back("S.mises");
+      names.push_back("S.tresca");
+    }
+  }
+  return names;
+}
+
+ScalarField evaluate_field(const Model& model, const IncrementResult& inc, const std::string& name,
+                           Averaging averaging) {
+  const std::size_t dot = name.find('.');
+  std::string quantity = name.substr(0, dot);
+  for (char& c : quantity) c = static_cast<char>(std::toupper(static_cast<unsigned char>(c)));
+  const std::string suffix = dot == std::string::npos ? "" : lower(name.substr(dot + 1));
+  const auto unknown = [&]() {
+    return InputError({}, "unknown field '" + name + "'; fields: " + join(field_names(), ", "));
+  };
+
+  // Extension point for contact output (DESIGN "Data flow": pressure, shear, slip, gap, status):
+  // once IncrementResult carries per-contact-node arrays, evaluate them here as Node fields.
+  if (quantity == "CPRESS" || quantity == "CSLIP" || quantity == "CSTATUS" ||
+      quantity == "CSHEAR" || quantity == "CGAP" || quantity == "CONTACT")
+    throw InputError({}, "contact field '" + name +
+                             "' cannot be drawn yet: the results schema holds no contact output");
+
+  if (quantity == "U" || quantity == "RF") {
+    const int component = vector_component(suffix);
+    if (component < 0) throw unknown();
+    const std::vector<Vec3>& data = quantity == "U" ? inc.U : inc.RF;
+    if (data.size() != model.coords.size())
+      throw InputError({}, "step " + std::to_string(inc.step) + " increment " +
+                               std::to_string(inc.increment) + " holds " +
+                               std::to_string(data.size()) + " " + quantity + " values for " +
+                               std::to_string(model.coords.size()) + " nodes");
+    ScalarField field;
+    field.name = quantity + "." + (component == 3 ? "mag" : std::string(1, "xyz"[component]));
+    field.description = field.name;
+    field.location = FieldLocation::Node;
+    field.values.resize(data.size());
+    for (std::size_t i = 0; i < data.size(); ++i) {
+      const Vec3& v = data[i];
+      field.values[i] =
+          component == 3 ? std::sqrt(v[0] * v[0] + v[1] * v[1] + v[2] * v[2]) : v[component];
+    }
+    return field;
+  }
+  if (quantity == "S" || quantity == "E") {
+    const bool stress = quantity == "S";
+    const TensorFunction f = tensor_function(suffix, stress);
+    if (!f) throw unknown();
+    const TensorArrays arrays = stress ? TensorArrays{&inc.S_element_nodes, &inc.S_nodal_I,
+                                                      &inc.S_nodal_II, &inc.S_centroid, &inc.S}
+                                       : TensorArrays{&inc.E_element_nodes, &inc.E_nodal_I,
+                                                      &inc.E_nodal_II, &inc.E_centroid, &inc.E};
+    ScalarField field = tensor_field(model, inc, stress ? "S" : "E", arrays, f, averaging);
+    field.name = quantity + "." + suffix;
+    if (suffix == "max_principal") field.name = quantity + ".p1";
+    if (suffix == "mid_principal") field.name = quantity + ".p2";
+    if (suffix == "min_principal") field.name = quantity + ".p3";
+    field.description = field.name + ", averaging " + averaging_name(averaging);
+    return field;
+  }
+  throw unknown();
+}
+
+double max_displacement(const IncrementResult& inc, const std::vector<int>& nodes) {
+  double largest = 0.0;
+  const auto visit = [&](const Vec3& u) {
+    largest = std::max(largest, std::sqrt(u[0] * u[0] + u[1] * u[1] + u[2] * u[2]));
+  };
+  if (nodes.empty()) {
+    for (const Vec3& u : inc.U) visit(u);
+  } else {
+    for (int n : nodes)
+      if (n >= 0 && static_cast<std::size_t>(n) < inc.U.size()) visit(inc.U[n]);
+  }
+  return largest;
+}
+
+}  // namespace styk::render

@@ -1,0 +1,340 @@
+#include "styk/render/geometry.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+
+#include "face_shape.hpp"
+
+namespace styk::render {
+namespace {
+
+struct V3 {
+  double x = 0, y = 0, z = 0;
+};
+V3 operator+(V3 a, V3 b) { return {a.x + b.x, a.y + b.y, a.z + b.z}; }
+V3 operator-(V3 a, V3 b) { return {a.x - b.x, a.y - b.y, a.z - b.z}; }
+V3 operator*(double s, V3 a) { return {s * a.x, s * a.y, s * a.z}; }
+V3 cross(V3 a, V3 b) {
+  return {a.y * b.z - a.z * b.y, a.z * b.x - a.x * b.z, a.x * b.y - a.y * b.x};
+}
+double dot(V3 a, V3 b) { return a.x * b.x + a.y * b.y + a.z * b.z; }
+double norm(V3 a) { return std::sqrt(dot(a, a)); }
+
+// Where a node is drawn: deformed, relative to the frame origin.
+class Placement {
+ public:
+  Placement(const Model& model, const Vec3& origin, const std::vector<Vec3>* u, double scale)
+      : model_(model), origin_(origin), u_(u), scale_(u ? scale : 0.0) {}
+  V3 operator()(int node) const {
+    const Vec3& x = model_.coords[node];
+    V3 p{x[0] - origin_[0], x[1] - origin_[1], x[2] - origin_[2]};
+    if (scale_ != 0.0) {
+      const Vec3& d = (*u_)[node];
+      p = p + scale_ * V3{d[0], d[1], d[2]};
+    }
+    return p;
+  }
+
+ private:
+  const Model& model_;
+  Vec3 origin_;
+  const std::vector<Vec3>* u_;
+  double scale_;
+};
+
+Vertex make_vertex(V3 p, V3 n, const Rgb& c, float t) {
+  return Vertex{{float(p.x), float(p.y), float(p.z)},
+                {float(n.x), float(n.y), float(n.z)},
+                {c.r, c.g, c.b},
+                t};
+}
+
+// A face edge as seen from one skin face: its corner nodes (sorted) and where its polyline lies.
+struct EdgeRef {
+  int a, b;            // corner node indices, a < b
+  std::uint32_t base;  // first face vertex of the face's grid
+  int segments;        // grid subdivisions of the face
+  int edge;            // 0..3, c_edge -> c_edge+1
+};
+
+std::uint32_t edge_vertex(const EdgeRef& r, int i) {
+  const int n = r.segments;
+  int col = 0, row = 0;
+  switch (r.edge) {
+    case 0:
+      col = i, row = 0;
+      break;
+    case 1:
+      col = n, row = i;
+      break;
+    case 2:
+      col = n - i, row = n;
+      break;
+    default:
+      col = 0, row = n - i;
+      break;
+  }
+  return r.base + static_cast<std::uint32_t>(row * (n + 1) + col);
+}
+
+V3 edge_mid_normal(const FrameGeometry& g, const EdgeRef& r) {
+  const auto normal = [&](int i) {
+    const float* n = g.face_vertices[edge_vertex(r, i)].normal;
+    return V3{n[0], n[1], n[2]};
+  };
+  const int n = r.segments;
+  return n % 2 == 0 ? normal(n / 2) : normal((n - 1) / 2) + normal((n + 1) / 2);
+}
+
+void add_polyline(const FrameGeometry& g, const EdgeRef& r, const Rgb& color,
+                  std::vector<Vertex>& lines) {
+  for (int i = 0; i < r.segments; ++i)
+    for (int k : {i, i + 1}) {
+      Vertex v = g.face_vertices[edge_vertex(r, k)];
+      v.normal[0] = v.normal[1] = v.normal[2] = 0.0f;
+      v.color[0] = color.r, v.color[1] = color.g, v.color[2] = color.b;
+      lines.push_back(v);
+    }
+}
+
+// Draws one layer's skin faces into g; returns the edge references for de-duplication.
+class LayerTessellator {
+ public:
+  LayerTessellator(const SkinModel& skin, const GeometryRequest& rq, const Placement& place,
+                   FrameGeometry& g)
+      : skin_(skin), rq_(rq), place_(place), g_(g) {}
+
+  void face(const SkinFace& sf, const Rgb& color, std::vector<EdgeRef>& edges) {
+    const Model& model = skin_.model();
+    const FaceShape& shape = skin_.shapes().get(skin_.formulations()[sf.element], sf.face);
+    const int* conn = model.element_nodes(sf.element);
+    const std::array<V3, 4> corner = {
+        place_(conn[shape.corners[0]]), place_(conn[shape.corners[1]]),
+        place_(conn[shape.corners[2]]), place_(conn[shape.corners[3]])};
+    const FacePatch& patch = needs_curved(shape, conn, corner) ? shape.curved : shape.flat;
+
+    const std::size_t count = patch.nodes.size();
+    local_x_.resize(count);
+    local_v_.assign(count, 0.0);
+    for (std::size_t a = 0; a < count; ++a) local_x_[a] = place_(conn[patch.nodes[a]]);
+    const ScalarField* field = rq_.field;
+    double element_value = 0.0;
+    if (field) {
+      const Element& element = model.elements[sf.element];
+      for (std::size_t a = 0; a < count; ++a) {
+        if (field->location == FieldLocation::Node)
+          local_v_[a] = field->values[conn[patch.nodes[a]]];
+        else if (field->location == FieldLocation::ElementNode)
+          local_v_[a] = field->values[element.first_node + patch.nodes[a]];
+      }
+      if (field->location == FieldLocation::Element) element_value = field->values[sf.element];
+    }
+    // Fallback normal for degenerate grid points (a triangle's repeated corner).
+    V3 face_normal = cross(corner[3] - corner[1], corner[2] - corner[0]);
+    const double face_len = norm(face_normal);
+    if (face_len > 0) face_normal = (1.0 / face_len) * face_normal;
+
+    const auto base = static_cast<std::uint32_t>(g_.face_vertices.size());
+    for (int p = 0; p < patch.points(); ++p) {
+      V3 x, ds, dt;
+      double value = element_value;
+      const double* N = &patch.N[p * count];
+      const double* Ns = &patch.dNds[p * count];
+      const double* Nt = &patch.dNdt[p * count];
+      for (std::size_t a = 0; a < count; ++a) {
+        x = x + N[a] * local_x_[a];
+        ds = ds + Ns[a] * local_x_[a];
+        dt = dt + Nt[a] * local_x_[a];
+        if (field && field->location != FieldLocation::Element) value += N[a] * local_v_[a];
+      }
+      V3 n = cross(dt, ds);  // face nodes circle with the normal into the element: flip it out
+      const double len = norm(n);
+      n = len > 1e-12 * (dot(ds, ds) + dot(dt, dt)) && len > 0 ? (1.0 / len) * n : face_normal;
+      const float t = field ? static_cast<float>(rq_.colors->normalized(value)) : -1.0f;
+      g_.face_vertices.push_back(make_vertex(x, n, color, t));
+    }
+    const int n = patch.segments;
+    for (int j = 0; j < n; ++j)
+      for (int i = 0; i < n; ++i) {
+        const std::uint32_t v00 = base + j * (n + 1) + i, v10 = v00 + 1, v01 = v00 + (n + 1),
+                            v11 = v01 + 1;
+        g_.triangles.insert(g_.triangles.end(), {v00, v10, v11, v00, v11, v01});
+      }
+    for (int e = 0; e < 4; ++e) {
+      if (shape.corner_count == 3 && e == 2) continue;  // the repeated corner's zero-length edge
+      const int a = conn[shape.corners[e]], b = conn[shape.corners[(e + 1) % 4]];
+      edges.push_back(EdgeRef{std::min(a, b), std::max(a, b), base, n, e});
+    }
+  }
+
+ private:
+  // A face with only corners is bilinear; a higher-order face is drawn subdivided when a field
+  // varies over it or when, as placed (deformed), its other nodes leave the bilinear patch of
+  // its corners by more than 1e-4 of its diagonals.
+  bool needs_curved(const FaceShape& shape, const int* conn, const std::array<V3, 4>& c) const {
+    if (shape.curved_segments == 1) return false;
+    if (rq_.field && rq_.field->location != FieldLocation::Element) return true;
+    const double tolerance = 1e-4 * (norm(c[2] - c[0]) + norm(c[3] - c[1]));
+    for (std::size_t k = 0; k < shape.extra_nodes.size(); ++k) {
+      const double s = shape.extra_st[k][0], t = shape.extra_st[k][1];
+      const V3 bilinear =
+          (1 - s) * (1 - t) * c[0] + s * (1 - t) * c[1] + s * t * c[2] + (1 - s) * t * c[3];
+      if (norm(place_(conn[shape.extra_nodes[k]]) - bilinear) > tolerance) return true;
+    }
+    return false;
+  }
+
+  const SkinModel& skin_;
+  const GeometryRequest& rq_;
+  const Placement& place_;
+  FrameGeometry& g_;
+  std::vector<V3> local_x_;
+  std::vector<double> local_v_;
+};
+
+void emit_edges(FrameGeometry& g, std::vector<EdgeRef>& edges, const Rgb& color,
+                double crease_cos) {
+  std::sort(edges.begin(), edges.end(), [](const EdgeRef& l, const EdgeRef& r) {
+    return l.a != r.a ? l.a < r.a : (l.b != r.b ? l.b < r.b : l.base < r.base);
+  });
+  for (std::size_t k = 0; k < edges.size();) {
+    std::size_t end = k + 1;
+    while (end < edges.size() && edges[end].a == edges[k].a && edges[end].b == edges[k].b) ++end;
+    add_polyline(g, edges[k], color, g.edges);
+    bool feature = end - k != 2;  // an open boundary or a non-manifold edge
+    if (!feature) {
+      const V3 n0 = edge_mid_normal(g, edges[k]), n1 = edge_mid_normal(g, edges[k + 1]);
+      const double l0 = norm(n0), l1 = norm(n1);
+      feature = l0 > 0 && l1 > 0 && dot(n0, n1) / (l0 * l1) < crease_cos;
+    }
+    if (feature) add_polyline(g, edges[k], color, g.features);
+    k = end;
+  }
+}
+
+void grow(FrameGeometry& g, const std::vector<Vertex>& vertices) {
+  for (const Vertex& v : vertices)
+    for (int k = 0; k < 3; ++k) {
+      g.lower[k] = std::min(g.lower[k], v.position[k]);
+      g.upper[k] = std::max(g.upper[k], v.position[k]);
+    }
+}
+
+}  // namespace
+
+SkinModel::SkinModel(const Model& model, const ElementRegistry& registry,
+                     const std::vector<Layer>& layers, const ElementFilter& filter)
+    : model_(model),
+      formulations_(element_formulations(model, registry)),
+      shapes_(std::make_unique<FaceShapes>(formulations_)) {
+  std::vector<char> used(model.coords.size(), 0), any(model.coords.size(), 0);
+  for (const Layer& layer : layers) {
+    if (!layer.visible) continue;
+    LayerSkin skin{layer.name, layer.color, filter_elements(model, layer.elements, filter), {}, {}};
+    skin.faces = extract_skin(model, formulations_, skin.elements);
+    std::fill(used.begin(), used.end(), 0);
+    for (int e : skin.elements) {
+      const int* nodes = model.element_nodes(e);
+      for (int k = 0; k < model.elements[e].node_count; ++k) used[nodes[k]] = 1;
+    }
+    for (std::size_t n = 0; n < used.size(); ++n)
+      if (used[n]) skin.nodes.push_back(static_cast<int>(n)), any[n] = 1;
+    layers_.push_back(std::move(skin));
+  }
+  Vec3 lo{std::numeric_limits<double>::max(), std::numeric_limits<double>::max(),
+          std::numeric_limits<double>::max()};
+  Vec3 hi{-lo[0], -lo[1], -lo[2]};
+  bool seen = false;
+  for (std::size_t n = 0; n < any.size(); ++n) {
+    if (!any[n]) continue;
+    seen = true;
+    for (int k = 0; k < 3; ++k)
+      lo[k] = std::min(lo[k], model.coords[n][k]), hi[k] = std::max(hi[k], model.coords[n][k]);
+  }
+  if (seen) {
+    double d2 = 0.0;
+    for (int k = 0; k < 3; ++k)
+      centre_[k] = 0.5 * (lo[k] + hi[k]), d2 += (hi[k] - lo[k]) * (hi[k] - lo[k]);
+    size_ = std::sqrt(d2);
+  }
+}
+
+SkinModel::~SkinModel() = default;
+
+std::size_t SkinModel::face_count() const {
+  std::size_t count = 0;
+  for (const LayerSkin& layer : layers_) count += layer.faces.size();
+  return count;
+}
+
+std::vector<int> SkinModel::visible_nodes() const {
+  std::vector<int> nodes;
+  for (const LayerSkin& layer : layers_)
+    nodes.insert(nodes.end(), layer.nodes.begin(), layer.nodes.end());
+  std::sort(nodes.begin(), nodes.end());
+  nodes.erase(std::unique(nodes.begin(), nodes.end()), nodes.end());
+  return nodes;
+}
+
+FrameGeometry build_geometry(const SkinModel& skin, const GeometryRequest& rq) {
+  FrameGeometry g;
+  g.origin = skin.centre();
+  const Placement place(skin.model(), g.origin, rq.displacement, rq.scale);
+  const double crease_cos = std::cos(rq.feature_angle_degrees * 3.14159265358979323846 / 180.0);
+  LayerTessellator tessellate(skin, rq, place, g);
+  std::vector<EdgeRef> edges;
+  for (const SkinModel::LayerSkin& layer : skin.layers()) {
+    edges.clear();
+    for (const SkinFace& face : layer.faces) tessellate.face(face, layer.color, edges);
+    emit_edges(g, edges, layer.color, crease_cos);
+    if (!rq.points) continue;
+    for (int node : layer.nodes) {
+      float t = -1.0f;
+      if (rq.field && rq.field->location == FieldLocation::Node)
+        t = static_cast<float>(rq.colors->normalized(rq.field->values[node]));
+      g.points.push_back(make_vertex(place(node), V3{}, layer.color, t));
+    }
+  }
+  if (rq.outline) {
+    GeometryRequest undeformed;
+    undeformed.points = false;
+    undeformed.feature_angle_degrees = rq.feature_angle_degrees;
+    FrameGeometry base = build_geometry(skin, undeformed);
+    g.outline = std::move(base.features);
+    for (Vertex& v : g.outline)
+      v.color[0] = kOutline.r, v.color[1] = kOutline.g, v.color[2] = kOutline.b;
+  }
+  const float big = std::numeric_limits<float>::max();
+  g.lower = {big, big, big};
+  g.upper = {-big, -big, -big};
+  grow(g, g.face_vertices);
+  grow(g, g.points);
+  grow(g, g.outline);
+  grow(g, g.edges);
+  if (g.lower[0] > g.upper[0]) g.lower = g.upper = {0, 0, 0};
+  return g;
+}
+
+std::array<double, 2> field_range(const SkinModel& skin, const ScalarField& field) {
+  double lo = std::numeric_limits<double>::max(), hi = -lo;
+  const auto visit = [&](double v) { lo = std::min(lo, v), hi = std::max(hi, v); };
+  const Model& model = skin.model();
+  if (field.location == FieldLocation::Node) {
+    for (int n : skin.visible_nodes()) visit(field.values[n]);
+  } else {
+    for (const SkinModel::LayerSkin& layer : skin.layers())
+      for (int e : layer.elements) {
+        if (field.location == FieldLocation::Element) {
+          visit(field.values[e]);
+          continue;
+        }
+        const Element& element = model.elements[e];
+        for (int k = 0; k < element.node_count; ++k) visit(field.values[element.first_node + k]);
+      }
+  }
+  if (lo > hi) return {0.0, 0.0};
+  return {lo, hi};
+}
+
+}  // namespace styk::render

@@ -1,0 +1,89 @@
+// Private: GLSL 3.30 core sources of the scene and overlay programs.
+#pragma once
+
+namespace styk::render::shaders {
+
+inline constexpr const char* kSceneVertex = R"(#version 330 core
+layout(location = 0) in vec3 a_position;
+layout(location = 1) in vec3 a_normal;
+layout(location = 2) in vec3 a_color;
+layout(location = 3) in float a_t;
+uniform mat4 u_view;
+uniform mat4 u_projection;
+uniform float u_point_size;
+out vec3 v_normal;
+out vec3 v_color;
+out float v_t;
+void main() {
+  v_normal = mat3(u_view) * a_normal;
+  v_color = a_color;
+  v_t = a_t;
+  gl_PointSize = u_point_size;
+  gl_Position = u_projection * u_view * vec4(a_position, 1.0);
+}
+)";
+
+// Contours are coloured per fragment from the interpolated scale position t, so band limits are
+// sharp and exact whatever the triangle size. The light sits just above-left of the eye, so faces
+// of an isometric view get different shades; a face seen square-on still gets exactly its colour
+// (the factor saturates at 1 there), which keeps band colours countable.
+inline constexpr const char* kSceneFragment = R"(#version 330 core
+in vec3 v_normal;
+in vec3 v_color;
+in float v_t;
+uniform bool u_lit;
+uniform bool u_use_field;
+uniform bool u_smooth;
+uniform int u_bands;
+uniform vec3 u_palette[24];
+uniform bool u_use_override;
+uniform vec3 u_override;
+uniform float u_line_shade;
+out vec4 frag_color;
+vec3 rainbow(float t) {
+  float hue = 4.0 * (1.0 - clamp(t, 0.0, 1.0));
+  int sextant = min(int(hue), 3);
+  float f = hue - float(sextant);
+  if (sextant == 0) return vec3(1.0, f, 0.0);
+  if (sextant == 1) return vec3(1.0 - f, 1.0, 0.0);
+  if (sextant == 2) return vec3(0.0, 1.0, f);
+  return vec3(0.0, 1.0 - f, 1.0);
+}
+void main() {
+  vec3 c = v_color * u_line_shade;
+  if (u_use_field && v_t >= 0.0) {
+    float t = clamp(v_t, 0.0, 1.0);
+    if (u_smooth) {
+      c = rainbow(t);
+    } else {
+      c = u_palette[min(int(floor(t * float(u_bands))), u_bands - 1)];
+    }
+  }
+  if (u_use_override) c = u_override;
+  if (u_lit) {
+    const vec3 light = normalize(vec3(-0.3, 0.5, 1.0));
+    float facing = abs(dot(normalize(v_normal), light));
+    c *= min(1.0, 0.55 + 0.6 * facing);
+  }
+  frag_color = vec4(c, 1.0);
+}
+)";
+
+inline constexpr const char* kOverlayVertex = R"(#version 330 core
+layout(location = 0) in vec2 a_position;
+layout(location = 1) in vec3 a_color;
+uniform vec2 u_size;
+out vec3 v_color;
+void main() {
+  v_color = a_color;
+  gl_Position = vec4(2.0 * a_position.x / u_size.x - 1.0, 1.0 - 2.0 * a_position.y / u_size.y, 0.0, 1.0);
+}
+)";
+
+inline constexpr const char* kOverlayFragment = R"(#version 330 core
+in vec3 v_color;
+out vec4 frag_color;
+void main() { frag_color = vec4(v_color, 1.0); }
+)";
+
+}  // namespace styk::render::shaders
