@@ -13,6 +13,8 @@
 #include "recovery.hpp"
 #include "step_conditions.hpp"
 #include "stiffness_matrix.hpp"
+#include "stress_averaging.hpp"
+#include "unsupported_features.hpp"
 
 namespace styk {
 namespace {
@@ -58,6 +60,7 @@ std::unique_ptr<LinearSolver> make_solver(LinearSolverKind kind, const SolverCon
 Results run_static_analysis(const Model& model, const ElementRegistry& registry,
                             const SolveOptions& options, ProgressSink* progress,
                             AnalysisReport* report) {
+  reject_unsupported_features(model);
   if (report != nullptr) *report = AnalysisReport{};
   const PhaseRecorder phases(progress, report);
   const int threads = resolve_threads(options.threads);
@@ -74,6 +77,9 @@ Results run_static_analysis(const Model& model, const ElementRegistry& registry,
     prepared = prepare_model(model, registry);
     conditions = accumulate_step_conditions(model, prepared);
   }
+
+  // Extrapolation operators per element type, built once for every step (SPEC §5 averaging).
+  const StressAveraging averaging(model, prepared.formulation, RuleKind::Full);
 
   std::unique_ptr<StiffnessMatrix> K;
   {
@@ -149,6 +155,7 @@ Results run_static_analysis(const Model& model, const ElementRegistry& registry,
     {
       const PhaseRecorder::Scope phase(phases, "recover");
       recover_increment(model, prepared, prescribed, u, f, threads, increment);
+      averaging.apply(threads, increment);
     }
     results.increments.push_back(std::move(increment));
   }

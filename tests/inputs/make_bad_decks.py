@@ -7,7 +7,8 @@ line 0) (the marker is removed when the file is written), so the manifest's
 line numbers cannot drift from the decks. manifest.tsv columns:
     deck <TAB> expected exit code of `styk solve` <TAB> expected line (0 = the deck as a whole)
     <TAB> substring the message must contain
-Decks named solver_*.inp are valid input that the solver must reject (the reader accepts them).
+Decks named solver_*.inp are valid input that the solver must reject (the reader accepts them):
+inverted elements, mechanisms, and features the solver cannot act on yet.
 Run from anywhere: python3 tests/inputs/make_bad_decks.py
 """
 import os
@@ -47,6 +48,11 @@ U
 *END STEP
 """
 BASE = NODES + ELEMENTS + SETS + MATERIAL + SECTION + BOUNDARY + STEP
+# Pieces for the contact decks: two faces of the block as surfaces, an interaction, a pair.
+CONTACT_SURFACES = "*SURFACE, NAME=BOTTOM_FACE\n1, S1\n*SURFACE, NAME=TOP_FACE\nBLOCK, S2\n"
+INTERACTION = "*SURFACE INTERACTION, NAME=DRY\n*SURFACE BEHAVIOR, PRESSURE-OVERCLOSURE=HARD\n" \
+              "*FRICTION\n0.2\n"
+CONTACT_PAIR = "*CONTACT PAIR, INTERACTION=DRY\nTOP_FACE, BOTTOM_FACE\n"
 
 
 def base(**replace):
@@ -61,8 +67,8 @@ def base(**replace):
 # (deck, description, text with '>>' marking the offending line, exit code, substring)
 DECKS = [
     ("unknown_keyword", "a keyword Styk does not read",
-     base(SECTION=SECTION + ">>*SURFACE BEHAVIOR, PRESSURE-OVERCLOSURE=HARD\n"), 1,
-     "unknown keyword *SURFACE BEHAVIOR"),
+     base(SECTION=SECTION + ">>*RIGID BODY, NSET=TIP, REF NODE=1\n"), 1,
+     "unknown keyword *RIGID BODY"),
     ("unknown_parameter", "a misspelt parameter",
      base(NODES=NODES.replace("*NODE, NSET=ALL", ">>*NODE, NSETT=ALL")), 1,
      "unknown parameter NSETT on *NODE"),
@@ -179,6 +185,64 @@ DECKS = [
      "ends with ',' (a continuation)"),
     ("include_missing", "*INCLUDE of a file that does not exist",
      base(SETS=SETS + ">>*INCLUDE, INPUT=no_such_part.inp\n"), 1, "no such file"),
+    # Contact, constraints and temperatures (docs/input.md).
+    ("contact_unknown_surface", "a contact pair naming a surface that does not exist",
+     base(SECTION=SECTION + CONTACT_SURFACES + "*CONTACT PAIR, INTERACTION=DRY\n>>TOP_FACE, BOTOM\n"
+          + INTERACTION), 1, "names surface BOTOM, which is not defined"),
+    ("surface_face_s7", "a face label a hexahedron does not have",
+     base(SECTION=SECTION + "*SURFACE, NAME=TOP_FACE\n>>1, S7\n"), 1,
+     "S7 is not a face of element 1 (C3D8 has faces S1..S6)"),
+    ("friction_outside_interaction", "*FRICTION without *SURFACE INTERACTION above it",
+     base(SECTION=SECTION + ">>*FRICTION\n0.2\n"), 1,
+     "*FRICTION must follow *SURFACE INTERACTION"),
+    ("friction_anisotropic_without_orientation", "anisotropic friction without its directions",
+     base(SECTION=SECTION + "*SURFACE INTERACTION, NAME=DRY\n>>*FRICTION, ANISOTROPIC\n0.1, 0.3\n"),
+     1, "ANISOTROPIC needs ORIENTATION="),
+    ("friction_rough_with_coefficient", "ROUGH (no slip) with a friction coefficient",
+     base(SECTION=SECTION + "*SURFACE INTERACTION, NAME=DRY\n*FRICTION, ROUGH\n>>0.2\n"), 1,
+     "ROUGH means no slip at all"),
+    ("friction_negative", "a negative friction coefficient",
+     base(SECTION=SECTION + "*SURFACE INTERACTION, NAME=DRY\n*FRICTION\n>>-0.2\n"), 1,
+     "friction coefficient mu must not be negative"),
+    ("clearance_unknown_pair", "*CLEARANCE for a slave/master pair that is not a contact pair",
+     base(SECTION=SECTION + CONTACT_SURFACES + INTERACTION + CONTACT_PAIR
+          + ">>*CLEARANCE, SLAVE=BOTTOM_FACE, MASTER=TOP_FACE, VALUE=0.01\n"), 1,
+     "no *CONTACT PAIR has them"),
+    ("contact_print_outside_step", "*CONTACT PRINT in the model part of the deck",
+     base(BOUNDARY=BOUNDARY + ">>*CONTACT PRINT\nCSTR\n"), 1,
+     "*CONTACT PRINT is only allowed inside a step"),
+    ("equation_one_term", "an equation with a single term",
+     base(BOUNDARY=BOUNDARY + "*EQUATION\n>>1\n2, 1, 1.\n"), 1,
+     "an equation needs at least 2 terms"),
+    ("equation_zero_coefficient", "an equation whose dependent term has coefficient 0",
+     base(BOUNDARY=BOUNDARY + "*EQUATION\n2\n>>2, 1, 0., 3, 1, 1.\n"), 1,
+     "the first coefficient of an equation must not be zero"),
+    ("equation_temperature_dof", "an equation on dof 11 (temperature)",
+     base(BOUNDARY=BOUNDARY + "*EQUATION\n2\n>>2, 11, 1., 3, 11, -1.\n"), 1,
+     "11 (temperature) is not supported yet"),
+    ("transform_undefined_nset", "*TRANSFORM on a node set that does not exist",
+     base(BOUNDARY=">>*TRANSFORM, NSET=SYMMETRY, TYPE=R\n1., 0., 0., 0., 1., 0.\n" + BOUNDARY), 1,
+     "NSET=SYMMETRY of *TRANSFORM is not defined"),
+    ("temperature_unknown_node", "a step temperature on a node that does not exist",
+     base(STEP="*STEP\n*STATIC\n*TEMPERATURE\nTIP, 100.\n>>99, 100.\n*END STEP\n"), 1,
+     "node 99 is not defined"),
+    # Valid input the solver cannot act on yet: refused by name and line, never ignored.
+    ("solver_contact_pair", "a contact pair: the solver has no contact yet",
+     base(SECTION=SECTION + CONTACT_SURFACES + INTERACTION
+          + "*CONTACT PAIR, INTERACTION=DRY\n>>BOTTOM_FACE, TOP_FACE\n"), 1,
+     "contact analysis is not available yet"),
+    ("solver_contact_print", "*CONTACT PRINT: the solver has no contact output yet",
+     base(STEP="*STEP\n*STATIC\n*CLOAD\nTIP, 3, -1.\n>>*CONTACT PRINT\nCSTR, CDIS\n*END STEP\n"),
+     1, "contact output is not available yet"),
+    ("solver_equation", "an equation: the solver has no multi-point constraints yet",
+     base(BOUNDARY=BOUNDARY + "*EQUATION\n>>2\n2, 3, 1., 3, 3, -1.\n"), 1,
+     "multi-point constraints are not available yet"),
+    ("solver_transform", "a transform: the solver has no local systems yet",
+     base(BOUNDARY=">>*TRANSFORM, NSET=FIXED, TYPE=C\n0., 0., 0., 0., 0., 1.\n" + BOUNDARY), 1,
+     "local coordinate systems for boundary conditions and loads are not available yet"),
+    ("solver_temperature", "a step temperature: the solver has no thermal loading yet",
+     base(STEP="*STEP\n*STATIC\n*CLOAD\nTIP, 3, -1.\n*TEMPERATURE\n>>TIP, 100.\n*END STEP\n"),
+     1, "thermal loading is not available yet"),
     ("solver_inverted_element", "an inside-out element: valid input, the solver rejects it",
      base(ELEMENTS="*ELEMENT, TYPE=C3D8, ELSET=BLOCK\n>>1, 5, 6, 7, 8, 1, 2, 3, 4\n"), 1,
      "Jacobian"),

@@ -48,7 +48,9 @@ const std::vector<DeckReader::KeywordSpec>& DeckReader::keywords() {
        kData},
       {"SOLID SECTION",
        S::Model,
-       {{"ELSET", true, V::Required}, {"MATERIAL", true, V::Required}},
+       {{"ELSET", true, V::Required},
+        {"MATERIAL", true, V::Required},
+        {"TECHNIQUE", false, V::Required}},  // Styk-only (B-bar)
        &DeckReader::on_solid_section,
        kData},
       {"BOUNDARY", S::Anywhere, {{"OP", false, V::Required}}, &DeckReader::on_boundary, kData},
@@ -57,7 +59,11 @@ const std::vector<DeckReader::KeywordSpec>& DeckReader::keywords() {
        {{"NAME", false, V::Required}, {"NLGEOM", false, V::Optional}, {"INC", false, V::Required}},
        &DeckReader::on_step,
        kNoData},
-      {"STATIC", S::Step, {{"SOLVER", false, V::Required}}, &DeckReader::on_static, kData},
+      {"STATIC",
+       S::Step,
+       {{"SOLVER", false, V::Required}, {"DIRECT", false, V::None}},
+       &DeckReader::on_static,
+       kData},
       {"CLOAD", S::Step, {{"OP", false, V::Required}}, &DeckReader::on_cload, kData},
       {"DLOAD", S::Step, {{"OP", false, V::Required}}, &DeckReader::on_dload, kData},
       {"NODE PRINT",
@@ -65,10 +71,69 @@ const std::vector<DeckReader::KeywordSpec>& DeckReader::keywords() {
        {{"NSET", false, V::Required}, {"TOTALS", false, V::Required}},
        &DeckReader::on_node_print,
        kData},
-      {"EL PRINT", S::Step, {{"ELSET", false, V::Required}}, &DeckReader::on_el_print, kData},
+      {"EL PRINT",
+       S::Step,
+       {{"ELSET", false, V::Required}, {"POSITION", false, V::Required}},
+       &DeckReader::on_el_print,
+       kData},
       {"NODE FILE", S::Step, {{"NSET", false, V::Required}}, &DeckReader::on_node_file, kData},
       {"EL FILE", S::Step, {{"ELSET", false, V::Required}}, &DeckReader::on_el_file, kData},
       {"END STEP", S::Step, {}, &DeckReader::on_end_step, kNoData},
+      // Contact (contact_keywords.cpp)
+      {"SURFACE",
+       S::Model,
+       {{"NAME", true, V::Required}, {"TYPE", false, V::Required}},
+       &DeckReader::on_surface,
+       kData},
+      {"SURFACE INTERACTION",
+       S::Model,
+       {{"NAME", true, V::Required}},
+       &DeckReader::on_surface_interaction,
+       kNoData},
+      {"SURFACE BEHAVIOR",
+       S::Interaction,
+       {{"PRESSURE-OVERCLOSURE", true, V::Required}},
+       &DeckReader::on_surface_behavior,
+       kNoData},
+      {"FRICTION",
+       S::Interaction,
+       {{"ANISOTROPIC", false, V::None},
+        {"ROUGH", false, V::None},
+        {"ORIENTATION", false, V::Required}},
+       &DeckReader::on_friction,
+       kData},
+      {"CONTACT PAIR",
+       S::Model,
+       {{"INTERACTION", true, V::Required},
+        {"TYPE", false, V::Required},
+        {"ADJUST", false, V::Required}},
+       &DeckReader::on_contact_pair,
+       kData},
+      {"CLEARANCE",
+       S::Model,
+       {{"SLAVE", true, V::Required}, {"MASTER", true, V::Required}, {"VALUE", true, V::Required}},
+       &DeckReader::on_clearance,
+       kNoData},
+      {"CONTACT PRINT", S::Step, {}, &DeckReader::on_contact_print, kData},
+      // Local systems and constraints (constraint_keywords.cpp)
+      {"ORIENTATION",
+       S::Model,
+       {{"NAME", true, V::Required}, {"SYSTEM", false, V::Required}},
+       &DeckReader::on_orientation,
+       kData},
+      {"TRANSFORM",
+       S::Model,
+       {{"NSET", true, V::Required}, {"TYPE", false, V::Required}},
+       &DeckReader::on_transform,
+       kData},
+      {"EQUATION", S::Model, {}, &DeckReader::on_equation, kData},
+      // Temperatures (thermal_keywords.cpp)
+      {"INITIAL CONDITIONS",
+       S::Model,
+       {{"TYPE", true, V::Required}},
+       &DeckReader::on_initial_conditions,
+       kData},
+      {"TEMPERATURE", S::Step, {{"OP", false, V::Required}}, &DeckReader::on_temperature, kData},
   };
   return table;
 }
@@ -105,6 +170,7 @@ void DeckReader::dispatch(const KeywordLine& kw) {
                                    ", *INCLUDE; see docs/input.md)");
   }
   if (spec->scope != Scope::Material) material_ = -1;
+  if (spec->scope != Scope::Interaction) interaction_.clear();
   switch (spec->scope) {
     case Scope::Model:
       if (in_step_)
@@ -115,6 +181,7 @@ void DeckReader::dispatch(const KeywordLine& kw) {
                                                 : "); model data goes before the first *STEP"));
       break;
     case Scope::Material:
+    case Scope::Interaction:
       if (in_step_) throw InputError(kw.where, kw.label() + " is not allowed inside a step");
       break;
     case Scope::Step:
@@ -271,6 +338,7 @@ void DeckReader::finish() {
   for (const Material& m : model_.materials)
     if (!m.young) throw InputError(m.where, "material " + m.name + " has no *ELASTIC constants");
   assign_sections();
+  resolve_contact_references();
 }
 
 void DeckReader::assign_sections() {

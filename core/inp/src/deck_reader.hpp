@@ -1,6 +1,7 @@
 // DeckReader: the state of reading one deck into a Model. The keyword table (deck_reader.cpp)
 // checks where a keyword may appear and which parameters it takes, then calls one handler per
-// keyword; the handlers live in mesh_keywords.cpp, property_keywords.cpp and step_keywords.cpp.
+// keyword; the handlers live in mesh_keywords.cpp, property_keywords.cpp, step_keywords.cpp,
+// contact_keywords.cpp, constraint_keywords.cpp and thermal_keywords.cpp.
 #pragma once
 
 #include <optional>
@@ -20,7 +21,8 @@ class DeckReader {
   Model read();
 
   // Where a keyword may appear.
-  enum class Scope { Model, Material, Step, Anywhere };
+  // Interaction: inside a *SURFACE INTERACTION block (like Material for *MATERIAL).
+  enum class Scope { Model, Material, Interaction, Step, Anywhere };
   enum class Value { None, Required, Optional };  // flag, NAME=value, either
   struct ParamSpec {
     const char* name;
@@ -68,6 +70,23 @@ class DeckReader {
   void on_node_file(const KeywordLine& kw);
   void on_el_file(const KeywordLine& kw);
   void read_output(const KeywordLine& kw, OutputRequest::Kind kind);
+  // contact_keywords.cpp
+  void on_surface(const KeywordLine& kw);
+  void on_surface_interaction(const KeywordLine& kw);
+  void on_surface_behavior(const KeywordLine& kw);
+  void on_friction(const KeywordLine& kw);
+  void on_contact_pair(const KeywordLine& kw);
+  void on_clearance(const KeywordLine& kw);
+  void on_contact_print(const KeywordLine& kw);
+  // Names that may be defined after the line using them, checked once the deck is complete.
+  void resolve_contact_references();
+  // constraint_keywords.cpp
+  void on_orientation(const KeywordLine& kw);
+  void on_transform(const KeywordLine& kw);
+  void on_equation(const KeywordLine& kw);
+  // thermal_keywords.cpp
+  void on_initial_conditions(const KeywordLine& kw);
+  void on_temperature(const KeywordLine& kw);
 
   // Helpers shared by the handlers.
   // Node indices named by one field: a node id or the name of a node set.
@@ -89,6 +108,14 @@ class DeckReader {
   const ElementRegistry& registry_;
   Model model_;
   int material_ = -1;  // the *MATERIAL block being read, -1 outside one
+  std::string interaction_;  // the *SURFACE INTERACTION block being read, empty outside one
+  // *CLEARANCE lines, matched with their contact pair when the deck is complete.
+  struct PendingClearance {
+    std::string slave, master;
+    double value = 0.0;
+    SourceLoc where;
+  };
+  std::vector<PendingClearance> clearances_;
   bool in_step_ = false;
   std::string last_keyword_;  // for "takes no data lines" messages
   // Where each node was defined (file index into files_, line), for duplicate-id messages.

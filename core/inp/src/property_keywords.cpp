@@ -70,6 +70,14 @@ void DeckReader::on_solid_section(const KeywordLine& kw) {
   section.elset = set_name(kw, "ELSET");
   section.material = normalize_name(kw.find("MATERIAL")->value);
   section.where = kw.where;
+  // Styk-only TECHNIQUE=SELECTIVE: mean-dilatation B-bar against volumetric locking.
+  if (const Parameter* technique = kw.find("TECHNIQUE")) {
+    const std::string value = normalize_name(technique->value);
+    if (value != "SELECTIVE" && value != "FULL")
+      throw InputError(kw.where, "*SOLID SECTION, TECHNIQUE=" + technique->value +
+                                     " is not known; Styk reads FULL (default) or SELECTIVE");
+    section.selective_volumetric = value == "SELECTIVE";
+  }
   if (const std::optional<DataLine> line = single_data_line(kw, false, "thickness")) {
     expect_fields(*line, 1, 1, "thickness");
     const double t = real_field(*line, 0, "thickness");

@@ -97,7 +97,14 @@ void DeckReader::on_static(const KeywordLine& kw) {
                                         ") is larger than the step time (" + line->fields[1] + ")");
     proc.initial_increment = values[0];
     proc.total_time = values[1];
+    if (line->fields.size() > 2 && !line->fields[2].empty()) proc.min_increment = values[2];
+    if (line->fields.size() > 3 && !line->fields[3].empty()) proc.max_increment = values[3];
+    if (proc.min_increment && proc.max_increment && values[2] > values[3])
+      throw InputError(line->where, "the minimum increment (" + line->fields[2] +
+                                        ") is larger than the maximum increment (" +
+                                        line->fields[3] + ")");
   }
+  proc.fixed_increments = kw.find("DIRECT") != nullptr;  // DIRECT: no automatic incrementation
   step.procedure = proc;
   step.has_procedure = true;
 }
@@ -189,6 +196,20 @@ void DeckReader::read_output(const KeywordLine& kw, OutputRequest::Kind kind) {
     if (value != "YES" && value != "NO")
       throw InputError(kw.where, "TOTALS=" + totals->value + ": expected YES or NO");
     request.totals = value == "YES";
+  }
+  if (const Parameter* position = kw.find("POSITION")) {  // *EL PRINT only (Abaqus spelling)
+    using P = OutputRequest::Position;
+    const std::string value = normalize_name(position->value);
+    if (value == "INTEGRATION POINTS")
+      request.position = P::IntegrationPoints;
+    else if (value == "CENTROIDAL")
+      request.position = P::Centroidal;
+    else if (value == "AVERAGED AT NODES")
+      request.position = P::AveragedAtNodes;
+    else
+      throw InputError(kw.where, "POSITION=" + position->value + " of " + kw.label() +
+                                     ": expected INTEGRATION POINTS, CENTROIDAL or AVERAGED AT "
+                                     "NODES");
   }
   const std::string list = allowed[0] + ", " + allowed[1];
   while (std::optional<DataLine> line = next_data_line()) {

@@ -3,6 +3,8 @@
 #include <charconv>
 #include <string>
 
+#include "writer_parts.hpp"
+
 namespace styk {
 
 namespace {
@@ -84,7 +86,8 @@ void write_properties(const Model& model, std::ostream& out) {
       out << "*EXPANSION, ZERO=" << num(m.expansion_reference) << '\n' << num(*m.expansion) << '\n';
   }
   for (const Section& s : model.sections) {
-    out << "*SOLID SECTION, ELSET=" << s.elset << ", MATERIAL=" << s.material << '\n';
+    out << "*SOLID SECTION, ELSET=" << s.elset << ", MATERIAL=" << s.material
+        << (s.selective_volumetric ? ", TECHNIQUE=SELECTIVE" : "") << '\n';
     if (s.thickness) out << num(*s.thickness) << '\n';
   }
 }
@@ -119,6 +122,8 @@ const char* output_keyword(OutputRequest::Kind kind) {
       return "*NODE FILE";
     case OutputRequest::Kind::ElementFile:
       return "*EL FILE";
+    case OutputRequest::Kind::ContactPrint:
+      return "*CONTACT PRINT";
   }
   return "";
 }
@@ -131,7 +136,12 @@ void write_step(const Model& model, const Step& step, std::ostream& out) {
     const StaticProcedure& p = step.procedure;
     out << "*STATIC";
     if (const char* solver = solver_name(p.solver)) out << ", SOLVER=" << solver;
-    out << '\n' << num(p.initial_increment) << ", " << num(p.total_time) << '\n';
+    if (p.fixed_increments) out << ", DIRECT";
+    out << '\n' << num(p.initial_increment) << ", " << num(p.total_time);
+    if (p.min_increment || p.max_increment)
+      out << ", " << (p.min_increment ? num(*p.min_increment) : "");
+    if (p.max_increment) out << ", " << num(*p.max_increment);
+    out << '\n';
   }
   write_boundaries(model, step.boundaries, step.boundary_op_new, out);
   if (!step.cloads.empty() || step.cload_op_new) {
@@ -144,12 +154,15 @@ void write_step(const Model& model, const Step& step, std::ostream& out) {
     for (const DistributedLoad& d : step.dloads)
       out << model.elements[d.element].id << ", P" << d.face << ", " << num(d.magnitude) << '\n';
   }
+  inp::write_step_temperatures(model, step, out);
   for (const OutputRequest& o : step.outputs) {
     const bool nodal =
         o.kind == OutputRequest::Kind::NodePrint || o.kind == OutputRequest::Kind::NodeFile;
     out << output_keyword(o.kind);
     if (!o.set.empty()) out << (nodal ? ", NSET=" : ", ELSET=") << o.set;
     if (o.totals) out << ", TOTALS=YES";
+    if (o.position == OutputRequest::Position::Centroidal) out << ", POSITION=CENTROIDAL";
+    if (o.position == OutputRequest::Position::AveragedAtNodes) out << ", POSITION=AVERAGED AT NODES";
     out << '\n';
     for (std::size_t i = 0; i < o.vars.size(); ++i) out << (i ? ", " : "") << o.vars[i];
     out << '\n';
@@ -164,6 +177,7 @@ void write_inp(const Model& model, std::ostream& out) {
   if (!model.heading.empty()) out << "*HEADING\n" << model.heading << '\n';
   write_mesh(model, out);
   write_properties(model, out);
+  inp::write_contact_and_constraints(model, out);
   write_boundaries(model, model.boundaries, false, out);
   for (const Step& step : model.steps) write_step(model, step, out);
 }

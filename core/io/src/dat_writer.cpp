@@ -87,6 +87,14 @@ class DatPrinter {
                                             " cannot be printed to the .dat file (Styk prints S "
                                             "and E)");
       const bool stress = var == "S";
+      if (request.position == OutputRequest::Position::Centroidal) {
+        print_centroids(var, set, elements, stress ? inc.S_centroid : inc.E_centroid, inc);
+        continue;
+      }
+      if (request.position == OutputRequest::Position::AveragedAtNodes) {
+        print_averaged(var, set, elements, stress ? inc.S_nodal_I : inc.E_nodal_I, inc);
+        continue;
+      }
       const std::vector<Tensor6>& field = stress ? inc.S : inc.E;
       if (inc.ip_offset.size() != model_.elements.size() + 1 ||
           field.size() != static_cast<std::size_t>(inc.ip_offset.back()))
@@ -107,6 +115,49 @@ class DatPrinter {
         }
       }
     }
+  }
+
+  // POSITION=CENTROIDAL: one row per element, no integration-point column.
+  void print_centroids(const std::string& var, const std::string& set,
+                       const std::vector<int>& elements, const std::vector<Tensor6>& field,
+                       const IncrementResult& inc) {
+    if (field.size() != model_.elements.size())
+      throw std::runtime_error("*EL PRINT, POSITION=CENTROIDAL asks for " + var +
+                               " but the results of " + increment_label(inc) +
+                               " hold no centroid values of " + var);
+    header(var == "S" ? "stresses at centroids (elem,sxx,syy,szz,sxy,sxz,syz)"
+                      : "strains at centroids (elem,exx,eyy,ezz,exy,exz,eyz)",
+           set, inc.total_time);
+    for (const int e : elements) write_tensor_row(model_.elements[e].id, field[e]);
+  }
+
+  // POSITION=AVERAGED AT NODES: nodal method I (SPEC §5) at every node of the set's elements,
+  // averaged over all elements sharing the node (not only those of the set).
+  void print_averaged(const std::string& var, const std::string& set,
+                      const std::vector<int>& elements, const std::vector<Tensor6>& field,
+                      const IncrementResult& inc) {
+    if (field.size() != model_.node_ids.size())
+      throw std::runtime_error("*EL PRINT, POSITION=AVERAGED AT NODES asks for " + var +
+                               " but the results of " + increment_label(inc) +
+                               " hold no nodal averages of " + var);
+    std::vector<int> nodes;
+    for (const int e : elements) {
+      const int* first = model_.element_nodes(e);
+      nodes.insert(nodes.end(), first, first + model_.elements[e].node_count);
+    }
+    std::sort(nodes.begin(), nodes.end(),
+              [&](int a, int b) { return model_.node_ids[a] < model_.node_ids[b]; });
+    nodes.erase(std::unique(nodes.begin(), nodes.end()), nodes.end());
+    header(var == "S" ? "stresses averaged at nodes (node,sxx,syy,szz,sxy,sxz,syz)"
+                      : "strains averaged at nodes (node,exx,eyy,ezz,exy,exz,eyz)",
+           set, inc.total_time);
+    for (const int n : nodes) write_tensor_row(model_.node_ids[n], field[n]);
+  }
+
+  void write_tensor_row(Id id, const Tensor6& values) {
+    write_id(id);
+    for (const double v : values) out_ << ' ' << io::fortran_e13_6(v);
+    out_ << '\n';
   }
 
   void write_id(Id id) {

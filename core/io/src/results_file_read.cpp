@@ -132,6 +132,18 @@ IncrementResult read_increment(hid_t group, const std::string& label, const Mode
               std::to_string(points) + " integration points");
     (field[0] == 'S' ? inc.S : inc.E) = to_rows<Tensor6>(flat);
   }
+  for (const io::schema::RecoveredField& field : io::schema::kRecoveredFields) {
+    if (!h5::has_link(group, field.name)) continue;  // a file from before the field existed
+    using Per = io::schema::FieldPer;
+    const std::uint64_t expected = field.per == Per::ElementNode ? model.connectivity.size()
+                                   : field.per == Per::Element   ? model.elements.size()
+                                                                 : nodes;
+    const std::uint64_t rows = h5::read_doubles(group, field.name, 6, flat);
+    if (rows != 0 && rows != expected)
+      corrupt(label + "/" + field.name + " has " + std::to_string(rows) + " rows, expected " +
+              std::to_string(expected));
+    inc.*field.member = to_rows<Tensor6>(flat);
+  }
   return inc;
 }
 

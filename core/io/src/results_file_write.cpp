@@ -35,6 +35,16 @@ void check_sizes(const Model& model, const IncrementResult& inc) {
   if (!inc.RF.empty() && inc.RF.size() != nodes)
     complain(std::to_string(inc.RF.size()) + " reaction forces for " + std::to_string(nodes) +
              " nodes");
+  for (const io::schema::RecoveredField& field : io::schema::kRecoveredFields) {
+    using Per = io::schema::FieldPer;
+    const std::size_t rows = (inc.*field.member).size();
+    const std::size_t expected = field.per == Per::ElementNode ? model.connectivity.size()
+                                 : field.per == Per::Element   ? elements
+                                                               : nodes;
+    if (rows != 0 && rows != expected)
+      complain(std::string(field.name) + " has " + std::to_string(rows) + " rows, expected " +
+               std::to_string(expected));
+  }
   if (inc.ip_offset.empty()) {
     if (!inc.S.empty() || !inc.E.empty()) complain("integration-point values without ip_offset");
     return;
@@ -120,6 +130,11 @@ void write_increment(hid_t steps, const IncrementResult& inc) {
   write_rows(group.get(), "S", inc.S.empty() ? nullptr : inc.S[0].data(), inc.S.size(), 6);
   write_rows(group.get(), "E", inc.E.empty() ? nullptr : inc.E[0].data(), inc.E.size(), 6);
   h5::write_int64(group.get(), "ip_offsets", widen(inc.ip_offset));
+  for (const io::schema::RecoveredField& field : io::schema::kRecoveredFields) {
+    const std::vector<Tensor6>& values = inc.*field.member;
+    write_rows(group.get(), field.name, values.empty() ? nullptr : values[0].data(), values.size(),
+               6);
+  }
 }
 
 }  // namespace

@@ -76,7 +76,9 @@ TEST_P(BadDeck, ReaderRejectsItAtTheListedLine) {
   const std::string path = input_path("bad/" + row.deck);
   if (solver_level(row)) {
     // Valid input that the solver rejects; the manifest names the solver's wording.
-    EXPECT_TRUE(row.substring == "Jacobian" || row.substring == "free") << row.substring;
+    EXPECT_TRUE(row.substring == "Jacobian" || row.substring == "free" ||
+                row.substring.find("not available yet") != std::string::npos)
+        << row.substring;
     EXPECT_NO_THROW(read_inp(path, registry));
     return;
   }

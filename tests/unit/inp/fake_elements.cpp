@@ -7,14 +7,28 @@ namespace styk::test {
 
 namespace {
 
+// Corner-node faces in the Abaqus order (the reader only counts them: S1..Sn must exist).
+std::vector<FaceDef> hexahedron_faces() {
+  return {{{0, 1, 2, 3}, 2, -1.0}, {{4, 7, 6, 5}, 2, 1.0}, {{0, 4, 5, 1}, 1, -1.0},
+          {{1, 5, 6, 2}, 0, 1.0},  {{2, 6, 7, 3}, 1, 1.0}, {{3, 7, 4, 0}, 0, -1.0}};
+}
+std::vector<FaceDef> wedge_faces() {
+  return {{{0, 1, 2}, 2, -1.0},
+          {{3, 5, 4}, 2, 1.0},
+          {{0, 3, 4, 1}, 1, -1.0},
+          {{1, 4, 5, 2}, 0, 1.0},
+          {{2, 5, 3, 0}, 0, -1.0}};
+}
+
 class FakeElement : public TElement {
  public:
-  FakeElement(std::string name, int nodes) : name_(std::move(name)), nodes_(nodes) {}
+  FakeElement(std::string name, int nodes, std::vector<FaceDef> faces)
+      : name_(std::move(name)), nodes_(nodes), faces_(std::move(faces)) {}
   std::string name() const override { return name_; }
   std::string description() const override { return "fake " + name_ + " for reader tests"; }
   int node_count() const override { return nodes_; }
   const std::vector<Vec3>& natural_nodes() const override { throw std::logic_error("fake"); }
-  const std::vector<FaceDef>& faces() const override { throw std::logic_error("fake"); }
+  const std::vector<FaceDef>& faces() const override { return faces_; }
   void der(const Vec3&, Eigen::Ref<Eigen::VectorXd>, Eigen::Ref<Eigen::MatrixXd>) const override {
     throw std::logic_error("fake");
   }
@@ -24,14 +38,21 @@ class FakeElement : public TElement {
  private:
   std::string name_;
   int nodes_;
+  std::vector<FaceDef> faces_;
 };
 
 }  // namespace
 
 ElementRegistry fake_registry() {
   ElementRegistry registry;
-  registry.add(std::make_unique<FakeElement>("C3D8", 8), "test");
-  registry.add(std::make_unique<FakeElement>("C3D20", 20), "test");
+  registry.add(std::make_unique<FakeElement>("C3D8", 8, hexahedron_faces()), "test");
+  registry.add(std::make_unique<FakeElement>("C3D20", 20, hexahedron_faces()), "test");
+  return registry;
+}
+
+ElementRegistry fake_registry_with_wedge() {
+  ElementRegistry registry = fake_registry();
+  registry.add(std::make_unique<FakeElement>("C3D6", 6, wedge_faces()), "test");
   return registry;
 }
 

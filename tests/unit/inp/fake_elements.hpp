@@ -8,5 +8,7 @@ namespace styk::test {
 
 // A registry holding fake C3D8 (8 nodes) and C3D20 (20 nodes) types.
 ElementRegistry fake_registry();
+// fake_registry() plus a fake six-node wedge C3D6 with five faces (S1..S5).
+ElementRegistry fake_registry_with_wedge();
 
 }  // namespace styk::test

@@ -93,13 +93,18 @@ struct DistributedLoad {
   SourceLoc where;
 };
 
-// One *NODE PRINT / *EL PRINT / *NODE FILE / *EL FILE request.
+// One *NODE PRINT / *EL PRINT / *NODE FILE / *EL FILE / *CONTACT PRINT request.
 struct OutputRequest {
-  enum class Kind { NodePrint, ElementPrint, NodeFile, ElementFile };
+  // ContactPrint: per slave node of every contact pair; vars CSTR, CDIS, CSTATUS (docs/input.md).
+  enum class Kind { NodePrint, ElementPrint, NodeFile, ElementFile, ContactPrint };
   Kind kind = Kind::NodePrint;
   std::string set;                 // upper-case NSET= / ELSET=, empty = whole model
   std::vector<std::string> vars;   // upper-case: U, RF, S, E, ...
   bool totals = false;             // TOTALS=YES: also print the sum over the set
+  // *EL PRINT, POSITION= (Abaqus spelling): where S and E are printed. AveragedAtNodes prints
+  // nodal method I (SPEC §5) for the nodes of the element set.
+  enum class Position { IntegrationPoints, Centroidal, AveragedAtNodes };
+  Position position = Position::IntegrationPoints;
   SourceLoc where;
 };
 
@@ -109,6 +114,18 @@ struct StaticProcedure {
   double initial_increment = 1.0;
   double total_time = 1.0;
   LinearSolverKind solver = LinearSolverKind::Automatic;  // *STATIC, SOLVER=
+  // Minimum and maximum increment (data-line fields 3 and 4) when given.
+  std::optional<double> min_increment;
+  std::optional<double> max_increment;
+  // *STATIC, DIRECT: fixed increments of initial_increment, no automatic increment control.
+  bool fixed_increments = false;
+  SourceLoc where;
+};
+
+// A temperature at one node: *INITIAL CONDITIONS, TYPE=TEMPERATURE or *TEMPERATURE.
+struct NodalTemperature {
+  int node = 0;               // node index
+  double value = 0.0;
   SourceLoc where;
 };
 
@@ -124,7 +141,91 @@ struct Step {
   bool boundary_op_new = false;
   bool cload_op_new = false;
   bool dload_op_new = false;
+  // *TEMPERATURE: accumulated over the steps like the loads (a later line for a node overrides);
+  // OP=NEW returns every node to its initial temperature first.
+  std::vector<NodalTemperature> temperatures;
+  bool temperature_op_new = false;
   std::vector<OutputRequest> outputs;
+  SourceLoc where;
+};
+
+// A local coordinate system given by two points a, b (Abaqus/CalculiX *ORIENTATION, *TRANSFORM):
+// Rectangular: local x along a (from the global origin), local y in the plane of a and b.
+// Cylindrical: a and b lie on the axis; local 1 = radial, 2 = tangential, 3 = axial (a -> b).
+enum class CoordinateSystem { Rectangular, Cylindrical };
+struct LocalAxes {
+  CoordinateSystem system = CoordinateSystem::Rectangular;
+  Vec3 a{1.0, 0.0, 0.0};
+  Vec3 b{0.0, 1.0, 0.0};
+};
+
+struct Orientation {               // *ORIENTATION, NAME=, SYSTEM=
+  std::string name;                // upper-case
+  LocalAxes axes;
+  SourceLoc where;
+};
+
+// *TRANSFORM: boundary conditions, loads and equation terms of the set's nodes act in `axes`.
+struct Transform {
+  std::string nset;                // upper-case
+  LocalAxes axes;
+  SourceLoc where;
+};
+
+// *EQUATION: sum of coefficient * u(node, dof) = 0, enforced exactly. terms[0] is the dependent
+// dof (its coefficient is non-zero); at least two terms.
+struct EquationTerm {
+  int node = 0;                    // node index
+  int dof = 1;                     // 1..3 (in the node's *TRANSFORM system if it has one)
+  double coefficient = 0.0;
+};
+struct Equation {
+  std::vector<EquationTerm> terms;
+  SourceLoc where;
+};
+
+// One element face of a surface: face 1..n = S1..Sn of the element type (TElement::faces()).
+struct SurfaceFace {
+  int element = 0;                 // element index
+  int face = 1;
+};
+
+struct Surface {                   // *SURFACE, NAME=, TYPE=ELEMENT|NODE
+  enum class Kind { ElementFaces, Nodes };
+  std::string name;                // upper-case
+  Kind kind = Kind::ElementFaces;
+  std::vector<SurfaceFace> faces;  // ElementFaces: sorted by (element, face), unique
+  std::vector<int> nodes;          // Nodes: node indices, sorted, unique
+  SourceLoc where;
+};
+
+struct Friction {                  // *FRICTION inside a *SURFACE INTERACTION
+  enum class Kind { Isotropic, Anisotropic, Rough };  // Rough: no slip at all
+  Kind kind = Kind::Isotropic;
+  double mu = 0.0;                 // Isotropic: mu; Anisotropic: mu1 along local direction 1
+  double mu2 = 0.0;                // Anisotropic: mu2 along local direction 2
+  std::optional<double> stick_slope;  // CalculiX's 2nd field; Styk enforces stick exactly
+  std::string orientation;         // Anisotropic: ORIENTATION= (Styk-only), upper-case
+  SourceLoc where;
+};
+
+struct SurfaceInteraction {        // *SURFACE INTERACTION, NAME= (hard contact, exact)
+  std::string name;                // upper-case
+  std::optional<Friction> friction;  // none: frictionless
+  SourceLoc where;
+};
+
+struct ContactPair {               // one data line of *CONTACT PAIR
+  enum class Type { NodeToSurface, SurfaceToSurface };
+  Type type = Type::NodeToSurface;
+  std::string slave;               // upper-case surface names (Model::surfaces)
+  std::string master;              // an element-face surface
+  std::string interaction;         // Model::surface_interactions
+  std::string adjust_nset;         // ADJUST=nset: move these slave nodes onto the master
+  std::optional<double> adjust_tolerance;  // ADJUST=value: ... those closer than this
+  // *CLEARANCE, VALUE=: initial gap (> 0) or interference (< 0) replacing the geometric one.
+  std::optional<double> clearance;
+  SourceLoc clearance_where;
   SourceLoc where;
 };
 
@@ -148,6 +249,16 @@ class Model {
   std::vector<Section> sections;
   std::vector<Boundary> boundaries;            // given outside any step: hold in every step
   std::vector<Step> steps;
+
+  // Contact definitions and local systems (by upper-case name where named).
+  std::map<std::string, Surface> surfaces;
+  std::map<std::string, SurfaceInteraction> surface_interactions;
+  std::vector<ContactPair> contact_pairs;
+  std::map<std::string, Orientation> orientations;
+  // Constraints and thermal state.
+  std::vector<Transform> transforms;
+  std::vector<Equation> equations;
+  std::vector<NodalTemperature> initial_temperatures;  // nodes not listed start at 0
 
   int node_count() const { return static_cast<int>(node_ids.size()); }
   int element_count() const { return static_cast<int>(elements.size()); }

@@ -10,7 +10,9 @@
 namespace styk {
 
 // For every increment of `results`, prints the *NODE PRINT (U, RF) and *EL PRINT (S, E) requests of
-// that increment's step, in request order and, within a request, in variable order. An empty set
+// that increment's step, in request order and, within a request, in variable order. *EL PRINT
+// prints at the integration points, or with POSITION=CENTROIDAL / AVERAGED AT NODES the centroid
+// values / the nodal method-I averages of the results (docs/results.md). An empty set
 // name means the whole model and is printed as "ALL". Rows are sorted by node / element id, as
 // ccx does. Throws InputError (at the request's source line) for an unknown set or a variable the
 // .dat report cannot print, and std::runtime_error when the results lack a requested field.

@@ -1,0 +1,184 @@
+// *ORIENTATION and *TRANSFORM (local coordinate systems given by two points) and *EQUATION
+// (linear multi-point constraints).
+#include <algorithm>
+#include <cmath>
+
+#include "deck_reader.hpp"
+#include "numbers.hpp"
+
+namespace styk::inp {
+
+namespace {
+
+double norm(const Vec3& v) { return std::sqrt(v[0] * v[0] + v[1] * v[1] + v[2] * v[2]); }
+
+Vec3 cross(const Vec3& x, const Vec3& y) {
+  return {x[1] * y[2] - x[2] * y[1], x[2] * y[0] - x[0] * y[2], x[0] * y[1] - x[1] * y[0]};
+}
+
+CoordinateSystem system_value(const Parameter* p, const SourceLoc& where, const std::string& what) {
+  if (!p) return CoordinateSystem::Rectangular;
+  const std::string value = normalize_name(p->value);
+  if (value == "RECTANGULAR" || value == "R") return CoordinateSystem::Rectangular;
+  if (value == "CYLINDRICAL" || value == "C") return CoordinateSystem::Cylindrical;
+  throw InputError(where, what + "=" + p->value +
+                              " is not supported; expected RECTANGULAR (R) or CYLINDRICAL (C)");
+}
+
+// The data line a1, a2, a3, b1, b2, b3, checked to define a system: for a rectangular one a must
+// not be zero and b not parallel to a; for a cylindrical one the two axis points must differ.
+// Degeneracy is judged relative to the size of the points, so units do not matter.
+LocalAxes axes_from(const DataLine& line, CoordinateSystem system) {
+  LocalAxes axes;
+  axes.system = system;
+  const char* names[] = {"a1", "a2", "a3", "b1", "b2", "b3"};
+  for (std::size_t i = 0; i < 3; ++i) {
+    axes.a[i] = real_field(line, i, std::string("coordinate ") + names[i]);
+    axes.b[i] = real_field(line, i + 3, std::string("coordinate ") + names[i + 3]);
+  }
+  const double scale = std::max(norm(axes.a), norm(axes.b));
+  constexpr double kRelative = 1e-12;
+  if (system == CoordinateSystem::Rectangular) {
+    if (norm(axes.a) == 0.0)
+      throw InputError(line.where, "point a is the origin: it cannot give the local x direction");
+    if (norm(cross(axes.a, axes.b)) <= kRelative * scale * scale)
+      throw InputError(line.where,
+                       "points a and b lie on one line through the origin: they do "
+                       "not define a local x-y plane");
+  } else {
+    const Vec3 axis{axes.b[0] - axes.a[0], axes.b[1] - axes.a[1], axes.b[2] - axes.a[2]};
+    if (norm(axis) <= kRelative * scale)
+      throw InputError(line.where, "points a and b coincide: they do not define a cylinder axis");
+  }
+  return axes;
+}
+
+// A displacement degree of freedom 1..3; 11 (temperature) is named as not supported.
+int displacement_dof(const DataLine& line, std::size_t index, const std::string& what) {
+  const std::int64_t dof = integer_field(line, index, what);
+  if (dof == 11)
+    throw InputError(line.where, what +
+                                     " 11 (temperature) is not supported yet; Styk reads dofs "
+                                     "1..3 (ux, uy, uz)");
+  if (dof < 1 || dof > 3)
+    throw InputError(line.where, what + " " + std::to_string(dof) +
+                                     " is out of range; Styk reads dofs 1..3 (ux, uy, uz)");
+  return static_cast<int>(dof);
+}
+
+constexpr const char* kAxesLayout = "a1, a2, a3, b1, b2, b3";
+
+}  // namespace
+
+void DeckReader::on_orientation(const KeywordLine& kw) {
+  Orientation orientation;
+  orientation.name = normalize_name(kw.find("NAME")->value);
+  orientation.where = kw.where;
+  if (const auto existing = model_.orientations.find(orientation.name);
+      existing != model_.orientations.end())
+    throw InputError(kw.where, "orientation " + orientation.name + " is defined twice (first at " +
+                                   existing->second.where.str() + ")");
+  const CoordinateSystem system = system_value(kw.find("SYSTEM"), kw.where, "SYSTEM");
+  const std::optional<DataLine> line = single_data_line(kw, true, kAxesLayout);
+  expect_fields(*line, 6, 6,
+                std::string(kAxesLayout) +
+                    " (an origin or a second line with an "
+                    "extra rotation is not supported)");
+  orientation.axes = axes_from(*line, system);
+  model_.orientations.emplace(orientation.name, std::move(orientation));
+}
+
+void DeckReader::on_transform(const KeywordLine& kw) {
+  Transform transform;
+  transform.nset = set_name(kw, "NSET");
+  transform.where = kw.where;
+  const NodeSet* set = model_.find_nset(transform.nset);
+  if (!set)
+    throw InputError(kw.where,
+                     "NSET=" + transform.nset +
+                         " of *TRANSFORM is not defined; node sets: " + some_names(model_.nsets));
+  // A node has one local system; a second *TRANSFORM reaching it would be ambiguous.
+  for (const Transform& other : model_.transforms) {
+    const NodeSet* other_set = model_.find_nset(other.nset);
+    for (int node : set->nodes)
+      if (std::binary_search(other_set->nodes.begin(), other_set->nodes.end(), node))
+        throw InputError(kw.where, "node " + std::to_string(model_.node_ids[node]) +
+                                       " of NSET=" + transform.nset +
+                                       " already has a *TRANSFORM (NSET=" + other.nset + " at " +
+                                       other.where.str() + ")");
+  }
+  const CoordinateSystem system = system_value(kw.find("TYPE"), kw.where, "TYPE");
+  const std::optional<DataLine> line = single_data_line(kw, true, kAxesLayout);
+  expect_fields(*line, 6, 6, kAxesLayout);
+  transform.axes = axes_from(*line, system);
+  model_.transforms.push_back(std::move(transform));
+}
+
+void DeckReader::on_equation(const KeywordLine& kw) {
+  bool any = false;
+  while (std::optional<DataLine> count_line = next_data_line()) {
+    expect_fields(*count_line, 1, 1, "the number of terms of the equation, alone on its line");
+    const std::int64_t count = integer_field(*count_line, 0, "number of terms");
+    if (count < 2)
+      throw InputError(count_line->where, "an equation needs at least 2 terms, read " +
+                                              count_line->fields[0] +
+                                              " (to prescribe a single dof use *BOUNDARY)");
+    Equation equation;
+    equation.where = count_line->where;
+    while (static_cast<std::int64_t>(equation.terms.size()) < count) {
+      std::optional<DataLine> line = next_data_line();
+      if (!line)
+        throw InputError(count_line->where, "the equation announces " + std::to_string(count) +
+                                                " terms but gives " +
+                                                std::to_string(equation.terms.size()));
+      const std::size_t n = line->fields.size();
+      const std::int64_t missing = count - static_cast<std::int64_t>(equation.terms.size());
+      if (n % 3 != 0 || n == 0 || n > 12 || static_cast<std::int64_t>(n / 3) > missing)
+        throw InputError(line->where, "*EQUATION term line has " + std::to_string(n) +
+                                          " fields, expected node, dof, coefficient for 1 to " +
+                                          std::to_string(std::min<std::int64_t>(missing, 4)) +
+                                          " terms (" + std::to_string(missing) + " of " +
+                                          std::to_string(count) + " terms still to come)");
+      for (std::size_t f = 0; f < n; f += 3) {
+        const std::string term = "term " + std::to_string(equation.terms.size() + 1);
+        if (!looks_like_integer(line->fields[f]))
+          throw InputError(line->where, "field " + std::to_string(f + 1) + " (node of " + term +
+                                            "): expected a node id, read " +
+                                            quote(line->fields[f]) +
+                                            " (node sets are not supported in *EQUATION)");
+        EquationTerm t;
+        t.node = node_by_id(id_field(*line, f, "node of " + term), line->where, term);
+        t.dof = displacement_dof(*line, f + 1, "dof of " + term);
+        t.coefficient = real_field(*line, f + 2, "coefficient of " + term);
+        if (equation.terms.empty() && t.coefficient == 0.0)
+          throw InputError(line->where,
+                           "the first coefficient of an equation must not be zero: "
+                           "the first term is the dof the equation eliminates");
+        for (const EquationTerm& other : equation.terms)
+          if (other.node == t.node && other.dof == t.dof)
+            throw InputError(line->where, "node " + line->fields[f] + ", dof " +
+                                              std::to_string(t.dof) +
+                                              " appears twice in the equation");
+        equation.terms.push_back(t);
+      }
+    }
+    const EquationTerm& dependent = equation.terms.front();
+    for (const Equation& other : model_.equations) {
+      const EquationTerm& d = other.terms.front();
+      if (d.node == dependent.node && d.dof == dependent.dof)
+        throw InputError(equation.where,
+                         "node " + std::to_string(model_.node_ids[d.node]) + ", dof " +
+                             std::to_string(d.dof) +
+                             " is already the dependent (first) term of the equation at " +
+                             other.where.str() + "; each dof can be eliminated once");
+    }
+    model_.equations.push_back(std::move(equation));
+    any = true;
+  }
+  if (!any)
+    throw InputError(kw.where, kw.label() +
+                                   " needs data lines: the number of terms, then node, "
+                                   "dof, coefficient for each term");
+}
+
+}  // namespace styk::inp

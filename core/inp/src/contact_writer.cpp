@@ -1,0 +1,123 @@
+// Writing of the contact, local-system, constraint and temperature keywords (writer_parts.hpp).
+#include <charconv>
+
+#include "writer_parts.hpp"
+
+namespace styk::inp {
+
+namespace {
+
+// Abaqus *EQUATION lines hold at most four terms.
+constexpr std::size_t kTermsPerLine = 4;
+
+void write_axes(const LocalAxes& axes, std::ostream& out) {
+  const auto& n = shortest_number;
+  out << n(axes.a[0]) << ", " << n(axes.a[1]) << ", " << n(axes.a[2]) << ", " << n(axes.b[0])
+      << ", " << n(axes.b[1]) << ", " << n(axes.b[2]) << '\n';
+}
+
+void write_surfaces(const Model& model, std::ostream& out) {
+  for (const auto& [name, surface] : model.surfaces) {
+    const bool nodes = surface.kind == Surface::Kind::Nodes;
+    out << "*SURFACE, NAME=" << name << ", TYPE=" << (nodes ? "NODE" : "ELEMENT") << '\n';
+    for (int n : surface.nodes) out << model.node_ids[n] << '\n';
+    for (const SurfaceFace& f : surface.faces)
+      out << model.elements[f.element].id << ", S" << f.face << '\n';
+  }
+}
+
+void write_interactions(const std::map<std::string, SurfaceInteraction>& interactions,
+                        std::ostream& out) {
+  for (const auto& [name, interaction] : interactions) {
+    out << "*SURFACE INTERACTION, NAME=" << name << '\n';
+    out << "*SURFACE BEHAVIOR, PRESSURE-OVERCLOSURE=HARD\n";
+    if (!interaction.friction) continue;
+    const Friction& f = *interaction.friction;
+    switch (f.kind) {
+      case Friction::Kind::Rough:
+        out << "*FRICTION, ROUGH\n";
+        break;
+      case Friction::Kind::Anisotropic:
+        out << "*FRICTION, ANISOTROPIC, ORIENTATION=" << f.orientation << '\n'
+            << shortest_number(f.mu) << ", " << shortest_number(f.mu2) << '\n';
+        break;
+      case Friction::Kind::Isotropic:
+        out << "*FRICTION\n" << shortest_number(f.mu);
+        if (f.stick_slope) out << ", " << shortest_number(*f.stick_slope);
+        out << '\n';
+        break;
+    }
+  }
+}
+
+void write_contact_pairs(const std::vector<ContactPair>& pairs, std::ostream& out) {
+  for (const ContactPair& pair : pairs) {
+    out << "*CONTACT PAIR, INTERACTION=" << pair.interaction << ", TYPE="
+        << (pair.type == ContactPair::Type::SurfaceToSurface ? "SURFACE TO SURFACE"
+                                                             : "NODE TO SURFACE");
+    if (!pair.adjust_nset.empty()) out << ", ADJUST=" << pair.adjust_nset;
+    if (pair.adjust_tolerance) out << ", ADJUST=" << shortest_number(*pair.adjust_tolerance);
+    out << '\n' << pair.slave << ", " << pair.master << '\n';
+    if (pair.clearance)
+      out << "*CLEARANCE, SLAVE=" << pair.slave << ", MASTER=" << pair.master
+          << ", VALUE=" << shortest_number(*pair.clearance) << '\n';
+  }
+}
+
+void write_equations(const Model& model, std::ostream& out) {
+  if (model.equations.empty()) return;
+  out << "*EQUATION\n";
+  for (const Equation& equation : model.equations) {
+    out << equation.terms.size() << '\n';
+    for (std::size_t i = 0; i < equation.terms.size(); ++i) {
+      const EquationTerm& t = equation.terms[i];
+      out << model.node_ids[t.node] << ", " << t.dof << ", " << shortest_number(t.coefficient);
+      const bool line_ends = (i + 1) % kTermsPerLine == 0 || i + 1 == equation.terms.size();
+      out << (line_ends ? "\n" : ", ");
+    }
+  }
+}
+
+void write_temperatures(const Model& model, const std::vector<NodalTemperature>& temperatures,
+                        std::ostream& out) {
+  for (const NodalTemperature& t : temperatures)
+    out << model.node_ids[t.node] << ", " << shortest_number(t.value) << '\n';
+}
+
+}  // namespace
+
+std::string shortest_number(double value) {
+  char buf[32];
+  const auto result = std::to_chars(buf, buf + sizeof buf, value);
+  return std::string(buf, result.ptr);
+}
+
+void write_contact_and_constraints(const Model& model, std::ostream& out) {
+  for (const auto& [name, orientation] : model.orientations) {
+    const bool cylindrical = orientation.axes.system == CoordinateSystem::Cylindrical;
+    out << "*ORIENTATION, NAME=" << name
+        << ", SYSTEM=" << (cylindrical ? "CYLINDRICAL" : "RECTANGULAR") << '\n';
+    write_axes(orientation.axes, out);
+  }
+  write_surfaces(model, out);
+  write_interactions(model.surface_interactions, out);
+  write_contact_pairs(model.contact_pairs, out);
+  for (const Transform& transform : model.transforms) {
+    const bool cylindrical = transform.axes.system == CoordinateSystem::Cylindrical;
+    out << "*TRANSFORM, NSET=" << transform.nset << ", TYPE=" << (cylindrical ? "C" : "R") << '\n';
+    write_axes(transform.axes, out);
+  }
+  write_equations(model, out);
+  if (!model.initial_temperatures.empty()) {
+    out << "*INITIAL CONDITIONS, TYPE=TEMPERATURE\n";
+    write_temperatures(model, model.initial_temperatures, out);
+  }
+}
+
+void write_step_temperatures(const Model& model, const Step& step, std::ostream& out) {
+  if (step.temperatures.empty() && !step.temperature_op_new) return;
+  out << "*TEMPERATURE" << (step.temperature_op_new ? ", OP=NEW" : "") << '\n';
+  write_temperatures(model, step.temperatures, out);
+}
+
+}  // namespace styk::inp

@@ -1,0 +1,13 @@
+// Model features the reader accepts but this solver cannot act on yet. Checked first so a deck
+// using them is refused by name and line instead of being solved as if they were absent.
+#pragma once
+
+#include "styk/core/model.hpp"
+
+namespace styk::solver_detail {
+
+// Throws InputError at the first contact pair, *CONTACT PRINT request, *EQUATION, *TRANSFORM or
+// *TEMPERATURE of the model. Each check goes when the solver learns the feature.
+void reject_unsupported_features(const Model& model);
+
+}  // namespace styk::solver_detail
