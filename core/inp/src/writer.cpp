@@ -1,6 +1,5 @@
 #include "styk/inp/writer.hpp"
 
-#include <charconv>
 #include <string>
 
 #include "writer_parts.hpp"
@@ -12,12 +11,7 @@ namespace {
 // Abaqus data lines hold at most 16 entries.
 constexpr int kEntriesPerLine = 16;
 
-// Shortest text that reads back to exactly the same double.
-std::string num(double value) {
-  char buf[32];
-  const auto result = std::to_chars(buf, buf + sizeof buf, value);
-  return std::string(buf, result.ptr);
-}
+std::string num(double value) { return inp::shortest_number(value); }
 
 void write_id_lines(std::ostream& out, const std::vector<int>& indices,
                     const std::vector<Id>& ids_by_index) {

@@ -9,7 +9,9 @@
 
 namespace styk::inp {
 
-// Shortest text that reads back to exactly the same double.
+// Shortest text that reads back to exactly the same double. (CalculiX reads at most 20
+// characters per field; the few doubles whose shortest exact form is longer, such as
+// 1.2246467991473532e-16, are written exactly anyway: round trip comes first.)
 std::string shortest_number(double value);
 
 // *ORIENTATION, *SURFACE, *SURFACE INTERACTION (+ *SURFACE BEHAVIOR, *FRICTION), *CONTACT PAIR,
