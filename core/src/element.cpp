@@ -1,4 +1,5 @@
-// TElement defaults (BEE, DEE) and template methods (Jacobian, stiffness, face loads, stresses).
+// TElement defaults (BEE, DEE, hooks) and template methods (Jacobian, stiffness, thermal load,
+// internal force, face loads, stresses); the integration itself is in element_integration.cpp.
 //
 // Every template method allocates its workspaces once per call, before the integration-point
 // loop; inside the loop only fixed-size temporaries and `noalias()` products are used.
@@ -11,6 +12,8 @@
 #include <Eigen/Dense>
 
 #include "styk/core/element.hpp"
+
+#include "element_integration.hpp"
 
 namespace styk {
 
@@ -31,6 +34,14 @@ void check_geometry(const ElementGeometry& g, const TElement& e) {
   if (g.X.rows() != e.node_count() || g.X.cols() != 3)
     throw InputError(g.where, element_label(g, e) + ": has " + std::to_string(g.X.rows()) +
                                   " nodes, expected " + std::to_string(e.node_count()));
+}
+
+void check_displacements(const ElementGeometry& g, const TElement& e,
+                         const Eigen::Ref<const Eigen::VectorXd>& u) {
+  if (u.size() != 3 * e.node_count())
+    throw std::invalid_argument(element_label(g, e) + ": displacement vector has " +
+                                std::to_string(u.size()) + " entries, expected " +
+                                std::to_string(3 * e.node_count()));
 }
 
 const FaceDef& checked_face(const ElementGeometry& g, const TElement& e, int face) {
@@ -130,25 +141,65 @@ double TElement::jacobian(const ElementGeometry& g, const Eigen::Ref<const Eigen
   return det;
 }
 
+void TElement::incompatible_bee(const ElementGeometry&, const Vec3&, double,
+                                Eigen::Ref<Eigen::MatrixXd>) const {}
+
+void TElement::add_stabilisation(const ElementGeometry&, const Matrix6d&, const ElementOptions&,
+                                 Eigen::MatrixXd&) const {}
+
 void TElement::stiffness(const ElementGeometry& g, const Material& material, RuleKind kind,
-                         Eigen::MatrixXd& K) const {
+                         Eigen::MatrixXd& K, const ElementOptions& options) const {
   check_geometry(g, *this);
-  const int n = node_count();
   Matrix6d D;
   dee(material, D);
-  const IntegrationRule r = rule(kind);
-  Eigen::VectorXd N(n);
-  Eigen::MatrixXd dN(n, 3), dNdx(n, 3), B(6, 3 * n), DB(6, 3 * n);
-  K.setZero(3 * n, 3 * n);
-  for (int k = 0; k < r.size(); ++k) {
-    der(r.points[k], N, dN);
-    const double detJ = jacobian(g, dN, dNdx, k + 1);
-    bee(dNdx, B);
-    DB.noalias() = D * B;
-    K.noalias() += (r.weights[k] * detJ) * B.transpose() * DB;
+  element_detail::ElementSystem system;
+  element_detail::integrate_system(*this, g, D, rule(kind), options, nullptr, system);
+  K = std::move(system.Kuu);
+  if (system.Kaa.rows() > 0) {
+    // Static condensation of the incompatible modes: K = Kuu - Kua Kaa^-1 Kua^T.
+    const Eigen::LDLT<Eigen::MatrixXd> Kaa(system.Kaa);
+    K.noalias() -= system.Kua * Kaa.solve(system.Kua.transpose());
   }
-  // The product above is symmetric only up to round-off; solvers (CHOLMOD) want it exact.
+  add_stabilisation(g, D, options, K);
+  // The products above are symmetric only up to round-off; solvers (CHOLMOD) want it exact.
   K = 0.5 * (K + K.transpose()).eval();
+}
+
+void TElement::thermal_load(const ElementGeometry& g, const Material& material, RuleKind kind,
+                            const Eigen::Ref<const Eigen::VectorXd>& nodal_dT, Eigen::VectorXd& f,
+                            const ElementOptions& options) const {
+  check_geometry(g, *this);
+  const Eigen::VectorXd dT = nodal_dT;
+  const Eigen::VectorXd alpha_dT = element_detail::nodal_thermal_strain(material, *this, &dT);
+  if (alpha_dT.size() == 0) {
+    f.setZero(3 * node_count());
+    return;
+  }
+  Matrix6d D;
+  dee(material, D);
+  element_detail::ElementSystem system;
+  element_detail::integrate_system(*this, g, D, rule(kind), options, &alpha_dT, system);
+  f = std::move(system.fu);
+  // The modes are internal: their share of the load goes to the nodes through Kua Kaa^-1.
+  if (system.Kaa.rows() > 0)
+    f.noalias() -= system.Kua * Eigen::LDLT<Eigen::MatrixXd>(system.Kaa).solve(system.fa);
+}
+
+void TElement::internal_force(const ElementGeometry& g, const Material& material, RuleKind kind,
+                              const Eigen::Ref<const Eigen::VectorXd>& u, Eigen::VectorXd& f,
+                              const ElementOptions& options,
+                              const Eigen::VectorXd* nodal_dT) const {
+  check_displacements(g, *this, u);
+  // Linear elasticity: f = K u - f_th is exactly the integral of B^T sigma (plus stabilisation
+  // forces) with the condensed incompatible modes and B-bar included.
+  Eigen::MatrixXd K;
+  stiffness(g, material, kind, K, options);
+  f.noalias() = K * u;
+  if (nodal_dT) {
+    Eigen::VectorXd f_th;
+    thermal_load(g, material, kind, *nodal_dT, f_th, options);
+    f -= f_th;
+  }
 }
 
 void TElement::pressure_load(const ElementGeometry& g, int face, double p,
@@ -178,27 +229,34 @@ void TElement::nodal_areas(const ElementGeometry& g, int face, Eigen::VectorXd& 
 
 void TElement::strains_stresses(const ElementGeometry& g, const Material& material, RuleKind kind,
                                 const Eigen::Ref<const Eigen::VectorXd>& u, Eigen::MatrixXd& strain,
-                                Eigen::MatrixXd& stress) const {
+                                Eigen::MatrixXd& stress, const ElementOptions& options,
+                                const Eigen::VectorXd* nodal_dT) const {
   check_geometry(g, *this);
-  const int n = node_count();
-  if (u.size() != 3 * n)
-    throw std::invalid_argument(element_label(g, *this) + ": displacement vector has " +
-                                std::to_string(u.size()) + " entries, expected " +
-                                std::to_string(3 * n));
+  check_displacements(g, *this, u);
   Matrix6d D;
   dee(material, D);
   const IntegrationRule r = rule(kind);
-  Eigen::VectorXd N(n);
-  Eigen::MatrixXd dN(n, 3), dNdx(n, 3), B(6, 3 * n);
+  const Eigen::VectorXd alpha_dT = element_detail::nodal_thermal_strain(material, *this, nodal_dT);
+  // Incompatible modes from the element equilibrium of the internal dofs: a = Kaa^-1 (fa - Kua^T
+  // u).
+  Eigen::VectorXd modes;
+  if (incompatible_mode_count() > 0) {
+    element_detail::ElementSystem system;
+    element_detail::integrate_system(*this, g, D, r, options, alpha_dT.size() ? &alpha_dT : nullptr,
+                                     system);
+    modes = Eigen::LDLT<Eigen::MatrixXd>(system.Kaa).solve(system.fa - system.Kua.transpose() * u);
+  }
+  element_detail::PointOperators op(*this, g, r, options);
   strain.resize(r.size(), 6);
   stress.resize(r.size(), 6);
-  Eigen::Matrix<double, 6, 1> engineering;
+  Eigen::Matrix<double, 6, 1> engineering, mechanical;
   for (int k = 0; k < r.size(); ++k) {
-    der(r.points[k], N, dN);
-    jacobian(g, dN, dNdx, k + 1);
-    bee(dNdx, B);
-    engineering.noalias() = B * u;
-    stress.row(k).noalias() = (D * engineering).transpose();
+    op.evaluate(k);
+    engineering.noalias() = op.B() * u;
+    if (modes.size() > 0) engineering.noalias() += op.G() * modes;
+    mechanical = engineering;
+    if (alpha_dT.size() > 0) mechanical.head<3>().array() -= op.N().dot(alpha_dT);
+    stress.row(k).noalias() = (D * mechanical).transpose();
     strain.row(k) = engineering.transpose();
     strain.row(k).tail<3>() *= 0.5;  // report tensor shear components eps_ij = gamma_ij / 2
   }

@@ -3,14 +3,23 @@
 #include <memory>
 
 #include "styk/elements/c3d20.hpp"
+#include "styk/elements/c3d20r.hpp"
+#include "styk/elements/c3d27.hpp"
 #include "styk/elements/c3d8.hpp"
+#include "styk/elements/c3d8i.hpp"
+#include "styk/elements/c3d8r.hpp"
 
 namespace styk {
 
 void register_builtin_elements(ElementRegistry& registry) {
   const std::string source = "built-in";
   registry.add(std::make_unique<C3D8>(), source);
+  registry.add(std::make_unique<C3D8R>(), source);
+  registry.add(std::make_unique<C3D8R>(0.0), source);  // C3D8R0: no hourglass control (demo)
+  registry.add(std::make_unique<C3D8I>(), source);
   registry.add(std::make_unique<C3D20>(), source);
+  registry.add(std::make_unique<C3D20R>(), source);
+  registry.add(std::make_unique<C3D27>(), source);
 }
 
 }  // namespace styk

@@ -37,8 +37,9 @@ void assemble_stiffness(const Model& model, const PreparedModel& prepared, Stiff
       for (int i = begin; i < end; ++i) {
         const int e = colouring.order[first + i];
         element_geometry(model, e, s.geometry);
+        const ElementOptions options{model.sections[model.elements[e].section].selective_volumetric};
         prepared.formulation[e]->stiffness(s.geometry, *prepared.material[e], RuleKind::Full,
-                                           s.Ke);
+                                           s.Ke, options);
         const int n = model.elements[e].node_count;
         const int* nodes = model.element_nodes(e);
         s.active.resize(n);

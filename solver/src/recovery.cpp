@@ -9,8 +9,8 @@ namespace {
 // Scratch of one worker, sized on first use and reused for every element.
 struct RecoveryScratch {
   ElementGeometry geometry;
-  Eigen::VectorXd ue, fe, N;
-  Eigen::MatrixXd strain, stress, dN, dNdx, B;
+  Eigen::VectorXd ue, fe;
+  Eigen::MatrixXd strain, stress;
   std::vector<double> reaction;  // internal force on the compact prescribed dofs
 };
 
@@ -33,19 +33,6 @@ void recover_increment(const Model& model, const PreparedModel& prepared,
   for (std::size_t k = 0; k < prescribed.size(); ++k)
     reaction_index[prescribed[k]] = static_cast<int>(k);
 
-  // The full rule of each formulation, asked once (few formulations: a linear search is fine).
-  std::vector<std::pair<const TElement*, IntegrationRule>> rules;
-  for (const TElement* formulation : prepared.formulation) {
-    bool known = false;
-    for (const auto& entry : rules) known = known || entry.first == formulation;
-    if (!known) rules.emplace_back(formulation, formulation->rule(RuleKind::Full));
-  }
-  auto rule_of = [&rules](const TElement* formulation) -> const IntegrationRule& {
-    for (const auto& entry : rules)
-      if (entry.first == formulation) return entry.second;
-    return rules.front().second;  // unreachable: every formulation was added above
-  };
-
   std::vector<RecoveryScratch> scratch(threads);
   for (RecoveryScratch& s : scratch) s.reaction.assign(prescribed.size(), 0.0);
   parallel_for(model.element_count(), threads, 16, [&](int begin, int end, int worker) {
@@ -64,8 +51,9 @@ void recover_increment(const Model& model, const PreparedModel& prepared,
           touches_prescribed = touches_prescribed || reaction_index[3 * a + d] >= 0;
         }
       }
+      const ElementOptions options{model.sections[model.elements[e].section].selective_volumetric};
       element.strains_stresses(s.geometry, *prepared.material[e], RuleKind::Full, s.ue, s.strain,
-                               s.stress);
+                               s.stress, options);
       const int first = prepared.ip_offset[e];
       for (int p = 0; p < s.stress.rows(); ++p)
         for (int c = 0; c < 6; ++c) {
@@ -74,19 +62,9 @@ void recover_increment(const Model& model, const PreparedModel& prepared,
         }
       if (!touches_prescribed) continue;
 
-      // Internal force f_e = sum_p w_p det J_p B_p^T sigma_p with the stresses just recovered.
-      const IntegrationRule& rule = rule_of(&element);
-      s.N.resize(n);
-      s.dN.resize(n, 3);
-      s.dNdx.resize(n, 3);
-      s.B.resize(6, 3 * n);
-      s.fe.setZero(3 * n);
-      for (int p = 0; p < rule.size(); ++p) {
-        element.der(rule.points[p], s.N, s.dN);
-        const double det = element.jacobian(s.geometry, s.dN, s.dNdx, p + 1);
-        element.bee(s.dNdx, s.B);
-        s.fe.noalias() += (rule.weights[p] * det) * (s.B.transpose() * s.stress.row(p).transpose());
-      }
+      // Internal force of the element (B-bar, incompatible modes and hourglass forces included).
+      element.internal_force(s.geometry, *prepared.material[e], RuleKind::Full, s.ue, s.fe,
+                             options);
       for (int k = 0; k < n; ++k) {
         const int a = prepared.active_of_node[nodes[k]];
         for (int d = 0; d < 3; ++d) {

@@ -6,10 +6,11 @@
 namespace styk {
 namespace {
 
-TEST(BuiltinElements, RegistersC3D8AndC3D20AsBuiltIn) {
+TEST(BuiltinElements, RegistersTheSolidFamilyAsBuiltIn) {
   ElementRegistry registry;
   register_builtin_elements(registry);
-  EXPECT_EQ(registry.names(), (std::vector<std::string>{"C3D20", "C3D8"}));
+  EXPECT_EQ(registry.names(), (std::vector<std::string>{"C3D20", "C3D20R", "C3D27", "C3D8", "C3D8I",
+                                                        "C3D8R", "C3D8R0"}));
   const ElementRegistry::Entry* entry = registry.entry("c3d20");
   ASSERT_NE(entry, nullptr);
   EXPECT_EQ(entry->source, "built-in");
@@ -21,8 +22,17 @@ TEST(BuiltinElements, RegistersC3D8AndC3D20AsBuiltIn) {
   EXPECT_EQ(c3d8->rule(RuleKind::Full).size(), 8);
   EXPECT_EQ(c3d8->face_rule_order(), 2);
   EXPECT_FALSE(c3d8->description().empty());
-  // C3D8R has a rule but no registered type until it gets hourglass control.
-  EXPECT_EQ(registry.find("C3D8R"), nullptr);
+  for (const std::string& name : registry.names()) {
+    const ElementRegistry::Entry* e = registry.entry(name);
+    ASSERT_NE(e, nullptr);
+    EXPECT_EQ(e->source, "built-in");
+    EXPECT_EQ(e->element->name(), name);
+    EXPECT_FALSE(e->element->description().empty()) << name;
+  }
+  EXPECT_EQ(registry.find("C3D8R")->rule(RuleKind::Full).size(), 1);
+  EXPECT_EQ(registry.find("C3D20R")->rule(RuleKind::Full).size(), 8);
+  EXPECT_EQ(registry.find("C3D27")->node_count(), 27);
+  EXPECT_EQ(registry.find("C3D8I")->incompatible_mode_count(), 9);
 }
 
 TEST(BuiltinElements, RegisteringTwiceThrowsNamingTheSources) {

@@ -2,9 +2,11 @@
 // material, and small numeric helpers. Deterministic: every random geometry comes from a seed.
 #pragma once
 
+#include <cmath>
 #include <random>
 
 #include <Eigen/Core>
+#include <Eigen/Eigenvalues>
 
 #include "styk/core/element.hpp"
 
@@ -42,6 +44,27 @@ inline Material unit_material() {
   m.poisson = 0.3;
   m.where = SourceLoc{"test.inp", 3};
   return m;
+}
+
+// Number of zero eigenvalues of a symmetric K, relative tolerance 1e-9 of the largest
+// (elements-ref section 7).
+inline int zero_eigenvalue_count(const Eigen::MatrixXd& K) {
+  Eigen::SelfAdjointEigenSolver<Eigen::MatrixXd> solver(K, Eigen::EigenvaluesOnly);
+  const Eigen::VectorXd lambda = solver.eigenvalues();
+  const double largest = lambda.cwiseAbs().maxCoeff();
+  int zeros = 0;
+  for (Eigen::Index i = 0; i < lambda.size(); ++i)
+    if (std::abs(lambda(i)) < 1e-9 * largest) ++zeros;
+  return zeros;
+}
+
+// Nodal values (3n) of the linear field u = c + G x on the element's nodes.
+inline Eigen::VectorXd linear_field(const ElementGeometry& g, const Eigen::Matrix3d& G,
+                                    const Eigen::Vector3d& c) {
+  Eigen::VectorXd u(3 * g.X.rows());
+  for (Eigen::Index i = 0; i < g.X.rows(); ++i)
+    u.segment<3>(3 * i) = c + G * g.X.row(i).transpose();
+  return u;
 }
 
 }  // namespace styk::test

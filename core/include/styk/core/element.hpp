@@ -3,9 +3,18 @@
 // A derived element supplies only what differs: its node layout and faces, DER (shape functions
 // and natural derivatives) and its integration rules; BEE (strain-displacement) and DEE
 // (constitutive matrix) have standard defaults. The base class does the rest once (template
-// methods): Jacobian and its checks, stiffness, consistent face loads, strains and stresses at the
-// integration points. Formulations are stateless; one instance per type lives in the
-// ElementRegistry and serves every element of that type.
+// methods): Jacobian and its checks, stiffness, thermal load, consistent face loads, strains and
+// stresses at the integration points. Formulations are stateless; one instance per type lives in
+// the ElementRegistry and serves every element of that type.
+//
+// Formulations that are more than "B^T D B at the Gauss points" customise the template methods
+// through three hooks instead of replacing them, so every template method (stiffness, thermal
+// load, stresses, internal force) stays consistent with the others:
+// - incompatible_mode_count() / incompatible_bee(): internal (incompatible-mode) strain fields,
+//   condensed statically inside the element (C3D8I);
+// - add_stabilisation(): a stiffness added after integration (hourglass control of C3D8R);
+// - the section's ElementOptions::selective_volumetric switches on mean-dilatation B-bar for any
+//   element (the volumetric strain is replaced by its element average).
 //
 // Conventions
 // - Natural coordinates (xi, eta, zeta) in [-1, 1]^3.
@@ -28,7 +37,17 @@ namespace styk {
 
 using Matrix6d = Eigen::Matrix<double, 6, 6>;
 
+// Which of the element's rules to integrate with. Full is the element's standard rule, what the
+// solver uses: for the reduced-integration types (C3D8R, C3D20R) both kinds are the reduced rule,
+// because the element name fixes it.
 enum class RuleKind { Full, Reduced };
+
+// Per-section switches of the formulation (from *SOLID SECTION; passed by the solver).
+struct ElementOptions {
+  // Mean-dilatation B-bar (Styk-only TECHNIQUE=SELECTIVE): the volumetric part of B is replaced
+  // by its average over the element, against volumetric locking as nu -> 0.5.
+  bool selective_volumetric = false;
+};
 
 struct IntegrationRule {
   std::string label;                    // e.g. "3x3x3 Gauss"
@@ -80,15 +99,42 @@ class TElement {
   // --- DEE: constitutive matrix from the material (isotropic linear elastic by default) --------
   virtual void dee(const Material& material, Matrix6d& D) const;
 
+  // --- formulation hooks (defaults: none) ------------------------------------------------------
+  // Number of internal incompatible-mode parameters (condensed statically inside the element).
+  virtual int incompatible_mode_count() const { return 0; }
+  // Their strain operator G (6 x incompatible_mode_count(), engineering shear) at natural point
+  // xi of the element `g`, where det J = detJ. Must satisfy the patch test: integral of G dV = 0.
+  virtual void incompatible_bee(const ElementGeometry& g, const Vec3& xi, double detJ,
+                                Eigen::Ref<Eigen::MatrixXd> G) const;
+  // Adds a stabilisation stiffness (e.g. hourglass control) to the integrated K (3n x 3n). It must
+  // vanish on every affine displacement field so that the patch test still holds.
+  virtual void add_stabilisation(const ElementGeometry& g, const Matrix6d& D,
+                                 const ElementOptions& options, Eigen::MatrixXd& K) const;
+
   // --- template methods ------------------------------------------------------------------------
   // Cartesian derivatives dNdx (n x 3) and det J at xi. Throws InputError naming the element and
   // the point when det J <= 0 (inverted or degenerate element); `point` is 1-based for messages.
   double jacobian(const ElementGeometry& g, const Eigen::Ref<const Eigen::MatrixXd>& dN,
                   Eigen::Ref<Eigen::MatrixXd> dNdx, int point) const;
 
-  // Stiffness K (3n x 3n) with the given rule.
+  // Stiffness K (3n x 3n) with the given rule (incompatible modes condensed, stabilisation added).
   void stiffness(const ElementGeometry& g, const Material& material, RuleKind kind,
-                 Eigen::MatrixXd& K) const;
+                 Eigen::MatrixXd& K, const ElementOptions& options = {}) const;
+
+  // Thermal load f (3n) = integral of B^T D eps_th dV, eps_th = alpha dT (1, 1, 1, 0, 0, 0), with
+  // dT interpolated from the nodal temperature changes `nodal_dT` (n; T - T_initial, so the
+  // constant coefficient alpha = *EXPANSION needs no reference temperature). A material without
+  // *EXPANSION is an InputError unless every dT is zero.
+  void thermal_load(const ElementGeometry& g, const Material& material, RuleKind kind,
+                    const Eigen::Ref<const Eigen::VectorXd>& nodal_dT, Eigen::VectorXd& f,
+                    const ElementOptions& options = {}) const;
+
+  // Internal force f (3n) = integral of B^T sigma dV (+ stabilisation forces) of the element in
+  // the displaced state u (3n), = K u - f_thermal; what reactions are made of.
+  void internal_force(const ElementGeometry& g, const Material& material, RuleKind kind,
+                      const Eigen::Ref<const Eigen::VectorXd>& u, Eigen::VectorXd& f,
+                      const ElementOptions& options = {},
+                      const Eigen::VectorXd* nodal_dT = nullptr) const;
 
   // Consistent nodal forces (3n) of a uniform pressure p on face `face` (0-based: 0 = S1);
   // positive p pushes into the element.
@@ -99,10 +145,13 @@ class TElement {
   void nodal_areas(const ElementGeometry& g, int face, Eigen::VectorXd& area) const;
 
   // Strains (tensor components) and stresses at the integration points of `kind`, one row each
-  // (n_points x 6), from the element displacement vector u (3n).
+  // (n_points x 6), from the element displacement vector u (3n). With nodal temperature changes
+  // (`nodal_dT`, n, may be null) the stress is D (eps - eps_th); the strain reported stays the
+  // total strain eps. Incompatible modes are recovered from u before the strains are formed.
   void strains_stresses(const ElementGeometry& g, const Material& material, RuleKind kind,
                         const Eigen::Ref<const Eigen::VectorXd>& u, Eigen::MatrixXd& strain,
-                        Eigen::MatrixXd& stress) const;
+                        Eigen::MatrixXd& stress, const ElementOptions& options = {},
+                        const Eigen::VectorXd* nodal_dT = nullptr) const;
 };
 
 // Gauss-Legendre points and weights on [-1, 1], n = 1..6.

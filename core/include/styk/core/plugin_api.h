@@ -32,8 +32,10 @@
 extern "C" {
 #endif
 
-/* The version of the plug-in ABI this header describes. */
-#define STYK_PLUGIN_ABI_VERSION 1u
+/* The version of the plug-in ABI this header describes. History: 1 = first release; 2 = TElement
+ * gained ElementOptions on its template methods, thermal_load/internal_force, and the
+ * incompatible-mode and stabilisation hooks (new virtual functions). */
+#define STYK_PLUGIN_ABI_VERSION 2u
 
 /* The name of the entry point, for dlsym. */
 #define STYK_PLUGIN_ENTRY_NAME "styk_plugin_register"

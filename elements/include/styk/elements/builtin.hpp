@@ -1,13 +1,14 @@
 // The element formulations built into Styk. They register through the same ElementRegistry API as
-// the plug-ins, so adding a type (C3D8R, C3D8I, C3D20R, C3D27, ...) is a new class plus one line in
-// register_builtin_elements(), or a plug-in, never an edit of core/.
+// the plug-ins, so adding a type is a new class plus one line in register_builtin_elements(), or a
+// plug-in, never an edit of core/.
 #pragma once
 
 #include "styk/core/element_registry.hpp"
 
 namespace styk {
 
-// Registers every built-in element type (currently C3D8, C3D20) with source "built-in".
+// Registers every built-in element type (C3D8, C3D8R, C3D8R0, C3D8I, C3D20, C3D20R, C3D27) with
+// source "built-in".
 // Throws std::invalid_argument if one of the names is already registered.
 void register_builtin_elements(ElementRegistry& registry);
 

@@ -1,7 +1,6 @@
-// C3D8: 8-node trilinear hexahedron. Full integration 2x2x2 Gauss; the 1-point reduced rule
-// exists (RuleKind::Reduced) for a future hourglass-controlled C3D8R, which is not registered yet
-// because 1-point integration without stabilisation has 12 spurious zero-energy modes.
-// Fully integrated C3D8 locks in bending (shear locking, SPEC section 2.1).
+// C3D8: 8-node trilinear hexahedron. Full integration 2x2x2 Gauss; reduced 1-point (12 spurious
+// zero-energy modes without stabilisation: C3D8R adds hourglass control, C3D8I incompatible
+// modes). Fully integrated C3D8 locks in bending (shear locking, SPEC section 2.1).
 #pragma once
 
 #include <string>
