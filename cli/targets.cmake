@@ -11,9 +11,10 @@ add_executable(styk
   src/registry_setup.cpp
   src/output_paths.cpp
   src/command_mesh.cpp
+  src/command_verify.cpp
 )
 target_include_directories(styk PRIVATE src)
-target_link_libraries(styk PRIVATE styk_solver styk_inp styk_io styk_elements styk_mesher CLI11::CLI11 fmt::fmt
+target_link_libraries(styk PRIVATE styk_solver styk_inp styk_io styk_elements styk_mesher styk_verify CLI11::CLI11 fmt::fmt
   styk_warnings)
 # `styk render` needs the OSMesa renderer (STYK_OSMESA, on by default).
 if(TARGET styk_render_osmesa)

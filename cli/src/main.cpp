@@ -7,6 +7,7 @@
 #include "commands.hpp"
 #include "exit_codes.hpp"
 #include "mesh_args.hpp"
+#include "verify_args.hpp"
 #ifdef STYK_WITH_RENDER
 #include "render_args.hpp"
 #endif
@@ -78,6 +79,15 @@ int main(int argc, char** argv) {
   render_cmd->add_option("--animate", render.animate, "Write N frames of the deformation from 0 to the scale")->check(CLI::PositiveNumber);
 #endif
 
+  VerifyArgs verify;
+  CLI::App* verify_cmd = app.add_subcommand(
+      "verify", "Run the SPEC §3.1 element tests for every element; print or write Tab 3.13");
+  verify_cmd->add_flag("--list", verify.list, "List the test cases (SPEC section, builder, measure)");
+  verify_cmd->add_option("--case", verify.case_name, "Run one case (see --list) for every element");
+  verify_cmd->add_option("--table", verify.table, "Regenerate a table: 3.13 (SPEC §3.1.9 grades)");
+  verify_cmd->add_option("--write", verify.write_path,
+                         "With --table: replace the marked section of this Markdown file");
+
   app.add_subcommand("elements", "List the element types available, with rules and source");
 
   try {
@@ -100,6 +110,7 @@ int main(int argc, char** argv) {
       mesh.params = mesh_cmd->remaining();
       return mesh_command(mesh);
     }
+    if (*verify_cmd) return verify_command(verify);
     return elements_command();
   });
 }

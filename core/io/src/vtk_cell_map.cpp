@@ -38,7 +38,7 @@ std::map<std::string, VtkCellMapping> build_table() {
   auto add = [&](std::initializer_list<const char*> names, const VtkCellMapping& m) {
     for (const char* name : names) table[name] = m;
   };
-  add({"C3D8", "C3D8R", "C3D8I", "C3D8H", "DC3D8"}, first_nodes(kHexahedron, 8));
+  add({"C3D8", "C3D8R", "C3D8I", "C3D8R0", "C3D8H", "DC3D8"}, first_nodes(kHexahedron, 8));
   add({"C3D20", "C3D20R", "C3D20H", "DC3D20"}, first_nodes(kQuadraticHexahedron, 20));
   // Drawn with a subset of their nodes (their values at the other nodes stay in the point data):
   // C3D27 and C3D21 start with the 20 C3D20 nodes; C3D14 and C3D28 start with the 8 corners.
