@@ -53,19 +53,6 @@ LocalAxes axes_from(const DataLine& line, CoordinateSystem system) {
   return axes;
 }
 
-// A displacement degree of freedom 1..3; 11 (temperature) is named as not supported.
-int displacement_dof(const DataLine& line, std::size_t index, const std::string& what) {
-  const std::int64_t dof = integer_field(line, index, what);
-  if (dof == 11)
-    throw InputError(line.where, what +
-                                     " 11 (temperature) is not supported yet; Styk reads dofs "
-                                     "1..3 (ux, uy, uz)");
-  if (dof < 1 || dof > 3)
-    throw InputError(line.where, what + " " + std::to_string(dof) +
-                                     " is out of range; Styk reads dofs 1..3 (ux, uy, uz)");
-  return static_cast<int>(dof);
-}
-
 constexpr const char* kAxesLayout = "a1, a2, a3, b1, b2, b3";
 
 }  // namespace

@@ -69,6 +69,19 @@ std::int64_t integer_field(const DataLine& line, std::size_t index, const std::s
   return value;
 }
 
+int displacement_dof(const DataLine& line, std::size_t index, const std::string& what) {
+  const std::int64_t dof = integer_field(line, index, what);
+  if (dof == 11)
+    throw InputError(line.where, what +
+                                     " 11 (temperature) is not supported yet; Styk reads dofs "
+                                     "1..3 (ux, uy, uz)");
+  if (dof < 1 || dof > 3)
+    throw InputError(line.where, what + " " + std::to_string(dof) +
+                                     " is out of range; Styk reads dofs 1..3 (ux, uy, uz)");
+  return static_cast<int>(dof);
+}
+
+
 Id id_field(const DataLine& line, std::size_t index, const std::string& what) {
   const std::int64_t value = integer_field(line, index, what);
   if (value < 1)

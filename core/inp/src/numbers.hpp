@@ -12,6 +12,8 @@ namespace styk::inp {
 // Field `index` (0-based) of `line`; `what` names it in messages ("x coordinate", "node id").
 double real_field(const DataLine& line, std::size_t index, const std::string& what);
 std::int64_t integer_field(const DataLine& line, std::size_t index, const std::string& what);
+// A displacement degree of freedom 1..3; 11 (temperature) is named as not supported.
+int displacement_dof(const DataLine& line, std::size_t index, const std::string& what);
 // A user id: an integer >= 1.
 Id id_field(const DataLine& line, std::size_t index, const std::string& what);
 

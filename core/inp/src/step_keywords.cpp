@@ -21,19 +21,6 @@ bool op_new(const KeywordLine& kw, bool in_step) {
   return true;
 }
 
-// A displacement degree of freedom (1..3).
-int dof_field(const DataLine& line, std::size_t index, const std::string& what) {
-  const std::int64_t dof = integer_field(line, index, what);
-  if (dof == 11)
-    throw InputError(line.where, what +
-                                     " 11 (temperature) is not supported yet; Styk reads dofs "
-                                     "1..3 (ux, uy, uz)");
-  if (dof < 1 || dof > 3)
-    throw InputError(line.where, what + " " + std::to_string(dof) +
-                                     " is out of range; Styk reads dofs 1..3 (ux, uy, uz)");
-  return static_cast<int>(dof);
-}
-
 bool is_integer_text(const std::string& text) { return looks_like_integer(text); }
 
 LinearSolverKind solver_kind(const Parameter& p, const SourceLoc& where) {
@@ -128,9 +115,9 @@ void DeckReader::on_boundary(const KeywordLine& kw) {
                            " (named boundary types such as ENCASTRE are not supported; "
                            "give the dofs, e.g. 'SET, 1, 3')");
     const std::vector<int> nodes = nodes_of(*line, 0, "node or node set");
-    const int first = dof_field(*line, 1, "first dof");
+    const int first = displacement_dof(*line, 1, "first dof");
     const bool has_last = line->fields.size() > 2 && !line->fields[2].empty();
-    const int last = has_last ? dof_field(*line, 2, "last dof") : first;
+    const int last = has_last ? displacement_dof(*line, 2, "last dof") : first;
     if (last < first)
       throw InputError(line->where, "last dof " + std::to_string(last) +
                                         " is smaller than first dof " + std::to_string(first));
@@ -147,7 +134,7 @@ void DeckReader::on_cload(const KeywordLine& kw) {
   while (std::optional<DataLine> line = next_data_line()) {
     expect_fields(*line, 3, 3, "node or node set, dof, value");
     const std::vector<int> nodes = nodes_of(*line, 0, "node or node set");
-    const int dof = dof_field(*line, 1, "dof");
+    const int dof = displacement_dof(*line, 1, "dof");
     const double value = real_field(*line, 2, "value");
     for (int node : nodes) step.cloads.push_back({node, dof, value, line->where});
   }
