@@ -10,10 +10,10 @@ packages=(
   petsc-dev
   libhdf5-dev libcli11-dev libfmt-dev nlohmann-json3-dev
   libgtest-dev
-  libosmesa6-dev libgl-dev libglx-dev libpng-dev
+  libosmesa6-dev libgl-dev libglx-dev libpng-dev qt6-base-dev libqt6opengl6-dev qt6-charts-dev
 )
 if [[ "${1:-}" == "--test" ]]; then
-  packages+=(calculix-ccx time python3)
+  packages+=(calculix-ccx time python3 xvfb xauth)
 fi
 
 missing=()

@@ -1,0 +1,97 @@
+#include "session/document.hpp"
+
+#include <cstdio>
+#include <fstream>
+#include <stdexcept>
+
+#include "styk/inp/reader.hpp"
+#include "styk/inp/writer.hpp"
+#include "styk/io/results_file.hpp"
+
+namespace styk::gui {
+
+Document::Document(const ElementRegistry& registry) : registry_(registry) { new_model(); }
+
+void Document::new_model() {
+  model_ = Model{};
+  results_.reset();
+  results_path_.clear();
+  path_.clear();
+  history_.clear();
+  changed(false);
+}
+
+void Document::open_inp(const std::string& path) {
+  Model model = read_inp(path, registry_);
+  model_ = std::move(model);
+  results_.reset();
+  results_path_.clear();
+  path_ = path;
+  history_.clear();
+  changed(false);
+}
+
+void Document::open_results(const std::string& path) {
+  ResultsFileContents contents = read_results_file(path);
+  model_ = std::move(contents.model);
+  results_ = std::move(contents.results);
+  results_path_ = path;
+  path_ = path;
+  history_.clear();
+  changed(true);
+}
+
+void Document::save_inp(const std::string& path) {
+  const std::string temporary = path + ".tmp";
+  {
+    std::ofstream out(temporary);
+    if (!out) throw std::runtime_error("cannot write " + temporary);
+    write_inp(model_, out);
+    out.flush();
+    if (!out) throw std::runtime_error("error while writing " + temporary);
+  }
+  if (std::rename(temporary.c_str(), path.c_str()) != 0) {
+    std::remove(temporary.c_str());
+    throw std::runtime_error("cannot replace " + path);
+  }
+  path_ = path;
+  history_.set_clean();
+}
+
+void Document::attach_results(Results results, std::string results_path) {
+  for (const IncrementResult& inc : results.increments)
+    if (inc.U.size() != model_.coords.size())
+      throw std::runtime_error("the results hold " + std::to_string(inc.U.size()) +
+                               " nodes, the model " + std::to_string(model_.coords.size()));
+  results_ = std::move(results);
+  results_path_ = std::move(results_path);
+  changed(true);
+}
+
+void Document::apply(std::unique_ptr<Command> command) {
+  history_.push(model_, std::move(command));
+  changed(false);
+}
+
+void Document::undo() {
+  if (!history_.can_undo()) return;
+  history_.undo(model_);
+  changed(false);
+}
+
+void Document::redo() {
+  if (!history_.can_redo()) return;
+  history_.redo(model_);
+  changed(false);
+}
+
+void Document::changed(bool keep_results) {
+  if (!keep_results) {
+    results_.reset();
+    results_path_.clear();
+  }
+  layers_.rebuild(model_);
+  ++revision_;
+}
+
+}  // namespace styk::gui

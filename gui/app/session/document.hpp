@@ -1,0 +1,66 @@
+// The session's document: the Model being edited, optionally the results of one analysis of it,
+// the layers, and the edit history. No Qt here, so it is tested without a display; the main window
+// owns one Document and redraws when revision() changes.
+#pragma once
+
+#include <memory>
+#include <optional>
+#include <string>
+
+#include "session/commands.hpp"
+#include "session/layers.hpp"
+#include "styk/core/element_registry.hpp"
+#include "styk/core/model.hpp"
+#include "styk/core/results.hpp"
+
+namespace styk::gui {
+
+class Document {
+ public:
+  // The registry must outlive the document (element types for reading decks and drawing).
+  explicit Document(const ElementRegistry& registry);
+
+  void new_model();
+  // Throws InputError ("file:line: message") and leaves the document unchanged on failure.
+  void open_inp(const std::string& path);
+  // A .styk.h5 file: its mesh becomes the model (no materials or steps) and its results attach.
+  // Throws std::runtime_error on failure, document unchanged.
+  void open_results(const std::string& path);
+  // Writes the model as a deck (atomically: a temporary file renamed over `path`).
+  void save_inp(const std::string& path);
+  // Attaches the results of an analysis of the current model (from a solve); throws
+  // std::runtime_error when their node count does not match the model.
+  void attach_results(Results results, std::string results_path);
+
+  // Every edit goes through here (undoable). Stale results are dropped: they belong to the
+  // model before the edit.
+  void apply(std::unique_ptr<Command> command);
+  void undo();
+  void redo();
+  const UndoStack& history() const { return history_; }
+
+  const Model& model() const { return model_; }
+  const Results* results() const { return results_ ? &*results_ : nullptr; }
+  const std::string& results_path() const { return results_path_; }
+  const ElementRegistry& registry() const { return registry_; }
+  LayerTable& layers() { return layers_; }
+  const LayerTable& layers() const { return layers_; }
+  const std::string& path() const { return path_; }  // the deck (or results file) opened/saved
+  bool is_modified() const { return !history_.is_clean(); }
+  // Increases with every change of the model or the results.
+  long revision() const { return revision_; }
+
+ private:
+  void changed(bool keep_results);
+
+  const ElementRegistry& registry_;
+  Model model_;
+  std::optional<Results> results_;
+  std::string results_path_;
+  LayerTable layers_;
+  UndoStack history_;
+  std::string path_;
+  long revision_ = 0;
+};
+
+}  // namespace styk::gui

@@ -1,0 +1,316 @@
+#include "session/validation.hpp"
+
+#include <algorithm>
+#include <cctype>
+#include <cerrno>
+#include <cmath>
+#include <cstdlib>
+#include <stdexcept>
+
+#include "styk/mesher/block_mesh.hpp"
+#include "styk/mesher/convert.hpp"
+#include "styk/mesher/geometry_maps.hpp"
+
+namespace styk::gui {
+namespace {
+
+[[noreturn]] void refuse(const std::string& message) { throw InputError({}, message); }
+
+const std::array<std::string, 6> kSides{"XMIN", "XMAX", "YMIN", "YMAX", "ZMIN", "ZMAX"};
+
+// Set and material names go into the deck unquoted: a letter, then letters, digits, _ - .
+void check_name(const std::string& name, const std::string& what) {
+  if (name.empty()) refuse(what + " needs a name");
+  if (!std::isalpha(static_cast<unsigned char>(name[0])))
+    refuse(what + " name '" + name + "' must start with a letter");
+  for (char c : name)
+    if (!std::isalnum(static_cast<unsigned char>(c)) && c != '_' && c != '-' && c != '.')
+      refuse(what + " name '" + name + "' may hold only letters, digits, _ - and .");
+  if (name.size() > 80) refuse(what + " name '" + name + "' is longer than 80 characters");
+}
+
+const NodeSet& existing_nset(const Model& model, const std::string& name) {
+  if (name.empty()) refuse("choose a node set");
+  const NodeSet* set = model.find_nset(name);
+  if (!set) refuse("no node set " + to_upper(name) + " in the model");
+  if (set->nodes.empty()) refuse("node set " + set->name + " is empty");
+  return *set;
+}
+
+void check_step(const Model& model, int step, bool model_level_allowed) {
+  if (step < 0 && model_level_allowed) return;
+  if (model.steps.empty()) refuse("the model has no step: add a step first");
+  if (step < 0 || step >= static_cast<int>(model.steps.size()))
+    refuse("no step " + std::to_string(step + 1) + "; the model has " +
+           std::to_string(model.steps.size()));
+}
+
+void check_dof(int dof, const std::string& label) {
+  if (dof < 1 || dof > 3) refuse(label + " must be 1, 2 or 3 (x, y, z), not " + std::to_string(dof));
+}
+
+void check_finite(double value, const std::string& label) {
+  if (!std::isfinite(value)) refuse(label + " must be a finite number");
+}
+
+std::vector<Vec3> block_corners(const BlockInput& in) {
+  if (in.use_corners) return {in.corners.begin(), in.corners.end()};
+  const Vec3& o = in.origin;
+  const Vec3 e{o[0] + in.size[0], o[1] + in.size[1], o[2] + in.size[2]};
+  return {{o[0], o[1], o[2]}, {e[0], o[1], o[2]}, {e[0], e[1], o[2]}, {o[0], e[1], o[2]},
+          {o[0], o[1], e[2]}, {e[0], o[1], e[2]}, {e[0], e[1], e[2]}, {o[0], e[1], e[2]}};
+}
+
+// Appends `part` (ids 1..n from to_model) to `model` with ids after the largest existing ones.
+void append_part(Model& model, const Model& part) {
+  Id node_offset = 0, element_offset = 0;
+  for (Id id : model.node_ids) node_offset = std::max(node_offset, id);
+  for (const Element& e : model.elements) element_offset = std::max(element_offset, e.id);
+  const int first_node = model.node_count();
+  const int first_element = model.element_count();
+  for (int n = 0; n < part.node_count(); ++n)
+    model.add_node(node_offset + part.node_ids[n], part.coords[n], {});
+  for (int e = 0; e < part.element_count(); ++e) {
+    const Element& el = part.elements[e];
+    std::vector<int> nodes(part.element_nodes(e), part.element_nodes(e) + el.node_count);
+    for (int& n : nodes) n += first_node;
+    model.add_element(element_offset + el.id, el.type, nodes, {});
+  }
+  for (const auto& [name, set] : part.nsets) {
+    NodeSet copy = set;
+    for (int& n : copy.nodes) n += first_node;
+    model.nsets[name] = std::move(copy);
+  }
+  for (const auto& [name, set] : part.elsets) {
+    ElementSet copy = set;
+    for (int& e : copy.elements) e += first_element;
+    model.elsets[name] = std::move(copy);
+  }
+}
+
+}  // namespace
+
+double parse_real(const std::string& text, const std::string& label) {
+  errno = 0;
+  char* end = nullptr;
+  const double value = std::strtod(text.c_str(), &end);
+  while (end && std::isspace(static_cast<unsigned char>(*end))) ++end;
+  if (text.empty() || end == text.c_str() || *end != '\0' || errno == ERANGE ||
+      !std::isfinite(value))
+    refuse(label + ": '" + text + "' is not a number");
+  return value;
+}
+
+int parse_integer(const std::string& text, const std::string& label) {
+  errno = 0;
+  char* end = nullptr;
+  const long value = std::strtol(text.c_str(), &end, 10);
+  while (end && std::isspace(static_cast<unsigned char>(*end))) ++end;
+  if (text.empty() || end == text.c_str() || *end != '\0' || errno == ERANGE ||
+      value < -1000000000L || value > 1000000000L)
+    refuse(label + ": '" + text + "' is not a whole number");
+  return static_cast<int>(value);
+}
+
+void check_block(const BlockInput& in, const Model& model, const ElementRegistry& registry) {
+  check_name(in.name, "the block's element set");
+  const std::string name = to_upper(in.name);
+  if (model.find_elset(name)) refuse("element set " + name + " exists already; choose another name");
+  for (const std::string& side : kSides)
+    if (model.find_nset(name + "_" + side) || model.surfaces.count(name + "_" + side))
+      refuse("node set or surface " + name + "_" + side + " exists already; choose another name");
+  const char* axes = "xyz";
+  long long count = 1;
+  for (int k = 0; k < 3; ++k) {
+    const std::string a(1, axes[k]);
+    if (in.divisions[k] < 1)
+      refuse("divisions along " + a + " must be at least 1, not " +
+             std::to_string(in.divisions[k]));
+    if (in.divisions[k] > 1000) refuse("divisions along " + a + " must be at most 1000");
+    count *= in.divisions[k];
+    check_finite(in.grading[k], "grading along " + a);
+    if (!(in.grading[k] > 0)) refuse("grading along " + a + " must be > 0 (1 = uniform)");
+    if (!in.use_corners) {
+      check_finite(in.size[k], "size along " + a);
+      check_finite(in.origin[k], "origin " + a);
+      if (!(in.size[k] > 0)) refuse("size along " + a + " must be > 0");
+    }
+  }
+  if (in.use_corners)
+    for (const Vec3& c : in.corners)
+      for (double x : c) check_finite(x, "corner coordinate");
+  if (count > 2000000) refuse("the block would have " + std::to_string(count) +
+                              " elements; at most 2,000,000");
+  const std::string type = to_upper(in.type);
+  if (type != "C3D8" && type != "C3D20" && type != "C3D21" && type != "C3D28")
+    refuse("element type " + in.type + " cannot be meshed here; use C3D8, C3D20, C3D21 or C3D28");
+  if (!registry.find(type))
+    refuse("element type " + type + " is not available (its plug-in is not loaded)");
+  if ((type == "C3D21" || type == "C3D28") &&
+      std::find(kSides.begin(), kSides.end(), to_upper(in.layer_side)) == kSides.end())
+    refuse("layer side must be one of XMIN, XMAX, YMIN, YMAX, ZMIN, ZMAX");
+  if (!in.material.empty() && model.material_index(to_upper(in.material)) < 0)
+    refuse("no material " + to_upper(in.material) + " in the model");
+}
+
+Model model_with_block(const Model& model, const BlockInput& in, const ElementRegistry& registry) {
+  check_block(in, model, registry);
+  const std::string name = to_upper(in.name);
+  const std::string type = to_upper(in.type);
+  mesher::Mesh mesh;
+  mesher::BlockSpec spec;
+  spec.type = type == "C3D8" ? "C3D8" : "C3D20";
+  spec.divisions = in.divisions;
+  spec.grading = in.grading;
+  spec.elset = name;
+  try {
+    const mesher::Block block = mesher::mesh_block(mesh, mesher::hex_map(block_corners(in)), spec);
+    for (int s = 0; s < 6; ++s)
+      mesh.add_to_surface(name + "_" + kSides[s], block.side_faces(s / 2, s % 2 == 0 ? -1 : 1));
+    if (type == "C3D21") mesher::convert_layer_to_c3d21(mesh, name + "_" + to_upper(in.layer_side));
+    if (type == "C3D28") mesher::convert_layer_to_c3d28(mesh, name + "_" + to_upper(in.layer_side));
+  } catch (const std::invalid_argument& e) {
+    refuse(std::string("the mesher refuses the block: ") + e.what());
+  }
+  for (const std::string& side : kSides)
+    mesh.add_to_node_set(name + "_" + side, mesh.surface_nodes(name + "_" + side));
+
+  Model result = model;
+  const int first_element = result.element_count();
+  append_part(result, mesher::to_model(mesh));
+  for (const std::string& side : kSides) {
+    Surface surface;
+    surface.name = name + "_" + side;
+    for (const mesher::FaceRef& f : mesh.surfaces.at(surface.name))
+      surface.faces.push_back({first_element + f.element, f.face + 1});
+    std::sort(surface.faces.begin(), surface.faces.end(), [](const auto& a, const auto& b) {
+      return a.element != b.element ? a.element < b.element : a.face < b.face;
+    });
+    result.surfaces[surface.name] = std::move(surface);
+  }
+  if (!in.material.empty()) {
+    Section section;
+    section.elset = name;
+    section.material = to_upper(in.material);
+    section.material_index = result.material_index(section.material);
+    const int index = static_cast<int>(result.sections.size());
+    result.sections.push_back(section);
+    for (int e : result.elsets.at(name).elements) result.elements[e].section = index;
+  }
+  return result;
+}
+
+std::unique_ptr<Command> block_command(const Model& model, const BlockInput& input,
+                                       const ElementRegistry& registry) {
+  Model after = model_with_block(model, input, registry);
+  return make_replace_model("Mesh block " + to_upper(input.name), model, std::move(after));
+}
+
+std::unique_ptr<Command> material_command(const Model& model, const MaterialInput& in) {
+  check_name(in.name, "the material");
+  const std::string name = to_upper(in.name);
+  if (model.material_index(name) >= 0) refuse("material " + name + " exists already");
+  check_finite(in.young, "Young's modulus");
+  check_finite(in.poisson, "Poisson's ratio");
+  check_finite(in.density, "density");
+  if (!(in.young > 0)) refuse("Young's modulus must be > 0");
+  if (!(in.poisson > -1.0 && in.poisson < 0.5))
+    refuse("Poisson's ratio must lie between -1 and 0.5 (exclusive)");
+  if (in.density < 0) refuse("density must be >= 0 (0: not given)");
+  Material m;
+  m.name = name;
+  m.young = in.young;
+  m.poisson = in.poisson;
+  if (in.density > 0) m.density = in.density;
+  return make_add_material(std::move(m));
+}
+
+std::unique_ptr<Command> section_command(const Model& model, const SectionInput& in) {
+  if (in.elset.empty()) refuse("choose an element set");
+  const ElementSet* set = model.find_elset(in.elset);
+  if (!set) refuse("no element set " + to_upper(in.elset) + " in the model");
+  if (set->elements.empty()) refuse("element set " + set->name + " is empty");
+  if (in.material.empty()) refuse("choose a material");
+  if (model.material_index(to_upper(in.material)) < 0)
+    refuse("no material " + to_upper(in.material) + " in the model");
+  for (int e : set->elements)
+    if (model.elements[e].section >= 0)
+      refuse("element " + std::to_string(model.elements[e].id) + " of " + set->name +
+             " has a section already (on " + model.sections[model.elements[e].section].elset +
+             "); an element belongs to one section only");
+  Section s;
+  s.elset = set->name;
+  s.material = to_upper(in.material);
+  return make_add_section(std::move(s));
+}
+
+std::unique_ptr<Command> step_command(const Model& model, const StepInput& in) {
+  check_name(in.name, "the step");
+  for (const Step& s : model.steps)
+    if (to_upper(s.name) == to_upper(in.name)) refuse("step " + in.name + " exists already");
+  check_finite(in.initial_increment, "initial increment");
+  check_finite(in.total_time, "total time");
+  if (!(in.total_time > 0)) refuse("total time must be > 0");
+  if (!(in.initial_increment > 0) || in.initial_increment > in.total_time)
+    refuse("initial increment must be > 0 and not above the total time");
+  Step step;
+  step.name = in.name;
+  step.has_procedure = true;
+  step.procedure.initial_increment = in.initial_increment;
+  step.procedure.total_time = in.total_time;
+  return make_add_step(std::move(step));
+}
+
+std::unique_ptr<Command> boundary_command(const Model& model, const BoundaryInput& in) {
+  const NodeSet& set = existing_nset(model, in.nset);
+  check_dof(in.first_dof, "first dof");
+  check_dof(in.last_dof, "last dof");
+  if (in.last_dof < in.first_dof) refuse("last dof must not be below the first dof");
+  check_finite(in.value, "value");
+  check_step(model, in.step, true);
+  std::vector<Boundary> entries;
+  for (int n : set.nodes)
+    for (int dof = in.first_dof; dof <= in.last_dof; ++dof) entries.push_back({n, dof, in.value, {}});
+  return make_add_boundaries(in.step, std::move(entries),
+                             "Fix " + set.name + " dofs " + std::to_string(in.first_dof) + "-" +
+                                 std::to_string(in.last_dof));
+}
+
+std::unique_ptr<Command> cload_command(const Model& model, const CloadInput& in) {
+  const NodeSet& set = existing_nset(model, in.nset);
+  check_dof(in.dof, "direction");
+  check_finite(in.value, "load");
+  if (in.value == 0.0) refuse("a load of 0 does nothing; enter a value");
+  check_step(model, in.step, false);
+  const double each = in.split ? in.value / static_cast<double>(set.nodes.size()) : in.value;
+  std::vector<ConcentratedLoad> loads;
+  for (int n : set.nodes) loads.push_back({n, in.dof, each, {}});
+  return make_add_cloads(in.step, std::move(loads), "Load " + set.name);
+}
+
+std::unique_ptr<Command> pressure_command(const Model& model, const PressureInput& in) {
+  check_step(model, in.step, false);
+  check_finite(in.magnitude, "pressure");
+  if (in.magnitude == 0.0) refuse("a pressure of 0 does nothing; enter a value");
+  std::vector<DistributedLoad> loads;
+  std::string target;
+  if (!in.surface.empty()) {
+    const auto it = model.surfaces.find(to_upper(in.surface));
+    if (it == model.surfaces.end()) refuse("no surface " + to_upper(in.surface) + " in the model");
+    if (it->second.kind != Surface::Kind::ElementFaces || it->second.faces.empty())
+      refuse("surface " + it->second.name + " holds no element faces");
+    for (const SurfaceFace& f : it->second.faces) loads.push_back({f.element, f.face, in.magnitude, {}});
+    target = it->second.name;
+  } else {
+    if (in.elset.empty()) refuse("choose a surface or an element set");
+    const ElementSet* set = model.find_elset(in.elset);
+    if (!set) refuse("no element set " + to_upper(in.elset) + " in the model");
+    if (set->elements.empty()) refuse("element set " + set->name + " is empty");
+    if (in.face < 1 || in.face > 6) refuse("face must be 1..6 (S1..S6)");
+    for (int e : set->elements) loads.push_back({e, in.face, in.magnitude, {}});
+    target = set->name + " S" + std::to_string(in.face);
+  }
+  return make_add_dloads(in.step, std::move(loads), "Pressure on " + target);
+}
+
+}  // namespace styk::gui

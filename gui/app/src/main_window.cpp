@@ -1,0 +1,381 @@
+#include "main_window.hpp"
+
+#include <QActionGroup>
+#include <QApplication>
+#include <QCloseEvent>
+#include <QColorDialog>
+#include <QDockWidget>
+#include <QFileDialog>
+#include <QFileInfo>
+#include <QInputDialog>
+#include <QLabel>
+#include <QMenuBar>
+#include <QMessageBox>
+#include <QPlainTextEdit>
+#include <QProgressBar>
+#include <QPushButton>
+#include <QSettings>
+#include <QStatusBar>
+#include <QTextBrowser>
+
+#include "gl_view.hpp"
+#include "model_dialogs.hpp"
+#include "model_tree.hpp"
+#include "path_chart.hpp"
+#include "results_panel.hpp"
+#include "solve_runner.hpp"
+#include "styk/io/results_file.hpp"
+#include "styk/mesher/builders.hpp"
+
+namespace styk::gui {
+
+MainWindow::MainWindow(const ElementRegistry& registry, QWidget* parent)
+    : QMainWindow(parent), document_(registry) {
+  view_ = new GlView;
+  setCentralWidget(view_);
+  tree_ = new ModelTree;
+  auto* tree_dock = new QDockWidget("Model", this);
+  tree_dock->setObjectName("model_dock");
+  tree_dock->setWidget(tree_);
+  addDockWidget(Qt::LeftDockWidgetArea, tree_dock);
+  properties_ = new QTextBrowser;
+  auto* properties_dock = new QDockWidget("Properties", this);
+  properties_dock->setObjectName("properties_dock");
+  properties_dock->setWidget(properties_);
+  addDockWidget(Qt::RightDockWidgetArea, properties_dock);
+  results_ = new ResultsPanel;
+  auto* results_dock = new QDockWidget("Results", this);
+  results_dock->setObjectName("results_dock");
+  results_dock->setWidget(results_);
+  addDockWidget(Qt::RightDockWidgetArea, results_dock);
+  log_ = new QPlainTextEdit;
+  log_->setReadOnly(true);
+  log_->setMaximumBlockCount(5000);
+  auto* log_dock = new QDockWidget("Log", this);
+  log_dock->setObjectName("log_dock");
+  log_dock->setWidget(log_);
+  addDockWidget(Qt::BottomDockWidgetArea, log_dock);
+  progress_ = new QProgressBar;
+  progress_->setRange(0, 100);
+  progress_->setMaximumWidth(220);
+  probe_ = new QLabel;
+  statusBar()->addWidget(probe_, 1);
+  statusBar()->addPermanentWidget(progress_);
+
+  solver_ = std::make_unique<SolveRunner>(SolveRunner::locate_styk_program());
+  connect(solver_.get(), &SolveRunner::log, this, &MainWindow::log);
+  connect(solver_.get(), &SolveRunner::progress, this, [this](int percent, const QString& phase) {
+    progress_->setValue(percent);
+    progress_->setFormat(phase + " %p%");
+  });
+  connect(solver_.get(), &SolveRunner::finished, this, &MainWindow::on_solve_finished);
+  connect(view_, &GlView::probed, probe_, &QLabel::setText);
+  connect(tree_, &ModelTree::properties, properties_, &QTextBrowser::setHtml);
+  connect(tree_, &ModelTree::layer_toggled, this, [this](const QString& name, bool visible) {
+    document_.layers().set_visible(name.toStdString(), visible);
+    refresh_scene();
+  });
+  connect(tree_, &ModelTree::layer_color_requested, this, [this](const QString& name) {
+    const render::Rgb c = document_.layers().layer(name.toStdString()).color;
+    const QColor chosen = QColorDialog::getColor(QColor::fromRgbF(c.r, c.g, c.b), this);
+    if (!chosen.isValid()) return;
+    document_.layers().set_color(name.toStdString(), {float(chosen.redF()), float(chosen.greenF()),
+                                                      float(chosen.blueF())});
+    tree_->populate(document_);
+    refresh_scene();
+  });
+  connect(results_, &ResultsPanel::changed, this, &MainWindow::refresh_scene);
+  connect(results_, &ResultsPanel::chart_requested, this, [this](const QString& nset) {
+    try {
+      const auto points = field_along_node_set(view_->scene(), document_.model(), nset.toStdString());
+      QDialog* chart = make_path_chart(points, QString::fromStdString(view_->scene().field()->name),
+                                       nset, this);
+      chart->show();
+    } catch (const InputError& e) {
+      show_error("X-Y chart", QString::fromStdString(e.message()));
+    }
+  });
+  build_menus();
+  resize(1280, 820);
+  refresh_model();
+}
+
+MainWindow::~MainWindow() = default;
+
+void MainWindow::build_menus() {
+  QMenu* file = menuBar()->addMenu("&File");
+  file->addAction("&New", QKeySequence::New, this, [this] {
+    if (!maybe_save()) return;
+    document_.new_model();
+    refresh_model();
+  });
+  file->addAction("&Open...", QKeySequence::Open, this, [this] {
+    if (!maybe_save()) return;
+    const QString path = QFileDialog::getOpenFileName(
+        this, "Open", QString(), "Models and results (*.inp *.styk.h5 *.h5);;All files (*)");
+    if (!path.isEmpty()) open_file(path);
+  });
+  recent_menu_ = file->addMenu("Open &recent");
+  file->addAction("&Save", QKeySequence::Save, this, [this] {
+    const QString path = QString::fromStdString(document_.path());
+    if (path.endsWith(".inp")) save_file(path);
+    else {
+      const QString chosen = QFileDialog::getSaveFileName(this, "Save deck", QString(), "Decks (*.inp)");
+      if (!chosen.isEmpty()) save_file(chosen);
+    }
+  });
+  file->addAction("Save &as...", QKeySequence::SaveAs, this, [this] {
+    const QString chosen = QFileDialog::getSaveFileName(this, "Save deck", QString(), "Decks (*.inp)");
+    if (!chosen.isEmpty()) save_file(chosen);
+  });
+  file->addAction("&Export view as PNG...", this, [this] {
+    const QString chosen = QFileDialog::getSaveFileName(this, "Export PNG", "view.png", "PNG (*.png)");
+    if (!chosen.isEmpty()) export_png(chosen);
+  });
+  file->addSeparator();
+  file->addAction("&Quit", QKeySequence::Quit, this, &QWidget::close);
+  update_recent_menu();
+
+  QMenu* edit = menuBar()->addMenu("&Edit");
+  undo_ = edit->addAction("&Undo", QKeySequence::Undo, this, [this] { document_.undo(); refresh_model(); });
+  undo_->setObjectName("action_undo");
+  redo_ = edit->addAction("&Redo", QKeySequence::Redo, this, [this] { document_.redo(); refresh_model(); });
+
+  QMenu* model = menuBar()->addMenu("&Model");
+  const auto dialog_action = [this, model](const QString& text, const QString& name,
+                                           FormDialog* (*make)(Document&, QWidget*)) {
+    QAction* a = model->addAction(text, this, [this, make] { run_dialog(make(document_, this)); });
+    a->setObjectName(name);
+  };
+  dialog_action("Mesh &block...", "action_block", &make_block_dialog);
+  QAction* builder = model->addAction("Model from &builder...", this, [this] {
+    QStringList names;
+    for (const mesher::BuilderInfo& b : mesher::builder_catalogue())
+      names << QString::fromStdString(b.name + "  (" + b.section + " " + b.title + ")");
+    bool ok = false;
+    const QString chosen = QInputDialog::getItem(this, "Builder", "Model", names, 0, false, &ok);
+    if (ok) run_dialog(make_builder_dialog(document_, chosen.section(' ', 0, 0).toStdString(), this));
+  });
+  builder->setObjectName("action_builder");
+  model->addSeparator();
+  dialog_action("&Material...", "action_material", &make_material_dialog);
+  dialog_action("&Section...", "action_section", &make_section_dialog);
+  dialog_action("S&tep...", "action_step", &make_step_dialog);
+  dialog_action("&Boundary condition...", "action_boundary", &make_boundary_dialog);
+  dialog_action("&Concentrated load...", "action_cload", &make_cload_dialog);
+  dialog_action("&Pressure...", "action_pressure", &make_pressure_dialog);
+
+  QMenu* analysis = menuBar()->addMenu("&Analysis");
+  analysis->addAction("&Solve", QKeySequence(Qt::Key_F5), this, &MainWindow::start_solve);
+  cancel_ = analysis->addAction("&Cancel solve", this, &MainWindow::cancel_solve);
+  cancel_->setEnabled(false);
+
+  QMenu* view = menuBar()->addMenu("&View");
+  auto* modes = new QActionGroup(this);
+  const std::pair<const char*, render::DisplayMode> mode_list[] = {
+      {"&Nodes", render::DisplayMode::Points},      {"&Wireframe", render::DisplayMode::Wireframe},
+      {"&Hidden line", render::DisplayMode::HiddenLine}, {"&Shaded", render::DisplayMode::Shaded},
+      {"Shaded with &edges", render::DisplayMode::ShadedEdges}};
+  for (const auto& [text, mode] : mode_list) {
+    QAction* a = view->addAction(text, this, [this, m = mode] { set_display_mode(m); });
+    a->setCheckable(true);
+    a->setChecked(mode == mode_);
+    modes->addAction(a);
+  }
+  view->addSeparator();
+  for (const char* name : {"iso", "+x", "-x", "+y", "-y", "+z", "-z"})
+    view->addAction(QString("View %1").arg(name), this, [this, name] { view_->set_named_view(name); });
+  view->addAction("&Fit", QKeySequence(Qt::Key_F), this, [this] { view_->fit(); });
+  QAction* perspective = view->addAction("&Perspective", this, [this](bool on) { view_->set_perspective(on); });
+  perspective->setCheckable(true);
+}
+
+void MainWindow::run_dialog(QDialog* dialog) {
+  if (!dialog) return;
+  dialog->setAttribute(Qt::WA_DeleteOnClose);
+  connect(dialog, &QDialog::accepted, this, &MainWindow::refresh_model);
+  dialog->open();
+}
+
+bool MainWindow::open_file(const QString& path) {
+  try {
+    if (path.endsWith(".h5")) document_.open_results(path.toStdString());
+    else document_.open_inp(path.toStdString());
+  } catch (const std::exception& e) {
+    show_error("Open " + QFileInfo(path).fileName(), QString::fromUtf8(e.what()));
+    return false;
+  }
+  log("opened " + path);
+  add_recent(path);
+  view_->set_named_view("iso");
+  if (document_.results()) results_->set_field("S.mises");
+  refresh_model();
+  return true;
+}
+
+bool MainWindow::save_file(const QString& path) {
+  try {
+    document_.save_inp(path.toStdString());
+  } catch (const std::exception& e) {
+    show_error("Save", QString::fromUtf8(e.what()));
+    return false;
+  }
+  log("saved " + path);
+  add_recent(path);
+  update_title();
+  return true;
+}
+
+bool MainWindow::export_png(const QString& path) {
+  const QImage picture = view_->grab_picture();
+  if (picture.isNull() || !picture.save(path, "PNG")) {
+    show_error("Export PNG", "cannot write " + path);
+    return false;
+  }
+  log("view written to " + path);
+  return true;
+}
+
+void MainWindow::start_solve() {
+  if (document_.model().elements.empty()) {
+    show_error("Solve", "the model has no elements");
+    return;
+  }
+  QString job = QFileInfo(QString::fromStdString(document_.path())).completeBaseName();
+  if (job.isEmpty() || job.endsWith(".styk")) job = "model";
+  QString error;
+  if (!solver_->start(document_.model(), job, &error)) {
+    show_error("Solve", error);
+    return;
+  }
+  progress_->setValue(0);
+  cancel_->setEnabled(true);
+}
+
+void MainWindow::cancel_solve() { solver_->cancel(); }
+
+bool MainWindow::solving() const { return solver_->running(); }
+
+void MainWindow::on_solve_finished(bool ok, const QString& results, const QString& error, int line,
+                                   const QString& text) {
+  cancel_->setEnabled(false);
+  progress_->setValue(ok ? 100 : 0);
+  progress_->setFormat(ok ? "solved" : "%p%");
+  if (!ok) {
+    QString message = error;
+    if (line > 0)
+      message += QString("\n\nat line %1 of the deck written for the solver (%2):\n%3")
+                     .arg(line).arg(solver_->deck_path(), text);
+    if (error == "cancelled") log("solve cancelled");
+    else show_error("Solve", message);
+    emit solve_finished(false);
+    return;
+  }
+  try {
+    ResultsFileContents contents = read_results_file(results.toStdString());
+    document_.attach_results(std::move(contents.results), results.toStdString());
+  } catch (const std::exception& e) {
+    show_error("Solve", QString::fromUtf8(e.what()));
+    emit solve_finished(false);
+    return;
+  }
+  log("results: " + results);
+  if (results_->settings(mode_).field.empty()) results_->set_field("S.mises");
+  refresh_model();
+  emit solve_finished(true);
+}
+
+void MainWindow::set_display_mode(render::DisplayMode mode) {
+  mode_ = mode;
+  refresh_scene();
+}
+
+void MainWindow::set_field(const QString& field) {
+  results_->set_field(field);
+  refresh_scene();
+}
+
+void MainWindow::refresh_model() {
+  tree_->populate(document_);
+  results_->set_document(document_);
+  undo_->setEnabled(document_.history().can_undo());
+  undo_->setText("&Undo " + QString::fromStdString(document_.history().undo_text()));
+  redo_->setEnabled(document_.history().can_redo());
+  redo_->setText("&Redo " + QString::fromStdString(document_.history().redo_text()));
+  update_title();
+  refresh_scene();
+}
+
+void MainWindow::refresh_scene() {
+  DisplaySettings settings = results_->settings(mode_);
+  if (!document_.results()) settings.field.clear();
+  try {
+    view_->scene().rebuild(document_, settings);
+  } catch (const InputError& e) {
+    log("view: " + QString::fromStdString(e.message()));
+    last_message_ = QString::fromStdString(e.message());
+    settings.field.clear();
+    view_->scene().rebuild(document_, settings);
+  }
+  view_->update();
+}
+
+void MainWindow::log(const QString& line) { log_->appendPlainText(line); }
+
+QString MainWindow::log_text() const { return log_->toPlainText(); }
+
+void MainWindow::show_error(const QString& title, const QString& message) {
+  last_message_ = message;
+  log(title + ": " + message);
+  if (qEnvironmentVariableIsSet("STYK_GUI_NO_MESSAGE_BOXES")) return;  // tests: no modal boxes
+  QMessageBox::warning(this, title, message);
+}
+
+bool MainWindow::maybe_save() {
+  if (!document_.is_modified() || qEnvironmentVariableIsSet("STYK_GUI_NO_MESSAGE_BOXES")) return true;
+  const auto answer = QMessageBox::question(this, "Unsaved changes", "Save the model first?",
+                                            QMessageBox::Save | QMessageBox::Discard | QMessageBox::Cancel);
+  if (answer == QMessageBox::Cancel) return false;
+  if (answer == QMessageBox::Save) {
+    const QString path = QFileDialog::getSaveFileName(this, "Save deck", QString(), "Decks (*.inp)");
+    return !path.isEmpty() && save_file(path);
+  }
+  return true;
+}
+
+void MainWindow::add_recent(const QString& path) {
+  QSettings settings("Styk", "styk-gui");
+  QStringList files = settings.value("recent").toStringList();
+  files.removeAll(QFileInfo(path).absoluteFilePath());
+  files.prepend(QFileInfo(path).absoluteFilePath());
+  while (files.size() > 10) files.removeLast();
+  settings.setValue("recent", files);
+  update_recent_menu();
+}
+
+void MainWindow::update_recent_menu() {
+  recent_menu_->clear();
+  const QStringList files = QSettings("Styk", "styk-gui").value("recent").toStringList();
+  for (const QString& f : files)
+    recent_menu_->addAction(f, this, [this, f] {
+      if (maybe_save()) open_file(f);
+    });
+  recent_menu_->setEnabled(!files.isEmpty());
+}
+
+void MainWindow::update_title() {
+  const QString name = document_.path().empty() ? QString("(new model)")
+                                                : QFileInfo(QString::fromStdString(document_.path())).fileName();
+  setWindowTitle(name + (document_.is_modified() ? " *" : "") + " — styk-gui");
+}
+
+void MainWindow::closeEvent(QCloseEvent* event) {
+  if (!maybe_save()) {
+    event->ignore();
+    return;
+  }
+  solver_->cancel();
+  event->accept();
+}
+
+}  // namespace styk::gui

@@ -1,0 +1,86 @@
+// The main window of styk-gui: model tree (left), 3D view (centre), properties and results
+// controls (right), log and progress (bottom); menus for files, edits, the model, the analysis
+// and the view. The Document lives here; every model edit goes through it (undoable).
+#pragma once
+
+#include <QMainWindow>
+#include <memory>
+
+#include "session/document.hpp"
+#include "styk/render/frame.hpp"
+
+class QLabel;
+class QPlainTextEdit;
+class QProgressBar;
+class QTextBrowser;
+class QAction;
+class QMenu;
+
+namespace styk::gui {
+
+class GlView;
+class ModelTree;
+class ResultsPanel;
+class SolveRunner;
+
+class MainWindow : public QMainWindow {
+  Q_OBJECT
+ public:
+  // `registry` (built-in elements and plug-ins) must outlive the window.
+  explicit MainWindow(const ElementRegistry& registry, QWidget* parent = nullptr);
+  ~MainWindow() override;
+
+  // .inp or .styk.h5; errors go to a message box (and the log). Returns success.
+  bool open_file(const QString& path);
+  bool save_file(const QString& path);
+  bool export_png(const QString& path);
+  void start_solve();
+  void cancel_solve();
+  bool solving() const;
+  void set_display_mode(render::DisplayMode mode);
+  void set_field(const QString& field);  // selects it in the results panel and redraws
+
+  Document& document() { return document_; }
+  GlView* view() const { return view_; }
+  ResultsPanel* results_panel() const { return results_; }
+  QString last_message() const { return last_message_; }  // last error shown to the user
+  QString log_text() const;
+
+ signals:
+  void solve_finished(bool ok);
+
+ protected:
+  void closeEvent(QCloseEvent* event) override;
+
+ private:
+  void build_menus();
+  void refresh_model();  // after any model or results change
+  void refresh_scene();  // after a display setting change
+  void log(const QString& line);
+  void show_error(const QString& title, const QString& message);
+  void run_dialog(QDialog* dialog);
+  bool maybe_save();
+  void add_recent(const QString& path);
+  void update_recent_menu();
+  void update_title();
+  void on_solve_finished(bool ok, const QString& results, const QString& error, int line,
+                         const QString& text);
+
+  Document document_;
+  GlView* view_ = nullptr;
+  ModelTree* tree_ = nullptr;
+  ResultsPanel* results_ = nullptr;
+  QTextBrowser* properties_ = nullptr;
+  QPlainTextEdit* log_ = nullptr;
+  QProgressBar* progress_ = nullptr;
+  QLabel* probe_ = nullptr;
+  QMenu* recent_menu_ = nullptr;
+  QAction* undo_ = nullptr;
+  QAction* redo_ = nullptr;
+  QAction* cancel_ = nullptr;
+  std::unique_ptr<SolveRunner> solver_;
+  render::DisplayMode mode_ = render::DisplayMode::Shaded;
+  QString last_message_;
+};
+
+}  // namespace styk::gui
