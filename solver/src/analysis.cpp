@@ -1,12 +1,15 @@
-// The linear static step driver: check -> pattern -> assemble -> (per step) rigid-body check,
-// order/factorise when the set of prescribed dofs changes, solve, recover.
+// The linear static step driver: check -> pattern -> assemble (with *TRANSFORM rotations and
+// *EQUATION elimination applied to K) -> (per step) rigid-body check, order/factorise when the set
+// of prescribed dofs changes, solve (mechanical and thermal loads), recover.
 #include "styk/solver/analysis.hpp"
 
 #include <memory>
 
 #include "assembly.hpp"
+#include "contact_analysis.hpp"
 #include "linear_solver.hpp"
 #include "mechanism_check.hpp"
+#include "model_constraints.hpp"
 #include "parallel.hpp"
 #include "phase_recorder.hpp"
 #include "prepared_model.hpp"
@@ -14,6 +17,7 @@
 #include "step_conditions.hpp"
 #include "stiffness_matrix.hpp"
 #include "stress_averaging.hpp"
+#include "thermal_load.hpp"
 #include "unsupported_features.hpp"
 
 namespace styk {
@@ -35,17 +39,29 @@ constexpr bool kHaveIterativeSolver = false;
 // and GAMG needs 3-5x less memory, so the switch sits a little below the crossing.
 constexpr long long kIterativeFromDofs = 150000;
 
-LinearSolverKind choose_solver(const SolveOptions& options, const Step& step,
-                               long long free_dofs) {
+// *TRANSFORM and *EQUATION make the system the direct solver's: GAMG's rigid-body near-null
+// space is built for global dofs without eliminated ones.
+std::string constraint_keyword(const Model& model) {
+  return model.equations.empty() ? "*TRANSFORM" : "*EQUATION";
+}
+
+LinearSolverKind choose_solver(const SolveOptions& options, const Step& step, long long free_dofs,
+                               const Model& model, bool constrained) {
   const bool forced = options.force != LinearSolverKind::Automatic;
   const LinearSolverKind requested = forced ? options.force : step.procedure.solver;
+  if (requested == LinearSolverKind::Iterative && constrained)
+    throw InputError(forced ? SourceLoc{model.source, 0} : step.procedure.where,
+                     "the iterative solver does not support " + constraint_keyword(model) +
+                         " (local systems and equations are eliminated for the direct solver "
+                         "only); use --solver cholmod or *STATIC, SOLVER=CHOLMOD");
   if (requested == LinearSolverKind::Iterative && !kHaveIterativeSolver)
     throw InputError(forced ? SourceLoc{} : step.procedure.where,
                      "the iterative solver is not available: this build has no PETSc "
                      "(configure with STYK_PETSC=ON)");
   if (requested != LinearSolverKind::Automatic) return requested;
-  return kHaveIterativeSolver && free_dofs >= kIterativeFromDofs ? LinearSolverKind::Iterative
-                                                                 : LinearSolverKind::Cholmod;
+  return kHaveIterativeSolver && !constrained && free_dofs >= kIterativeFromDofs
+             ? LinearSolverKind::Iterative
+             : LinearSolverKind::Cholmod;
 }
 
 std::unique_ptr<LinearSolver> make_solver(LinearSolverKind kind, const SolverContext& context,
@@ -61,6 +77,9 @@ Results run_static_analysis(const Model& model, const ElementRegistry& registry,
                             const SolveOptions& options, ProgressSink* progress,
                             AnalysisReport* report) {
   reject_unsupported_features(model);
+  // Contact pairs make the analysis nonlinear: load increments and the active-set iteration.
+  if (!model.contact_pairs.empty())
+    return run_contact_analysis(model, registry, options, progress, report);
   if (report != nullptr) *report = AnalysisReport{};
   const PhaseRecorder phases(progress, report);
   const int threads = resolve_threads(options.threads);
@@ -68,6 +87,8 @@ Results run_static_analysis(const Model& model, const ElementRegistry& registry,
 
   PreparedModel prepared;
   std::vector<StepConditions> conditions;
+  ModelConstraints constraints;
+  std::vector<std::vector<double>> temperature_changes;
   {
     const PhaseRecorder::Scope phase(phases, "check");
     if (model.steps.empty())
@@ -76,6 +97,8 @@ Results run_static_analysis(const Model& model, const ElementRegistry& registry,
       throw InputError(whole_model, "the model has no elements");
     prepared = prepare_model(model, registry);
     conditions = accumulate_step_conditions(model, prepared);
+    constraints = ModelConstraints::build(model, prepared);
+    temperature_changes = step_temperature_changes(model);
   }
 
   // Extrapolation operators per element type, built once for every step (SPEC §5 averaging).
@@ -84,15 +107,19 @@ Results run_static_analysis(const Model& model, const ElementRegistry& registry,
   std::unique_ptr<StiffnessMatrix> K;
   {
     const PhaseRecorder::Scope phase(phases, "pattern");
-    K = std::make_unique<StiffnessMatrix>(model, prepared, threads);
+    K = std::make_unique<StiffnessMatrix>(model, prepared, threads,
+                                          constraints.extra_node_couplings(model, prepared));
     phases.info("pattern: " + std::to_string(prepared.active_dofs()) + " dofs, " +
                 std::to_string(K->nonzeros()) + " nonzeros, " +
                 std::to_string(K->colouring().colours()) + " element colours");
   }
-  {
+  // "Pristine" K is the assembled stiffness in the nodal systems, equations eliminated.
+  auto assemble = [&] {
     const PhaseRecorder::Scope phase(phases, "assemble");
     assemble_stiffness(model, prepared, *K, threads);
-  }
+    constraints.apply(*K);
+  };
+  assemble();
 
   const SolverContext context{model, prepared, phases, threads};
   std::unique_ptr<LinearSolver> solver;
@@ -100,10 +127,7 @@ Results run_static_analysis(const Model& model, const ElementRegistry& registry,
   std::vector<int> solver_prescribed;
   auto set_up_solver = [&](LinearSolverKind kind, const std::vector<int>& prescribed) {
     solver.reset();  // drops any view of K's arrays before K is reassembled
-    if (!K->pristine()) {
-      const PhaseRecorder::Scope phase(phases, "assemble");
-      assemble_stiffness(model, prepared, *K, threads);
-    }
+    if (!K->pristine()) assemble();
     solver = make_solver(kind, context, options);
     solver->prepare(*K, partition_dofs(prepared.active_dofs(), prescribed));
     solver_kind = kind;
@@ -114,25 +138,30 @@ Results run_static_analysis(const Model& model, const ElementRegistry& registry,
   double total_time = 0.0;
   for (std::size_t k = 0; k < model.steps.size(); ++k) {
     const Step& step = model.steps[k];
+    // Prescribed dofs are nodal (local where a *TRANSFORM applies); `known` adds the dofs that
+    // *EQUATIONs eliminate, which the linear solver treats like prescribed ones.
     const std::vector<int> prescribed = prescribed_dofs(conditions[k]);
-    const long long free_dofs = prepared.active_dofs() - static_cast<long long>(prescribed.size());
-    const LinearSolverKind kind = choose_solver(options, step, free_dofs);
+    const std::vector<int> known = constraints.known_dofs(model, prepared, prescribed);
+    const long long free_dofs = prepared.active_dofs() - static_cast<long long>(known.size());
+    const LinearSolverKind kind =
+        choose_solver(options, step, free_dofs, model, !constraints.empty());
 
     // A new factorisation only when the prescribed set (or the solver) changes; otherwise the
     // step costs a right-hand side and a solve.
-    if (!solver || kind != solver_kind || prescribed != solver_prescribed) {
+    if (!solver || kind != solver_kind || known != solver_prescribed) {
       {
         const PhaseRecorder::Scope phase(phases, "check");
-        check_rigid_body_modes(model, prepared, K->graph(), prescribed);
+        check_rigid_body_modes(model, prepared, K->graph(),
+                               constraints.restraints(model, prepared, prescribed));
       }
       try {
-        set_up_solver(kind, prescribed);
+        set_up_solver(kind, known);
       } catch (const FactorTooLarge& too_large) {
         const bool automatic = options.force == LinearSolverKind::Automatic &&
                                step.procedure.solver == LinearSolverKind::Automatic;
-        if (!automatic || !kHaveIterativeSolver) throw;
+        if (!automatic || !kHaveIterativeSolver || !constraints.empty()) throw;
         phases.info(std::string(too_large.what()) + "; switching to the iterative solver");
-        set_up_solver(LinearSolverKind::Iterative, prescribed);
+        set_up_solver(LinearSolverKind::Iterative, known);
       }
       if (report != nullptr && report->linear_solver.empty()) {
         report->linear_solver = solver->description();
@@ -140,10 +169,21 @@ Results run_static_analysis(const Model& model, const ElementRegistry& registry,
       }
     }
 
-    const std::vector<double> f = assemble_loads(model, prepared, conditions[k]);
+    const std::vector<double>& dT = temperature_changes[k];
+    std::vector<double> thermal;
+    if (!dT.empty()) {
+      const PhaseRecorder::Scope phase(phases, "assemble");
+      thermal = assemble_thermal_load(model, prepared, dT, threads);
+    }
+    // f: the external (mechanical) forces, which reactions are measured against; the thermal
+    // load joins only the right-hand side (internal forces include the thermal strain).
+    const std::vector<double> f = constraints.nodal_forces(model, prepared, conditions[k]);
     std::vector<double> prescribed_value(prepared.active_dofs(), 0.0);
     for (const DofValue& p : conditions[k].prescribed) prescribed_value[p.dof] = p.value;
-    const std::vector<double> u = solver->solve(f, prescribed_value);
+    std::vector<double> u =
+        solver->solve(constraints.reduced_forces(constraints.plus_global(f, std::move(thermal))),
+                      prescribed_value);
+    constraints.to_global_displacements(u);
     if (report != nullptr) report->iterations += solver->iterations();
 
     IncrementResult increment;
@@ -154,7 +194,10 @@ Results run_static_analysis(const Model& model, const ElementRegistry& registry,
     increment.total_time = total_time;
     {
       const PhaseRecorder::Scope phase(phases, "recover");
-      recover_increment(model, prepared, prescribed, u, f, threads, increment);
+      const std::vector<int> reaction_dofs = constraints.reaction_dofs(prescribed);
+      const RecoveryInput input{reaction_dofs, u, f, dT.empty() ? nullptr : &dT,
+                                &constraints.rotations()};
+      recover_increment(model, prepared, input, threads, increment);
       averaging.apply(threads, increment);
     }
     results.increments.push_back(std::move(increment));

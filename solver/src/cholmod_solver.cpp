@@ -78,6 +78,27 @@ class CholmodSolver final : public LinearSolver {
     return u;
   }
 
+  std::vector<double> solve_homogeneous(const std::vector<double>& F, int columns) override {
+    const DofPartition& partition = partition_;
+    std::vector<double> X(F.size(), 0.0);
+    if (partition.free_count() == 0 || columns == 0) return X;
+    const auto n = static_cast<std::size_t>(partition.free_count());
+    const std::size_t rows = F.size() / static_cast<std::size_t>(columns);
+    cholmod_common* c = common_->get();
+    CholmodDense b(cholmod_l_allocate_dense(n, columns, n, CHOLMOD_REAL, c),
+                   CholmodDenseDeleter{c});
+    if (!b) throw std::runtime_error("CHOLMOD: out of memory for the right-hand sides");
+    auto* bx = static_cast<double*>(b->x);
+    for (int j = 0; j < columns; ++j)
+      for (std::size_t i = 0; i < n; ++i) bx[j * n + i] = F[j * rows + partition.free_dofs[i]];
+    CholmodDense x(cholmod_l_solve(CHOLMOD_A, L_.get(), b.get(), c), CholmodDenseDeleter{c});
+    if (!x) throw std::runtime_error("CHOLMOD: the triangular solves failed");
+    const auto* xv = static_cast<const double*>(x->x);
+    for (int j = 0; j < columns; ++j)
+      for (std::size_t i = 0; i < n; ++i) X[j * rows + partition.free_dofs[i]] = xv[j * n + i];
+    return X;
+  }
+
  private:
   // Upper triangle of K_ff in CSC. For symmetric K, column j of the upper triangle is row j of K
   // restricted to columns <= j, so it comes straight out of K's CSR rows (already sorted).

@@ -41,4 +41,16 @@ std::vector<double> free_rhs(const std::vector<double>& f, const DofPartition& p
   return rhs;
 }
 
+std::vector<double> LinearSolver::solve_homogeneous(const std::vector<double>& F, int columns) {
+  const std::size_t rows = columns > 0 ? F.size() / static_cast<std::size_t>(columns) : 0;
+  std::vector<double> X(F.size());
+  const std::vector<double> zero(rows, 0.0);
+  for (int j = 0; j < columns; ++j) {
+    const std::vector<double> f(F.begin() + j * rows, F.begin() + (j + 1) * rows);
+    const std::vector<double> x = solve(f, zero);
+    std::copy(x.begin(), x.end(), X.begin() + j * rows);
+  }
+  return X;
+}
+
 }  // namespace styk::solver_detail

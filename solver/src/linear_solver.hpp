@@ -69,6 +69,12 @@ class LinearSolver {
                                     const std::vector<double>& prescribed_value) = 0;
 
   virtual int iterations() const { return 0; }  // of the last solve (iterative solvers)
+
+  // Solves K_ff X = F_f for `columns` right-hand sides at once, prescribed dofs held at zero (the
+  // contact compliance needs one column per contact constraint). F and X are column-major,
+  // active_dofs() rows; prescribed rows of X are zero. The default solves column by column;
+  // a direct solver overrides it with one blocked triangular solve.
+  virtual std::vector<double> solve_homogeneous(const std::vector<double>& F, int columns);
 };
 
 std::unique_ptr<LinearSolver> make_cholmod_solver(const SolverContext& context);

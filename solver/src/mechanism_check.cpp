@@ -72,26 +72,27 @@ std::string format_vector(Eigen::Vector3d v, double scale) {
 
 void check_rigid_body_modes(const Model& model, const PreparedModel& prepared,
                             const NodeGraph& graph, const std::vector<int>& prescribed) {
+  std::vector<Restraint> restraints;
+  restraints.reserve(prescribed.size());
+  for (int dof : prescribed)
+    restraints.push_back(Restraint{{{dof / 3, Eigen::Vector3d::Unit(dof % 3)}}});
+  check_rigid_body_modes(model, prepared, graph, restraints);
+}
+
+void check_rigid_body_modes(const Model& model, const PreparedModel& prepared,
+                            const NodeGraph& graph, const std::vector<Restraint>& restraints) {
   static const char* const kAxis[] = {"x", "y", "z"};
-  std::vector<char> is_prescribed(prepared.active_dofs(), 0);
-  for (int dof : prescribed) is_prescribed[dof] = 1;
   const SourceLoc whole_model{model.source, 0};
+  const std::vector<std::vector<int>> parts = connected_parts(graph);
+  std::vector<int> part_of(graph.nodes(), -1);
+  for (std::size_t k = 0; k < parts.size(); ++k)
+    for (int a : parts[k]) part_of[a] = static_cast<int>(k);
+  std::vector<std::vector<const Restraint*>> restraints_of(parts.size());
+  for (const Restraint& r : restraints)
+    if (!r.terms.empty()) restraints_of[part_of[r.terms.front().first]].push_back(&r);
 
-  for (const std::vector<int>& part : connected_parts(graph)) {
-    // Translations: some dof of the part must be prescribed in each direction.
-    for (int d = 0; d < 3; ++d) {
-      const bool held = std::any_of(part.begin(), part.end(),
-                                    [&](int a) { return is_prescribed[3 * a + d] != 0; });
-      if (!held)
-        throw InputError(whole_model, std::string("the model can move freely in ") + kAxis[d] +
-                                          ": no constraint reaches nodes " +
-                                          node_list(model, prepared, part) +
-                                          "; constrain at least one of them in " + kAxis[d]);
-    }
-
-    // Rotations: the prescribed dofs must not all be satisfied by a rigid rotation. Rows of
-    // G = sum r r^T are the six rigid-body modes (3 translations, 3 rotations about the part's
-    // centroid, lengths scaled by its size) evaluated at each prescribed dof.
+  for (std::size_t k = 0; k < parts.size(); ++k) {
+    const std::vector<int>& part = parts[k];
     Eigen::Vector3d lo = Eigen::Vector3d::Constant(INFINITY);
     Eigen::Vector3d hi = -lo;
     Eigen::Vector3d centroid = Eigen::Vector3d::Zero();
@@ -103,21 +104,41 @@ void check_rigid_body_modes(const Model& model, const PreparedModel& prepared,
       centroid += p;
     }
     centroid /= static_cast<double>(part.size());
-    const double size = (hi - lo).maxCoeff();
-    if (!(size > 0.0)) continue;  // a single point: translations are all it has
+    const double size = std::max((hi - lo).maxCoeff(), 1e-300);
 
+    // Rows of G = sum r r^T: each restraint evaluated on the six rigid-body modes (3
+    // translations, 3 rotations about the part's centroid, lengths scaled by its size).
     Matrix6 G = Matrix6::Zero();
-    for (int a : part)
-      for (int d = 0; d < 3; ++d) {
-        if (!is_prescribed[3 * a + d]) continue;
+    for (const Restraint* restraint : restraints_of[k]) {
+      Vector6 r = Vector6::Zero();
+      for (const auto& [a, v] : restraint->terms) {
         const Vec3& x = model.coords[prepared.node_of_active[a]];
-        const Eigen::Vector3d p =
-            (Eigen::Vector3d(x[0], x[1], x[2]) - centroid) / size;
-        Vector6 r = Vector6::Zero();
-        r[d] = 1.0;
-        for (int k = 0; k < 3; ++k) r[3 + k] = Eigen::Vector3d::Unit(k).cross(p)[d];
-        G.noalias() += r * r.transpose();
+        const Eigen::Vector3d p = (Eigen::Vector3d(x[0], x[1], x[2]) - centroid) / size;
+        r.head<3>() += v;
+        r.tail<3>() += p.cross(v);
       }
+      G.noalias() += r * r.transpose();
+    }
+
+    // Translations: first a direction nothing reaches at all (the common mistake), then any
+    // direction the restraints leave free.
+    for (int d = 0; d < 3; ++d)
+      if (!(G(d, d) > 0.0))
+        throw InputError(whole_model, std::string("the model can move freely in ") + kAxis[d] +
+                                          ": no constraint reaches nodes " +
+                                          node_list(model, prepared, part) +
+                                          "; constrain at least one of them in " + kAxis[d]);
+    const Eigen::Matrix3d Gt = G.topLeftCorner<3, 3>();
+    const Eigen::SelfAdjointEigenSolver<Eigen::Matrix3d> translations(Gt);
+    if (!(translations.eigenvalues()[0] > 1e-12 * translations.eigenvalues()[2]))
+      throw InputError(whole_model, "the model can move freely along " +
+                                        format_vector(translations.eigenvectors().col(0), 1.0) +
+                                        ": the constraints on nodes " +
+                                        node_list(model, prepared, part) +
+                                        " do not hold that direction");
+
+    // Rotations: the restraints must not all be satisfied by a rigid rotation.
+    if (!((hi - lo).maxCoeff() > 0.0)) continue;  // a single point: translations are all it has
     const Eigen::SelfAdjointEigenSolver<Matrix6> eigen(G);
     if (eigen.eigenvalues()[0] > 1e-12 * eigen.eigenvalues()[5]) continue;
     const Vector6 mode = eigen.eigenvectors().col(0);

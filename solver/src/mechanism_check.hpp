@@ -4,7 +4,10 @@
 // message in words instead of a singular factorisation.
 #pragma once
 
+#include <utility>
 #include <vector>
+
+#include <Eigen/Core>
 
 #include "prepared_model.hpp"
 #include "stiffness_matrix.hpp"
@@ -15,5 +18,18 @@ namespace styk::solver_detail {
 // of the part that can perform it. `prescribed` holds sorted active dof indices.
 void check_rigid_body_modes(const Model& model, const PreparedModel& prepared,
                             const NodeGraph& graph, const std::vector<int>& prescribed);
+
+// A linear condition on displacements, sum_i v_i . u(a_i) fixed: a prescribed dof (one term, its
+// direction) or an *EQUATION (coefficient times the direction of each term's dof).
+struct Restraint {
+  std::vector<std::pair<int, Eigen::Vector3d>> terms;  // (active node, global vector)
+};
+
+// The same check for general restraints. A part is a connected component of `graph` (which links
+// the nodes of an equation), and a rigid motion of a part must violate some restraint. Parts
+// linked by equations are checked as one body: a hinge between them is left to the
+// factorisation's pivot check.
+void check_rigid_body_modes(const Model& model, const PreparedModel& prepared,
+                            const NodeGraph& graph, const std::vector<Restraint>& restraints);
 
 }  // namespace styk::solver_detail

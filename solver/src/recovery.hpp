@@ -1,17 +1,33 @@
 // Stress recovery: strains and stresses at the integration points of every element (full rule),
-// nodal displacements, and reactions RF = internal force - external load at prescribed dofs, the
-// internal force integral B^T sigma being summed in the same pass (no second stiffness pass).
+// nodal displacements, and reactions RF = internal force - external load at the constrained dofs,
+// the internal force integral B^T sigma being summed in the same pass (no second stiffness pass).
 #pragma once
 
 #include <vector>
 
+#include "node_rotations.hpp"
 #include "prepared_model.hpp"
 #include "step_conditions.hpp"
 #include "styk/core/results.hpp"
 
 namespace styk::solver_detail {
 
-// Fills U, RF, ip_offset, S and E of `out`. u and f are on active dofs.
+struct RecoveryInput {
+  // Nodal dofs (local for transformed nodes) whose constraint force RF reports, sorted: the
+  // prescribed dofs and the dofs of *EQUATION terms. RF is zero in the other directions.
+  const std::vector<int>& reaction_dofs;
+  const std::vector<double>& u;  // displacements on all active dofs, global directions
+  const std::vector<double>& f;  // external forces on the nodal dofs (as reaction_dofs)
+  const std::vector<double>* nodal_dT = nullptr;  // T - T_initial per model node, or none
+  const NodeRotations* rotations = nullptr;       // the nodal systems, or none (all global)
+};
+
+// Fills U, RF (both global components), ip_offset, S and E of `out`. With temperature changes
+// the stress is D (eps - alpha dT) and E stays the total strain.
+void recover_increment(const Model& model, const PreparedModel& prepared,
+                       const RecoveryInput& input, int threads, IncrementResult& out);
+
+// No thermal load, no local systems: RF at the `prescribed` active dofs.
 void recover_increment(const Model& model, const PreparedModel& prepared,
                        const std::vector<int>& prescribed, const std::vector<double>& u,
                        const std::vector<double>& f, int threads, IncrementResult& out);

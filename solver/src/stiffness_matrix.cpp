@@ -72,6 +72,26 @@ NodeGraph build_node_graph(const Model& model, const PreparedModel& prepared, in
   return graph;
 }
 
+// Adds `extra` (sorted (a, b) pairs of active nodes) to the neighbour lists of `graph`.
+void add_couplings(NodeGraph& graph, const std::vector<std::pair<int, int>>& extra) {
+  if (extra.empty()) return;
+  NodeGraph merged;
+  merged.ptr.assign(graph.ptr.size(), 0);
+  merged.adj.reserve(graph.adj.size() + extra.size());
+  std::size_t next = 0;
+  for (int a = 0; a < graph.nodes(); ++a) {
+    const std::size_t start = merged.adj.size();
+    merged.adj.insert(merged.adj.end(), graph.adj.begin() + graph.ptr[a],
+                      graph.adj.begin() + graph.ptr[a + 1]);
+    for (; next < extra.size() && extra[next].first == a; ++next)
+      merged.adj.push_back(extra[next].second);
+    std::sort(merged.adj.begin() + start, merged.adj.end());
+    merged.adj.erase(std::unique(merged.adj.begin() + start, merged.adj.end()), merged.adj.end());
+    merged.ptr[a + 1] = static_cast<std::int64_t>(merged.adj.size());
+  }
+  graph = std::move(merged);
+}
+
 // Greedy colouring with a 64-bit colour mask per node; elements that find all 64 colours taken
 // around them go to another round of 64 colours.
 ElementColouring colour_elements(const Model& model, const PreparedModel& prepared) {
@@ -114,9 +134,13 @@ ElementColouring colour_elements(const Model& model, const PreparedModel& prepar
 
 }  // namespace
 
-StiffnessMatrix::StiffnessMatrix(const Model& model, const PreparedModel& prepared, int threads)
+StiffnessMatrix::StiffnessMatrix(const Model& model, const PreparedModel& prepared, int threads,
+                                 const std::vector<std::pair<int, int>>& extra_couplings)
     : graph_(build_node_graph(model, prepared, threads)),
       colouring_(colour_elements(model, prepared)) {
+  std::vector<std::pair<int, int>> extra = extra_couplings;
+  std::sort(extra.begin(), extra.end());
+  add_couplings(graph_, extra);
   const int nodes = graph_.nodes();
   const std::int64_t nonzeros = 9 * static_cast<std::int64_t>(graph_.adj.size());
   if (nonzeros > INT_MAX)

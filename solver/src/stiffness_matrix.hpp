@@ -6,6 +6,7 @@
 #pragma once
 
 #include <cstdint>
+#include <utility>
 #include <vector>
 
 #include "prepared_model.hpp"
@@ -28,8 +29,10 @@ struct ElementColouring {
 class StiffnessMatrix {
  public:
   // Builds the node graph and the scalar pattern (values zero). Throws InputError if the model is
-  // too large for 32-bit sparse indices.
-  StiffnessMatrix(const Model& model, const PreparedModel& prepared, int threads);
+  // too large for 32-bit sparse indices. `extra_couplings` are pairs of active nodes to couple
+  // although no element holds both (both orders given; e.g. the fill of *EQUATION elimination).
+  StiffnessMatrix(const Model& model, const PreparedModel& prepared, int threads,
+                  const std::vector<std::pair<int, int>>& extra_couplings = {});
 
   const NodeGraph& graph() const { return graph_; }
   const ElementColouring& colouring() const { return colouring_; }

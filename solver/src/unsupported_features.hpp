@@ -6,8 +6,9 @@
 
 namespace styk::solver_detail {
 
-// Throws InputError at the first contact pair, *CONTACT PRINT request, *EQUATION, *TRANSFORM or
-// *TEMPERATURE of the model. Each check goes when the solver learns the feature.
+// Throws InputError at the first *EQUATION, *TRANSFORM or step *TEMPERATURE of a model with
+// contact pairs (the contact path does not apply them yet). Each check goes when the solver
+// learns the feature.
 void reject_unsupported_features(const Model& model);
 
 }  // namespace styk::solver_detail

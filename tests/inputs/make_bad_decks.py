@@ -8,7 +8,8 @@ line numbers cannot drift from the decks. manifest.tsv columns:
     deck <TAB> expected exit code of `styk solve` <TAB> expected line (0 = the deck as a whole)
     <TAB> substring the message must contain
 Decks named solver_*.inp are valid input that the solver must reject (the reader accepts them):
-inverted elements, mechanisms, and features the solver cannot act on yet.
+inverted elements, mechanisms, inconsistent constraints, and features the solver cannot act on
+yet.
 Run from anywhere: python3 tests/inputs/make_bad_decks.py
 """
 import os
@@ -227,22 +228,24 @@ DECKS = [
      base(STEP="*STEP\n*STATIC\n*TEMPERATURE\nTIP, 100.\n>>99, 100.\n*END STEP\n"), 1,
      "node 99 is not defined"),
     # Valid input the solver cannot act on yet: refused by name and line, never ignored.
-    ("solver_contact_pair", "a contact pair: the solver has no contact yet",
-     base(SECTION=SECTION + CONTACT_SURFACES + INTERACTION
-          + "*CONTACT PAIR, INTERACTION=DRY\n>>BOTTOM_FACE, TOP_FACE\n"), 1,
-     "contact analysis is not available yet"),
-    ("solver_contact_print", "*CONTACT PRINT: the solver has no contact output yet",
-     base(STEP="*STEP\n*STATIC\n*CLOAD\nTIP, 3, -1.\n>>*CONTACT PRINT\nCSTR, CDIS\n*END STEP\n"),
-     1, "contact output is not available yet"),
-    ("solver_equation", "an equation: the solver has no multi-point constraints yet",
-     base(BOUNDARY=BOUNDARY + "*EQUATION\n>>2\n2, 3, 1., 3, 3, -1.\n"), 1,
-     "multi-point constraints are not available yet"),
-    ("solver_transform", "a transform: the solver has no local systems yet",
+    ("solver_contact_iterative", "a contact model asking for the iterative solver",
+     base(SECTION=SECTION + CONTACT_SURFACES + INTERACTION + CONTACT_PAIR,
+          STEP="*STEP\n>>*STATIC, SOLVER=ITERATIVE CHOLESKY\n*CLOAD\nTIP, 3, -1.\n*END STEP\n"), 1,
+     "contact analysis needs the direct solver"),
+    ("solver_equation_prescribed", "an equation eliminating a dof that a step also prescribes",
+     base(BOUNDARY=BOUNDARY + "*EQUATION\n>>2\n2, 3, 1., 3, 3, -1.\n",
+          STEP="*STEP\n*STATIC\n*BOUNDARY\n2, 3, 3, 0.01\n*END STEP\n"), 1,
+     "is eliminated by the equation and also prescribed"),
+    ("solver_equation_cycle", "two equations eliminating each other's dof",
+     base(BOUNDARY=BOUNDARY + "*EQUATION\n>>2\n2, 3, 1., 3, 3, -1.\n2\n3, 3, 1., 2, 3, -1.\n"),
+     1, "depend on each other in a cycle"),
+    ("solver_transform_on_axis", "a cylindrical transform whose axis passes through set nodes",
      base(BOUNDARY=">>*TRANSFORM, NSET=FIXED, TYPE=C\n0., 0., 0., 0., 0., 1.\n" + BOUNDARY), 1,
-     "local coordinate systems for boundary conditions and loads are not available yet"),
-    ("solver_temperature", "a step temperature: the solver has no thermal loading yet",
-     base(STEP="*STEP\n*STATIC\n*CLOAD\nTIP, 3, -1.\n*TEMPERATURE\n>>TIP, 100.\n*END STEP\n"),
-     1, "thermal loading is not available yet"),
+     "lies on the cylinder axis"),
+    ("solver_temperature_no_expansion", "a step temperature on a material without *EXPANSION",
+     base(MATERIAL=">>" + MATERIAL,
+          STEP="*STEP\n*STATIC\n*CLOAD\nTIP, 3, -1.\n*TEMPERATURE\nTIP, 100.\n*END STEP\n"),
+     1, "*EXPANSION (thermal expansion coefficient) is required"),
     ("solver_inverted_element", "an inside-out element: valid input, the solver rejects it",
      base(ELEMENTS="*ELEMENT, TYPE=C3D8, ELSET=BLOCK\n>>1, 5, 6, 7, 8, 1, 2, 3, 4\n"), 1,
      "Jacobian"),

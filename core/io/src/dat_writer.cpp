@@ -9,6 +9,7 @@
 #include <string>
 #include <vector>
 
+#include "dat_contact.hpp"
 #include "fortran_format.hpp"
 #include "styk/io/dat_writer.hpp"
 
@@ -36,6 +37,8 @@ class DatPrinter {
         print_nodes(request, inc);
       else if (request.kind == OutputRequest::Kind::ElementPrint)
         print_elements(request, inc);
+      else if (request.kind == OutputRequest::Kind::ContactPrint)
+        io::print_contact(out_, model_, request, inc);
     }
   }
 

@@ -9,6 +9,7 @@
 #include <vector>
 
 #include "h5_util.hpp"
+#include "results_contact.hpp"
 #include "results_schema.hpp"
 #include "styk/io/results_file.hpp"
 
@@ -144,6 +145,7 @@ IncrementResult read_increment(hid_t group, const std::string& label, const Mode
               std::to_string(expected));
     inc.*field.member = to_rows<Tensor6>(flat);
   }
+  io::read_contact(group, label, model, inc);
   return inc;
 }
 

@@ -5,6 +5,7 @@
 #include <vector>
 
 #include "h5_util.hpp"
+#include "results_contact.hpp"
 #include "results_schema.hpp"
 #include "styk/io/results_file.hpp"
 #include "temp_file.hpp"
@@ -135,6 +136,7 @@ void write_increment(hid_t steps, const IncrementResult& inc) {
     write_rows(group.get(), field.name, values.empty() ? nullptr : values[0].data(), values.size(),
                6);
   }
+  io::write_contact(group.get(), inc);
 }
 
 }  // namespace

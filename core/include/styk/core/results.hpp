@@ -12,6 +12,36 @@ namespace styk {
 
 using Tensor6 = std::array<double, 6>;  // 11, 22, 33, 12, 13, 23
 
+// Contact state of one slave node of a contact pair at the end of an increment (docs/contact.md).
+enum class ContactStatus : int { Open = 0, Stick = 1, Slip = 2 };
+struct ContactNodeResult {
+  int pair = 0;                    // index into Model::contact_pairs
+  int node = 0;                    // slave node index
+  ContactStatus status = ContactStatus::Open;
+  double area = 0.0;               // nodal contact area (SPEC §2.5); 0 for a node-surface slave
+  double pressure = 0.0;           // normal force / area, compressive positive (force if area 0)
+  std::array<double, 2> shear{};   // tangential traction on the slave along t1, t2
+  std::array<double, 2> slip{};    // accumulated slip of the slave relative to the master
+  double gap = 0.0;                // normal opening; negative = penetration (round-off only)
+  Vec3 normal{};                   // unit normal out of the slave, towards the master
+  Vec3 t1{}, t2{};                 // unit tangents, t2 = normal x t1
+  Vec3 force{};                    // contact force on the slave node, global axes
+};
+struct ContactPairResult {
+  Vec3 force{};                    // total contact force on the slave surface
+  Vec3 moment{};                   // its moment about the global origin
+};
+// Global balance of a contact increment: applied loads + reactions = 0, and the contact forces on
+// the two sides of every pair cancel.
+struct ContactEquilibrium {
+  bool valid = false;
+  Vec3 applied{};                  // sum of the applied nodal forces (pressures included)
+  Vec3 reactions{};                // sum of RF
+  Vec3 contact_slave{};            // sum of the contact forces on slave nodes
+  Vec3 contact_master{};           // ... on master nodes
+  double relative_residual = 0.0;  // |applied + reactions| / max(|applied|, |reactions|, |contact|)
+};
+
 struct IncrementResult {
   int step = 1;                 // 1-based step number
   int increment = 1;            // 1-based increment within the step
@@ -34,6 +64,12 @@ struct IncrementResult {
   std::vector<Tensor6> S_nodal_II;       // per node: method II, mean of the centroid values
   std::vector<Tensor6> E_nodal_I;
   std::vector<Tensor6> E_nodal_II;
+
+  // Contact (models with *CONTACT PAIR): one entry per constrained slave node, in pair order;
+  // per-pair totals indexed like Model::contact_pairs; the balance check.
+  std::vector<ContactNodeResult> contact;
+  std::vector<ContactPairResult> contact_pairs;
+  ContactEquilibrium contact_equilibrium;
 };
 
 struct Results {

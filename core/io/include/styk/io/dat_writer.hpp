@@ -16,6 +16,8 @@ namespace styk {
 // name means the whole model and is printed as "ALL". Rows are sorted by node / element id, as
 // ccx does. Throws InputError (at the request's source line) for an unknown set or a variable the
 // .dat report cannot print, and std::runtime_error when the results lack a requested field.
+// *CONTACT PRINT (CSTR, CDIS, CSTATUS) prints one row per constrained slave node, then each
+// pair's total contact force and moment and the equilibrium check (docs/results.md).
 void write_dat(std::ostream& out, const Model& model, const Results& results);
 
 }  // namespace styk

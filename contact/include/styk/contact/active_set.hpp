@@ -1,0 +1,76 @@
+// The semi-smooth Newton (primal-dual active-set) iteration of one load increment.
+//
+// The structure is seen through a linear operator built by the solver: with lambda the
+// generalised multipliers of all constraints (3 per constraint, see ContactConstraint::row) and
+// alpha the rigid motions of bodies held only by contact,
+//   d = d0 - S lambda + G alpha        (generalised contact displacements, 3 per constraint)
+//   G^T lambda = h                     (those bodies' equilibrium)
+// S = B K^-1 B^T is the contact compliance (K with the free rigid motions fixed), G = B R.
+// Each iteration solves the linearised complementarity conditions (friction_law.hpp) of the
+// current status set for (lambda, alpha) exactly (dense LU), so constraints hold to round-off.
+#pragma once
+
+#include <functional>
+#include <string>
+#include <vector>
+
+#include <Eigen/Core>
+
+#include "styk/contact/constraints.hpp"
+#include "styk/contact/friction_law.hpp"
+
+namespace styk::contact {
+
+struct LinearContactSystem {
+  Eigen::VectorXd d0;  // 3 m
+  Eigen::MatrixXd S;   // 3 m x 3 m; columns of components that cannot carry force may be zero
+  Eigen::MatrixXd G;   // 3 m x k
+  Eigen::VectorXd h;   // k
+};
+
+struct ConstraintState {
+  NodeStatus status = NodeStatus::Open;
+  Eigen::Vector3d lambda = Eigen::Vector3d::Zero();  // generalised multipliers
+  Eigen::Vector3d d = Eigen::Vector3d::Zero();       // generalised displacement
+  Eigen::Vector3d d_ref = Eigen::Vector3d::Zero();   // at the last converged increment
+  Eigen::Vector2d slip = Eigen::Vector2d::Zero();    // accumulated slip along t1, t2 (length)
+};
+
+// What carries over from increment to increment and from step to step.
+struct ContactState {
+  std::vector<ConstraintState> nodes;
+  Eigen::VectorXd alpha;  // rigid motions of the bodies held by contact (k)
+  bool started = false;   // an increment has converged
+};
+
+struct IterationRecord {
+  int iteration = 0;
+  int open = 0, stick = 0, slip = 0;
+  int changes = 0;        // status changes against the status set the iteration solved with
+  double residual = 0.0;  // max complementarity residual / largest multiplier
+  double damping = 1.0;   // step length taken (< 1 after a cycle was detected)
+  bool cycle = false;     // this status set was seen before in the increment
+};
+
+struct ActiveSetOptions {
+  int max_iterations = 50;
+  double tolerance = 1e-9;  // on IterationRecord::residual
+};
+
+struct IncrementOutcome {
+  bool converged = false;
+  int iterations = 0;
+  std::vector<IterationRecord> history;
+  std::string reason;          // why it stopped unconverged
+  std::vector<int> offending;  // constraints that changed status in the last iterations
+};
+
+// Runs the iteration from `state` (the last converged increment). On convergence `state` holds
+// the new solution and the increment is committed (d_ref advanced, slip accumulated); otherwise
+// `state` is left as it was. `log` (may be empty) sees every iteration.
+IncrementOutcome solve_increment(const std::vector<ContactConstraint>& constraints,
+                                 const LinearContactSystem& system, ContactState& state,
+                                 const ActiveSetOptions& options,
+                                 const std::function<void(const IterationRecord&)>& log);
+
+}  // namespace styk::contact

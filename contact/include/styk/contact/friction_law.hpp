@@ -1,0 +1,61 @@
+// The complementarity conditions of one contact constraint (hard contact + Coulomb friction) and
+// their semi-smooth Newton linearisation, after Hueber, Stadler and Wohlmuth (SIAM J. Sci. Comput.
+// 30, 2008). Everything is in the generalised variables of ContactConstraint::row(): component 0
+// is normal, 1 and 2 tangential scaled by mu, so the friction cone is the unit-slope cone
+// |lambda_t| <= lambda_n for every law (elliptic anisotropy included).
+//
+// With b = lambda_n + c_n (d_n - gap0) and xi = lambda_t + c_t (d_t - d_t_ref):
+//   open  (b <= 0):            lambda = 0
+//   stick (b > 0, |xi| <= b):  d_n = gap0, d_t = d_t_ref          (tied: always stick)
+//   slip  (b > 0, |xi| > b):   d_n = gap0, F_t = lambda_t - b xi / |xi| = 0
+// c_n, c_t > 0 are complementarity parameters (force per length; any positive values give the same
+// solution, they only steer the iteration). b > eps counts as closed (eps >= 0 absorbs round-off).
+#pragma once
+
+#include <array>
+
+#include <Eigen/Core>
+
+namespace styk::contact {
+
+enum class NodeStatus { Open = 0, Stick = 1, Slip = 2 };
+const char* status_name(NodeStatus status);
+
+// One constraint at an iterate.
+struct LocalPoint {
+  Eigen::Vector3d lambda = Eigen::Vector3d::Zero();  // (lambda_n, lambda_t1, lambda_t2)
+  Eigen::Vector3d d = Eigen::Vector3d::Zero();       // generalised displacement now
+  Eigen::Vector3d d_ref = Eigen::Vector3d::Zero();   // ... at the last converged increment
+  double gap0 = 0.0;
+  double c_n = 1.0;
+  double c_t = 1.0;
+  double eps = 0.0;
+  std::array<bool, 3> live{true, false, false};  // components taking part
+  bool tied = false;                             // no slip
+  bool frictional = false;  // the law has friction (a closed node whose tangential components
+                            // are all held by supports then sticks; frictionless ones slide)
+};
+
+NodeStatus classify(const LocalPoint& point);
+
+// The linearised equations Q d_new + D lambda_new = r (3 rows: normal, t1, t2) of the node for
+// `status` at `point`. Rows of components that are not live are lambda_c = 0.
+struct LocalRows {
+  Eigen::Matrix3d Q = Eigen::Matrix3d::Zero();
+  Eigen::Matrix3d D = Eigen::Matrix3d::Zero();
+  Eigen::Vector3d r = Eigen::Vector3d::Zero();
+};
+LocalRows linearise(const LocalPoint& point, NodeStatus status);
+
+// The slip-branch function F_t(lambda, d) = lambda_t - b xi / |xi| (2 components, t1, t2) whose
+// exact derivative linearise() uses for a slipping node (exposed for the finite-difference test).
+// (The polynomial form |xi| lambda_t - b xi of Hueber et al. has the same roots, but its Newton
+// steps only halve the error far from the cone, where a node arrives after leaving stick.)
+Eigen::Vector2d slip_function(const LocalPoint& point);
+
+// Residual of the complementarity conditions in force units: lambda - proj(lambda + c (...)),
+// the projection onto R+ (normal) and onto the disk of radius max(lambda_n, 0) (tangential; an
+// unbounded disk when tied and closed). Zero exactly at a solution.
+Eigen::Vector3d complementarity_residual(const LocalPoint& point);
+
+}  // namespace styk::contact

@@ -1,0 +1,288 @@
+#include "styk/contact/active_set.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <set>
+
+#include <Eigen/LU>
+
+namespace styk::contact {
+namespace {
+
+// Per-constraint constants of one linear system: which components can carry force and the
+// complementarity parameters (the inverse self-compliance, so c d has force units and the
+// iteration does not depend on the units of the model).
+struct Setup {
+  std::vector<std::array<bool, 3>> live;
+  std::vector<double> c_n, c_t;
+  double load_force = 0.0;  // force scale of the loading as the contacts feel it
+};
+
+Setup set_up(const std::vector<ContactConstraint>& constraints, const LinearContactSystem& system) {
+  const int m = static_cast<int>(constraints.size());
+  Setup s;
+  s.live.resize(m);
+  s.c_n.assign(m, 1.0);
+  s.c_t.assign(m, 1.0);
+  double max_diag = 0.0;
+  for (int i = 0; i < 3 * m; ++i) max_diag = std::max(max_diag, system.S(i, i));
+  if (!(max_diag > 0.0)) max_diag = 1.0;
+  const double g_max = system.G.size() > 0 ? system.G.cwiseAbs().maxCoeff() : 0.0;
+  for (int k = 0; k < m; ++k) {
+    for (int c = 0; c < 3; ++c) {
+      const int row = 3 * k + c;
+      const bool allowed = c == 0 || constraints[k].scale(c) > 0.0;
+      // A component whose dofs are all prescribed moves nothing: its force goes to the reactions.
+      const bool degenerate =
+          system.S(row, row) <= 1e-12 * max_diag &&
+          (system.G.cols() == 0 || system.G.row(row).cwiseAbs().maxCoeff() <= 1e-12 * g_max);
+      s.live[k][c] = allowed && !degenerate;
+    }
+    const double snn = system.S(3 * k, 3 * k);
+    s.c_n[k] = 1.0 / (snn > 1e-12 * max_diag ? snn : max_diag);
+    double stt = 0.0;
+    int count = 0;
+    for (int c = 1; c < 3; ++c)
+      if (s.live[k][c]) {
+        stt += system.S(3 * k + c, 3 * k + c);
+        ++count;
+      }
+    s.c_t[k] = count > 0 && stt > 1e-12 * max_diag ? count / stt : s.c_n[k];
+    s.load_force = std::max(s.load_force, s.c_n[k] * std::abs(system.d0[3 * k]));
+  }
+  return s;
+}
+
+LocalPoint point_of(const ContactConstraint& constraint, const Setup& setup, int k,
+                    const Eigen::Vector3d& lambda, const Eigen::Vector3d& d,
+                    const Eigen::Vector3d& d_ref, double eps) {
+  LocalPoint p;
+  p.lambda = lambda;
+  p.d = d;
+  p.d_ref = d_ref;
+  p.gap0 = constraint.gap0;
+  p.c_n = setup.c_n[k];
+  p.c_t = setup.c_t[k];
+  p.eps = eps;
+  p.live = setup.live[k];
+  p.tied = constraint.law.kind == FrictionLaw::Kind::Tied;
+  p.frictional = constraint.law.has_tangential();
+  return p;
+}
+
+// The iterate: all multipliers, rigid motions and the displacements they give.
+struct Iterate {
+  Eigen::VectorXd lambda, alpha, d;
+};
+
+Eigen::VectorXd displacements(const LinearContactSystem& system, const Iterate& x) {
+  Eigen::VectorXd d = system.d0 - system.S * x.lambda;
+  if (system.G.cols() > 0) d += system.G * x.alpha;
+  return d;
+}
+
+// Solves the linearised conditions of `status` at `at`. Returns false when the system is singular
+// (a body held only by contact is not held by the closed constraints).
+bool solve_linearised(const std::vector<ContactConstraint>& constraints,
+                      const LinearContactSystem& system, const Setup& setup,
+                      const std::vector<NodeStatus>& status, const Iterate& at,
+                      const std::vector<ConstraintState>& previous, double eps, Iterate& out) {
+  const int m = static_cast<int>(constraints.size());
+  const int k = static_cast<int>(system.G.cols());
+  std::vector<int> unknowns;  // global rows 3 node + component
+  for (int j = 0; j < m; ++j)
+    if (status[j] != NodeStatus::Open)
+      for (int c = 0; c < 3; ++c)
+        if (setup.live[j][c]) unknowns.push_back(3 * j + c);
+  const int n = static_cast<int>(unknowns.size());
+  Eigen::MatrixXd A = Eigen::MatrixXd::Zero(n + k, n + k);
+  Eigen::VectorXd rhs = Eigen::VectorXd::Zero(n + k);
+  Eigen::MatrixXd S_rows(3, n);
+  for (int i = 0; i < n;) {
+    const int node = unknowns[i] / 3;
+    int end = i;
+    while (end < n && unknowns[end] / 3 == node) ++end;
+    const LocalPoint p = point_of(constraints[node], setup, node, at.lambda.segment<3>(3 * node),
+                                  at.d.segment<3>(3 * node), previous[node].d_ref, eps);
+    const LocalRows rows = linearise(p, status[node]);
+    for (int j = 0; j < n; ++j) S_rows.col(j) = system.S.block<3, 1>(3 * node, unknowns[j]);
+    const Eigen::MatrixXd QS = rows.Q * S_rows;
+    const Eigen::Vector3d Qd0 = rows.Q * system.d0.segment<3>(3 * node);
+    Eigen::MatrixXd QG;
+    if (k > 0) QG = rows.Q * system.G.middleRows<3>(3 * node);
+    for (int r = i; r < end; ++r) {
+      const int c = unknowns[r] % 3;
+      A.row(r).head(n) = -QS.row(c);
+      for (int q = i; q < end; ++q) A(r, q) += rows.D(c, unknowns[q] % 3);
+      if (k > 0) A.row(r).tail(k) = QG.row(c);
+      rhs[r] = rows.r[c] - Qd0[c];
+    }
+    i = end;
+  }
+  for (int a = 0; a < k; ++a) {
+    for (int j = 0; j < n; ++j) A(n + a, j) = system.G(unknowns[j], a);
+    rhs[n + a] = system.h[a];
+  }
+  out.lambda = Eigen::VectorXd::Zero(3 * m);
+  out.alpha = Eigen::VectorXd::Zero(k);
+  if (n + k > 0) {
+    // Rows mix units (displacement rows of S, force^2 rows of the slip law, force rows of the
+    // rigid equilibrium): equilibrate them so the condition estimate means something.
+    for (int r = 0; r < n + k; ++r) {
+      const double largest = A.row(r).cwiseAbs().maxCoeff();
+      if (!(largest > 0.0)) return false;  // e.g. a free rigid motion no closed node touches
+      A.row(r) /= largest;
+      rhs[r] /= largest;
+    }
+    for (int c = 0; c < n + k; ++c)
+      if (!(A.col(c).cwiseAbs().maxCoeff() > 1e-14)) return false;
+    const Eigen::PartialPivLU<Eigen::MatrixXd> lu(A);
+    const Eigen::VectorXd x = lu.solve(rhs);
+    if (!x.allFinite() || !(lu.rcond() > 1e-15)) return false;
+    for (int j = 0; j < n; ++j) out.lambda[unknowns[j]] = x[j];
+    out.alpha = x.tail(k);
+  }
+  out.d = displacements(system, out);
+  return true;
+}
+
+}  // namespace
+
+IncrementOutcome solve_increment(const std::vector<ContactConstraint>& constraints,
+                                 const LinearContactSystem& system, ContactState& state,
+                                 const ActiveSetOptions& options,
+                                 const std::function<void(const IterationRecord&)>& log) {
+  const int m = static_cast<int>(constraints.size());
+  const int k = static_cast<int>(system.G.cols());
+  IncrementOutcome outcome;
+  if (static_cast<int>(state.nodes.size()) != m) state.nodes.assign(m, ConstraintState{});
+  if (state.alpha.size() != k) state.alpha = Eigen::VectorXd::Zero(k);
+  const Setup setup = set_up(constraints, system);
+
+  // The predictor: last converged multipliers against the new loads.
+  Iterate at;
+  at.lambda.resize(3 * m);
+  for (int j = 0; j < m; ++j) at.lambda.segment<3>(3 * j) = state.nodes[j].lambda;
+  at.alpha = state.alpha;
+  at.d = displacements(system, at);
+  auto force_scale = [&](const Iterate& x) {
+    return std::max(
+        {x.lambda.size() > 0 ? x.lambda.cwiseAbs().maxCoeff() : 0.0, setup.load_force, 1e-300});
+  };
+  std::vector<NodeStatus> status(m);
+  const bool trust_predictor = state.started || k == 0;
+  for (int j = 0; j < m; ++j) {
+    if (trust_predictor) {
+      status[j] =
+          classify(point_of(constraints[j], setup, j, at.lambda.segment<3>(3 * j),
+                            at.d.segment<3>(3 * j), state.nodes[j].d_ref, 1e-12 * force_scale(at)));
+    } else {
+      // A body held only by contact has no meaningful displacement before some contact closes:
+      // start from every touching node closed and sticking.
+      status[j] = constraints[j].gap0 <= 0.0 ? NodeStatus::Stick : NodeStatus::Open;
+    }
+  }
+
+  std::vector<std::vector<NodeStatus>> seen{status};
+  std::vector<std::vector<int>> changed_history;
+  double damping = 1.0;
+  bool closed_touching = !trust_predictor;
+  for (int iteration = 1; iteration <= options.max_iterations; ++iteration) {
+    const double eps = 1e-12 * force_scale(at);
+    Iterate next;
+    if (!solve_linearised(constraints, system, setup, status, at, state.nodes, eps, next)) {
+      if (!closed_touching) {
+        // Close every touching node once and try again before giving up.
+        closed_touching = true;
+        for (int j = 0; j < m; ++j)
+          if (status[j] == NodeStatus::Open && constraints[j].gap0 <= 0.0)
+            status[j] = NodeStatus::Stick;
+        continue;
+      }
+      outcome.reason =
+          "the closed contact constraints do not hold the bodies supported only by "
+          "contact (singular contact system)";
+      outcome.iterations = iteration;
+      return outcome;
+    }
+    if (damping < 1.0) {
+      next.lambda = at.lambda + damping * (next.lambda - at.lambda);
+      next.alpha = at.alpha + damping * (next.alpha - at.alpha);
+      next.d = displacements(system, next);
+    }
+    const double scale = force_scale(next);
+    std::vector<NodeStatus> new_status(m);
+    std::vector<int> changed;
+    double residual = 0.0;
+    IterationRecord record;
+    record.iteration = iteration;
+    record.damping = damping;
+    for (int j = 0; j < m; ++j) {
+      const LocalPoint p = point_of(constraints[j], setup, j, next.lambda.segment<3>(3 * j),
+                                    next.d.segment<3>(3 * j), state.nodes[j].d_ref, 1e-12 * scale);
+      new_status[j] = classify(p);
+      residual = std::max(residual, complementarity_residual(p).cwiseAbs().maxCoeff());
+      if (new_status[j] != status[j]) changed.push_back(j);
+      switch (new_status[j]) {
+        case NodeStatus::Open:
+          ++record.open;
+          break;
+        case NodeStatus::Stick:
+          ++record.stick;
+          break;
+        case NodeStatus::Slip:
+          ++record.slip;
+          break;
+      }
+    }
+    record.changes = static_cast<int>(changed.size());
+    record.residual = residual / scale;
+    bool converged = changed.empty() && record.residual <= options.tolerance;
+    if (converged && damping < 1.0) {
+      // A damped step is only near the solution of its status set: one full step more makes it
+      // exact.
+      converged = false;
+      damping = 1.0;
+    } else if (!converged && !changed.empty() &&
+               std::find(seen.begin(), seen.end(), new_status) != seen.end()) {
+      // A status set seen before: the iteration cycles. Shorter steps break the cycle.
+      record.cycle = true;
+      damping = std::max(damping * 0.5, 1.0 / 64.0);
+    }
+    outcome.history.push_back(record);
+    if (log) log(record);
+    changed_history.push_back(changed);
+    seen.push_back(new_status);
+    at = std::move(next);
+    status = std::move(new_status);
+    outcome.iterations = iteration;
+    if (converged) {
+      outcome.converged = true;
+      for (int j = 0; j < m; ++j) {
+        ConstraintState& s = state.nodes[j];
+        s.status = status[j];
+        s.lambda = at.lambda.segment<3>(3 * j);
+        s.d = at.d.segment<3>(3 * j);
+        if (s.status != NodeStatus::Open)
+          for (int c = 1; c < 3; ++c)
+            if (setup.live[j][c]) s.slip[c - 1] += (s.d[c] - s.d_ref[c]) / constraints[j].scale(c);
+        s.d_ref = s.d;
+      }
+      state.alpha = at.alpha;
+      state.started = true;
+      return outcome;
+    }
+  }
+  outcome.reason = "no convergence in " + std::to_string(options.max_iterations) +
+                   " iterations (last residual " +
+                   std::to_string(outcome.history.empty() ? 0.0 : outcome.history.back().residual) +
+                   ")";
+  std::set<int> offending;
+  const std::size_t last = changed_history.size();
+  for (std::size_t i = last > 4 ? last - 4 : 0; i < last; ++i)
+    offending.insert(changed_history[i].begin(), changed_history[i].end());
+  outcome.offending.assign(offending.begin(), offending.end());
+  return outcome;
+}
+
+}  // namespace styk::contact

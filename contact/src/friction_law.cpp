@@ -1,0 +1,107 @@
+#include "styk/contact/friction_law.hpp"
+
+#include <cmath>
+
+namespace styk::contact {
+namespace {
+
+double normal_indicator(const LocalPoint& p) { return p.lambda[0] + p.c_n * (p.d[0] - p.gap0); }
+
+// Tangential part with the components that do not take part masked to zero.
+Eigen::Vector2d masked(const LocalPoint& p, const Eigen::Vector3d& v) {
+  return {p.live[1] ? v[1] : 0.0, p.live[2] ? v[2] : 0.0};
+}
+
+Eigen::Vector2d trial_traction(const LocalPoint& p) {
+  return masked(p, p.lambda) + p.c_t * (masked(p, p.d) - masked(p, p.d_ref));
+}
+
+bool has_tangential(const LocalPoint& p) { return p.live[1] || p.live[2]; }
+
+}  // namespace
+
+const char* status_name(NodeStatus status) {
+  switch (status) {
+    case NodeStatus::Open:
+      return "open";
+    case NodeStatus::Stick:
+      return "stick";
+    case NodeStatus::Slip:
+      return "slip";
+  }
+  return "?";
+}
+
+NodeStatus classify(const LocalPoint& p) {
+  const double b = normal_indicator(p);
+  if (!(b > p.eps)) return NodeStatus::Open;
+  // Frictionless closed nodes slide freely: "slip" with no tangential force.
+  if (!has_tangential(p)) return p.frictional || p.tied ? NodeStatus::Stick : NodeStatus::Slip;
+  if (p.tied) return NodeStatus::Stick;
+  return trial_traction(p).norm() <= b ? NodeStatus::Stick : NodeStatus::Slip;
+}
+
+Eigen::Vector2d slip_function(const LocalPoint& p) {
+  const Eigen::Vector2d xi = trial_traction(p);
+  return masked(p, p.lambda) - normal_indicator(p) * xi / xi.norm();
+}
+
+LocalRows linearise(const LocalPoint& p, NodeStatus status) {
+  LocalRows rows;
+  if (status == NodeStatus::Open) {
+    rows.D.setIdentity();
+    return rows;
+  }
+  rows.Q(0, 0) = 1.0;  // d_n = gap0
+  rows.r[0] = p.gap0;
+  if (status == NodeStatus::Stick) {
+    for (int k = 1; k < 3; ++k) {
+      rows.Q(k, k) = 1.0;  // d_t = d_t_ref
+      rows.r[k] = p.d_ref[k];
+    }
+  } else if (has_tangential(p)) {
+    // Exact derivative of F = lambda_t - b xi / |xi| at the iterate, with
+    // dxi = d lambda_t + c_t d d_t, db = d lambda_n + c_n d d_n and P = I - e e^T, e = xi / |xi|:
+    //   dF = (I - beta P) d lambda_t - e d lambda_n - c_n e d d_n - beta c_t P d d_t,
+    // beta = b / |xi| < 1 in slip; written for the new values (P xi = 0 simplifies r).
+    const Eigen::Vector2d xi = trial_traction(p);
+    const double length = xi.norm();
+    const double beta = normal_indicator(p) / length;
+    const Eigen::Vector2d e = xi / length;
+    const Eigen::Matrix2d P = Eigen::Matrix2d::Identity() - e * e.transpose();
+    const Eigen::Vector2d dref = masked(p, p.d_ref);
+    rows.D.block<2, 1>(1, 0) = -e;
+    rows.D.block<2, 2>(1, 1) = Eigen::Matrix2d::Identity() - beta * P;
+    rows.Q.block<2, 1>(1, 0) = -p.c_n * e;
+    rows.Q.block<2, 2>(1, 1) = -beta * p.c_t * P;
+    rows.r.tail<2>() = -p.c_n * p.gap0 * e - beta * p.c_t * P * dref;
+  }
+  for (int k = 1; k < 3; ++k)
+    if (!p.live[k]) {
+      rows.Q.row(k).setZero();
+      rows.D.row(k).setZero();
+      rows.D(k, k) = 1.0;
+      rows.r[k] = 0.0;
+    }
+  return rows;
+}
+
+Eigen::Vector3d complementarity_residual(const LocalPoint& p) {
+  Eigen::Vector3d residual = Eigen::Vector3d::Zero();
+  const double b = normal_indicator(p);
+  residual[0] = p.lambda[0] - std::max(0.0, b);
+  if (!has_tangential(p)) return residual;
+  const Eigen::Vector2d a = masked(p, p.lambda);
+  const Eigen::Vector2d xi = trial_traction(p);
+  Eigen::Vector2d projected = xi;
+  if (!(b > p.eps)) {
+    projected.setZero();
+  } else if (!p.tied) {
+    const double radius = std::max(p.lambda[0], 0.0);
+    if (xi.norm() > radius) projected = xi * (radius / xi.norm());
+  }
+  residual.tail<2>() = a - projected;
+  return residual;
+}
+
+}  // namespace styk::contact

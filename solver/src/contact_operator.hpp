@@ -1,0 +1,46 @@
+// The contact constraint operator B (3 rows per contact constraint over the active dofs: the
+// generalised rows of contact::ContactConstraint) and the pieces of contact::LinearContactSystem
+// the structure supplies: the compliance S = B K^-1 B^T (blocked solves with the factor of K), the
+// rigid-mode coupling G = B R, and the images B u of displacement fields.
+#pragma once
+
+#include <vector>
+
+#include <Eigen/Core>
+
+#include "linear_solver.hpp"
+#include "prepared_model.hpp"
+#include "styk/contact/constraints.hpp"
+
+namespace styk::solver_detail {
+
+class ContactOperator {
+ public:
+  ContactOperator(const PreparedModel& prepared,
+                  const std::vector<contact::ContactConstraint>& constraints);
+
+  int rows() const { return static_cast<int>(ptr_.size()) - 1; }
+  // Row i may carry force (normal rows always; tangential rows of frictional constraints).
+  bool row_used(int i) const { return used_[i] != 0; }
+
+  Eigen::VectorXd apply(const std::vector<double>& u) const;                // B u (active dofs)
+  Eigen::VectorXd apply(const Eigen::Ref<const Eigen::VectorXd>& u) const;  // B u
+  void add_transpose(const Eigen::VectorXd& lambda, double factor, std::vector<double>& f) const;
+  Eigen::MatrixXd apply_columns(const Eigen::MatrixXd& U) const;  // B U (columns)
+
+  // S = B K_ff^-1 B^T with `solver` prepared on K; unused rows/columns stay zero. Columns are
+  // solved in blocks of `block` right-hand sides.
+  Eigen::MatrixXd compliance(LinearSolver& solver, int active_dofs, int block = 64) const;
+
+ private:
+  std::vector<int> ptr_;  // row i: entries ptr_[i] .. ptr_[i+1]
+  std::vector<int> dof_;  // active dof
+  std::vector<double> value_;
+  std::vector<char> used_;
+};
+
+// Active nodes touched by a constraint (slave or master), as flags per active node.
+std::vector<char> contact_nodes(const PreparedModel& prepared,
+                                const std::vector<contact::ContactConstraint>& constraints);
+
+}  // namespace styk::solver_detail

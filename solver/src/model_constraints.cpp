@@ -1,0 +1,89 @@
+#include "model_constraints.hpp"
+
+#include <algorithm>
+#include <iterator>
+
+#include "assembly.hpp"
+
+namespace styk::solver_detail {
+
+ModelConstraints ModelConstraints::build(const Model& model, const PreparedModel& prepared) {
+  ModelConstraints out;
+  out.rotations_ = NodeRotations::from_transforms(model, prepared);
+  out.equations_ = EquationElimination::build(model, prepared);
+  return out;
+}
+
+void ModelConstraints::apply(StiffnessMatrix& K) const {
+  rotations_.rotate_stiffness(K);
+  equations_.eliminate(K);
+}
+
+std::vector<int> ModelConstraints::known_dofs(const Model& model, const PreparedModel& prepared,
+                                              const std::vector<int>& prescribed) const {
+  if (equations_.empty()) return prescribed;
+  equations_.check_not_prescribed(model, prepared, prescribed);
+  const std::vector<int> dependent = equations_.dependent_dofs();
+  std::vector<int> known;
+  known.reserve(prescribed.size() + dependent.size());
+  std::merge(prescribed.begin(), prescribed.end(), dependent.begin(), dependent.end(),
+             std::back_inserter(known));
+  return known;
+}
+
+std::vector<double> ModelConstraints::nodal_forces(const Model& model,
+                                                   const PreparedModel& prepared,
+                                                   const StepConditions& conditions) const {
+  StepConditions distributed;
+  distributed.pressures = conditions.pressures;
+  std::vector<double> f = assemble_loads(model, prepared, distributed);
+  rotations_.to_local(f);
+  for (const DofValue& load : conditions.nodal_loads) f[load.dof] += load.value;
+  return f;
+}
+
+std::vector<double> ModelConstraints::plus_global(std::vector<double> f,
+                                                  std::vector<double> global) const {
+  if (global.empty()) return f;
+  rotations_.to_local(global);
+  for (std::size_t i = 0; i < f.size(); ++i) f[i] += global[i];
+  return f;
+}
+
+std::vector<double> ModelConstraints::reduced_forces(std::vector<double> nodal) const {
+  equations_.reduce(nodal);
+  return nodal;
+}
+
+void ModelConstraints::to_global_displacements(std::vector<double>& w) const {
+  equations_.expand(w);
+  rotations_.to_global(w);
+}
+
+std::vector<Restraint> ModelConstraints::restraints(const Model& model,
+                                                    const PreparedModel& prepared,
+                                                    const std::vector<int>& prescribed) const {
+  std::vector<Restraint> out;
+  out.reserve(prescribed.size() + model.equations.size());
+  for (int dof : prescribed) out.push_back(Restraint{{{dof / 3, rotations_.direction(dof)}}});
+  for (const Equation& equation : model.equations) {
+    Restraint restraint;
+    for (const EquationTerm& term : equation.terms) {
+      const int a = prepared.active_of_node[term.node];
+      restraint.terms.emplace_back(a,
+                                   term.coefficient * rotations_.direction(3 * a + term.dof - 1));
+    }
+    out.push_back(std::move(restraint));
+  }
+  return out;
+}
+
+std::vector<int> ModelConstraints::reaction_dofs(const std::vector<int>& prescribed) const {
+  const std::vector<int>& involved = equations_.involved_dofs();
+  std::vector<int> dofs;
+  std::set_union(prescribed.begin(), prescribed.end(), involved.begin(), involved.end(),
+                 std::back_inserter(dofs));
+  return dofs;
+}
+
+}  // namespace styk::solver_detail

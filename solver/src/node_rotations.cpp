@@ -1,0 +1,120 @@
+#include "node_rotations.hpp"
+
+#include <algorithm>
+
+#include <Eigen/Geometry>
+
+namespace styk::solver_detail {
+namespace {
+
+Eigen::Vector3d vec(const Vec3& v) { return {v[0], v[1], v[2]}; }
+
+}  // namespace
+
+bool local_axes_at(const LocalAxes& axes, const Vec3& x, Eigen::Matrix3d& R) {
+  const Eigen::Vector3d a = vec(axes.a), b = vec(axes.b);
+  Eigen::Vector3d e1, e2, e3;
+  if (axes.system == CoordinateSystem::Rectangular) {
+    if (!(a.norm() > 0.0)) return false;
+    e1 = a.normalized();
+    e2 = b - b.dot(e1) * e1;
+    if (!(e2.norm() > 1e-12 * b.norm())) return false;
+    e2.normalize();
+    e3 = e1.cross(e2);
+  } else {
+    const Eigen::Vector3d axis = b - a;
+    if (!(axis.norm() > 0.0)) return false;
+    e3 = axis.normalized();
+    const Eigen::Vector3d from_axis = vec(x) - a;
+    e1 = from_axis - from_axis.dot(e3) * e3;
+    // A node within 1e-12 of the axis (relative to the axis points' scale) has no radial
+    // direction.
+    const double scale = std::max({a.norm(), b.norm(), vec(x).norm(), 1.0});
+    if (!(e1.norm() > 1e-12 * scale)) return false;
+    e1.normalize();
+    e2 = e3.cross(e1);
+  }
+  R.col(0) = e1;
+  R.col(1) = e2;
+  R.col(2) = e3;
+  return true;
+}
+
+NodeRotations NodeRotations::from_transforms(const Model& model, const PreparedModel& prepared) {
+  NodeRotations out;
+  if (model.transforms.empty()) return out;
+  out.rotation_of_node_.assign(prepared.active_nodes(), -1);
+  for (const Transform& transform : model.transforms) {
+    const NodeSet* set = model.find_nset(transform.nset);
+    if (set == nullptr)
+      throw InputError(transform.where,
+                       "*TRANSFORM: node set " + transform.nset + " is not defined");
+    for (int node : set->nodes) {
+      const int a = prepared.active_of_node[node];
+      if (a < 0) continue;
+      Eigen::Matrix3d R;
+      if (!local_axes_at(transform.axes, model.coords[node], R))
+        throw InputError(transform.where,
+                         "*TRANSFORM: the local system is undefined at node " +
+                             std::to_string(model.node_ids[node]) +
+                             (transform.axes.system == CoordinateSystem::Cylindrical
+                                  ? " (it lies on the cylinder axis, which has no radial direction)"
+                                  : ""));
+      if (out.rotation_of_node_[a] >= 0)
+        throw InputError(transform.where,
+                         "*TRANSFORM: node " + std::to_string(model.node_ids[node]) +
+                             " already has a local system from another *TRANSFORM");
+      out.rotation_of_node_[a] = static_cast<int>(out.rotations_.size());
+      out.rotations_.push_back(R);
+    }
+  }
+  if (out.rotations_.empty()) out.rotation_of_node_.clear();
+  return out;
+}
+
+Eigen::Vector3d NodeRotations::direction(int dof) const {
+  const Eigen::Matrix3d* R = of(dof / 3);
+  return R != nullptr ? Eigen::Vector3d(R->col(dof % 3)) : Eigen::Vector3d::Unit(dof % 3);
+}
+
+void NodeRotations::to_local(std::vector<double>& v) const {
+  for (std::size_t a = 0; a < rotation_of_node_.size(); ++a) {
+    if (rotation_of_node_[a] < 0) continue;
+    Eigen::Map<Eigen::Vector3d> block(v.data() + 3 * a);
+    block = rotations_[rotation_of_node_[a]].transpose() * Eigen::Vector3d(block);
+  }
+}
+
+void NodeRotations::to_global(std::vector<double>& v) const {
+  for (std::size_t a = 0; a < rotation_of_node_.size(); ++a) {
+    if (rotation_of_node_[a] < 0) continue;
+    Eigen::Map<Eigen::Vector3d> block(v.data() + 3 * a);
+    block = rotations_[rotation_of_node_[a]] * Eigen::Vector3d(block);
+  }
+}
+
+void NodeRotations::rotate_stiffness(StiffnessMatrix& K) const {
+  if (empty()) return;
+  const NodeGraph& graph = K.graph();
+  std::vector<double>& values = K.values();
+  const Eigen::Matrix3d identity = Eigen::Matrix3d::Identity();
+  for (int a = 0; a < graph.nodes(); ++a) {
+    const Eigen::Matrix3d* Ra = of(a);
+    const std::int64_t stride = K.row_stride(a);
+    for (std::int64_t p = graph.ptr[a]; p < graph.ptr[a + 1]; ++p) {
+      const int b = graph.adj[p];
+      const Eigen::Matrix3d* Rb = of(b);
+      if (Ra == nullptr && Rb == nullptr) continue;
+      double* block = values.data() + K.block_start(a, b);
+      Eigen::Matrix3d Kab;
+      for (int r = 0; r < 3; ++r)
+        for (int c = 0; c < 3; ++c) Kab(r, c) = block[r * stride + c];
+      const Eigen::Matrix3d rotated =
+          (Ra != nullptr ? *Ra : identity).transpose() * Kab * (Rb != nullptr ? *Rb : identity);
+      for (int r = 0; r < 3; ++r)
+        for (int c = 0; c < 3; ++c) block[r * stride + c] = rotated(r, c);
+    }
+  }
+}
+
+}  // namespace styk::solver_detail

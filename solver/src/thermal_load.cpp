@@ -1,0 +1,75 @@
+#include "thermal_load.hpp"
+
+#include "assembly.hpp"
+#include "parallel.hpp"
+
+namespace styk::solver_detail {
+
+std::vector<std::vector<double>> step_temperature_changes(const Model& model) {
+  const int nodes = model.node_count();
+  std::vector<double> initial(nodes, 0.0);
+  for (const NodalTemperature& t : model.initial_temperatures)
+    if (t.node >= 0 && t.node < nodes) initial[t.node] = t.value;
+
+  std::vector<double> current = initial;
+  std::vector<std::vector<double>> out;
+  out.reserve(model.steps.size());
+  for (const Step& step : model.steps) {
+    if (step.temperature_op_new) current = initial;
+    for (const NodalTemperature& t : step.temperatures) {
+      if (t.node < 0 || t.node >= nodes)
+        throw InputError(t.where, "*TEMPERATURE on an undefined node");
+      current[t.node] = t.value;
+    }
+    std::vector<double> dT(nodes);
+    bool any = false;
+    for (int n = 0; n < nodes; ++n) {
+      dT[n] = current[n] - initial[n];
+      any = any || dT[n] != 0.0;
+    }
+    out.push_back(any ? std::move(dT) : std::vector<double>{});
+  }
+  return out;
+}
+
+void element_temperature_changes(const Model& model, int e, const std::vector<double>& nodal_dT,
+                                 Eigen::VectorXd& dT_e) {
+  const int n = model.elements[e].node_count;
+  const int* nodes = model.element_nodes(e);
+  dT_e.resize(n);
+  for (int k = 0; k < n; ++k) dT_e(k) = nodal_dT[nodes[k]];
+}
+
+std::vector<double> assemble_thermal_load(const Model& model, const PreparedModel& prepared,
+                                          const std::vector<double>& nodal_dT, int threads) {
+  threads = resolve_threads(threads);
+  struct Scratch {
+    ElementGeometry geometry;
+    Eigen::VectorXd dT, fe;
+    std::vector<double> f;  // this worker's share of the global vector
+  };
+  std::vector<Scratch> scratch(threads);
+  parallel_for(model.element_count(), threads, 32, [&](int begin, int end, int worker) {
+    Scratch& s = scratch[worker];
+    if (s.f.empty()) s.f.assign(prepared.active_dofs(), 0.0);
+    for (int e = begin; e < end; ++e) {
+      element_temperature_changes(model, e, nodal_dT, s.dT);
+      if (s.dT.isZero(0.0)) continue;  // no change, no load (and no *EXPANSION needed)
+      element_geometry(model, e, s.geometry);
+      const ElementOptions options{model.sections[model.elements[e].section].selective_volumetric};
+      prepared.formulation[e]->thermal_load(s.geometry, *prepared.material[e], RuleKind::Full, s.dT,
+                                            s.fe, options);
+      const int* nodes = model.element_nodes(e);
+      for (int k = 0; k < model.elements[e].node_count; ++k) {
+        const int a = prepared.active_of_node[nodes[k]];
+        for (int d = 0; d < 3; ++d) s.f[3 * a + d] += s.fe(3 * k + d);
+      }
+    }
+  });
+  std::vector<double> f(prepared.active_dofs(), 0.0);
+  for (const Scratch& s : scratch)
+    for (std::size_t i = 0; i < s.f.size(); ++i) f[i] += s.f[i];
+  return f;
+}
+
+}  // namespace styk::solver_detail

@@ -1,0 +1,143 @@
+// The active-set iteration on small systems with known solutions.
+#include "styk/contact/active_set.hpp"
+
+#include <cmath>
+
+#include <Eigen/LU>
+
+#include <gtest/gtest.h>
+
+namespace styk::contact {
+namespace {
+
+ContactConstraint constraint(FrictionLaw::Kind kind, double mu1, double mu2, double gap0) {
+  ContactConstraint c;
+  c.law.kind = kind;
+  c.law.mu1 = mu1;
+  c.law.mu2 = mu2;
+  c.gap0 = gap0;
+  c.area = 1.0;
+  return c;
+}
+
+// One node on springs: normal compliance sn, tangential st (unscaled), loaded so that it would
+// move by (wn, wt1, wt2) without contact. With friction mu the exact solution is
+// lambda_n = (wn - gap0) / sn; stick if |wt| / st <= mu lambda_n, else lambda_t = mu lambda_n.
+LinearContactSystem spring(const ContactConstraint& c, double sn, double st, Eigen::Vector3d w) {
+  LinearContactSystem s;
+  s.S = Eigen::MatrixXd::Zero(3, 3);
+  s.S(0, 0) = sn;
+  s.S(1, 1) = c.scale(1) * c.scale(1) * st;
+  s.S(2, 2) = c.scale(2) * c.scale(2) * st;
+  s.d0 = Eigen::Vector3d(w[0], c.scale(1) * w[1], c.scale(2) * w[2]);
+  s.G.resize(3, 0);
+  s.h.resize(0);
+  return s;
+}
+
+TEST(ActiveSet, SingleNodeSlipsWithCoulombForce) {
+  const std::vector<ContactConstraint> cs{constraint(FrictionLaw::Kind::Coulomb, 0.3, 0.3, 0.0)};
+  const LinearContactSystem s = spring(cs[0], 2.0, 1.0, {1.0, 3.0, 4.0});
+  ContactState state;
+  const IncrementOutcome out = solve_increment(cs, s, state, ActiveSetOptions{}, {});
+  ASSERT_TRUE(out.converged) << out.reason;
+  EXPECT_LE(out.iterations, 8);
+  const double ln = 0.5;
+  EXPECT_EQ(state.nodes[0].status, NodeStatus::Slip);
+  EXPECT_NEAR(state.nodes[0].lambda[0], ln, 1e-12);
+  const Eigen::Vector2d lt = 0.3 * state.nodes[0].lambda.tail<2>();  // unscaled
+  EXPECT_NEAR(lt.norm(), 0.3 * ln, 1e-12);
+  EXPECT_NEAR(lt[0] / lt[1], 3.0 / 4.0, 1e-12);
+  EXPECT_NEAR(state.nodes[0].d[0], 0.0, 1e-14);  // no penetration
+  // Slip = free motion minus the spring's give under the friction force.
+  EXPECT_NEAR(state.nodes[0].slip[0], 3.0 - lt[0], 1e-12);
+}
+
+TEST(ActiveSet, SingleNodeSticksBelowTheCone) {
+  const std::vector<ContactConstraint> cs{constraint(FrictionLaw::Kind::Coulomb, 0.3, 0.3, 0.0)};
+  const LinearContactSystem s = spring(cs[0], 2.0, 1.0, {1.0, 0.06, 0.08});
+  ContactState state;
+  const IncrementOutcome out = solve_increment(cs, s, state, ActiveSetOptions{}, {});
+  ASSERT_TRUE(out.converged) << out.reason;
+  EXPECT_EQ(state.nodes[0].status, NodeStatus::Stick);
+  EXPECT_NEAR(0.3 * state.nodes[0].lambda[1], 0.06, 1e-12);
+}
+
+// Three frictionless constraints coupled through an SPD compliance for which the undamped
+// primal-dual active-set (Newton-min) iteration cycles between status sets (found by a random
+// search). The iteration must notice the cycle, damp, and still reach the exact solution of the
+// complementarity problem, checked against all 2^3 candidate active sets.
+LinearContactSystem cycling_system() {
+  const double S[3][3] = {{0.46730409568758713, -0.6378937782690266, -0.61075370322140887},
+                          {-0.6378937782690266, 0.95620959752347967, 1.0172713925131707},
+                          {-0.61075370322140887, 1.0172713925131707, 1.714998173904813}};
+  const double d0[3] = {-0.62530699336123563, 0.8233007695532486, 0.049934750985255683};
+  LinearContactSystem s;
+  s.S = Eigen::MatrixXd::Zero(9, 9);
+  s.d0 = Eigen::VectorXd::Zero(9);
+  for (int i = 0; i < 3; ++i) {
+    for (int j = 0; j < 3; ++j) s.S(3 * i, 3 * j) = S[i][j];
+    s.d0[3 * i] = d0[i];
+  }
+  s.G.resize(9, 0);
+  s.h.resize(0);
+  return s;
+}
+
+TEST(ActiveSet, CycleIsDetectedAndBroken) {
+  const std::vector<ContactConstraint> cs(3, constraint(FrictionLaw::Kind::Frictionless, 0, 0, 0));
+  const LinearContactSystem s = cycling_system();
+  ContactState state;
+  bool cycle = false;
+  const IncrementOutcome out = solve_increment(cs, s, state, ActiveSetOptions{},
+                                               [&](const IterationRecord& r) { cycle |= r.cycle; });
+  EXPECT_TRUE(cycle);
+  ASSERT_TRUE(out.converged) << out.reason;
+  // The exact LCP solution: lambda >= 0, gap = -d >= 0, lambda gap = 0 for every node.
+  Eigen::Vector3d lambda, d;
+  for (int i = 0; i < 3; ++i) {
+    lambda[i] = state.nodes[i].lambda[0];
+    d[i] = state.nodes[i].d[0];
+  }
+  int solutions = 0;
+  for (int mask = 0; mask < 8; ++mask) {
+    std::vector<int> closed;
+    for (int i = 0; i < 3; ++i)
+      if (mask & (1 << i)) closed.push_back(i);
+    Eigen::MatrixXd A(closed.size(), closed.size());
+    Eigen::VectorXd b(closed.size());
+    for (std::size_t r = 0; r < closed.size(); ++r) {
+      for (std::size_t c = 0; c < closed.size(); ++c) A(r, c) = s.S(3 * closed[r], 3 * closed[c]);
+      b[r] = s.d0[3 * closed[r]];
+    }
+    const Eigen::VectorXd x = closed.empty() ? Eigen::VectorXd() : Eigen::VectorXd(A.lu().solve(b));
+    Eigen::Vector3d l = Eigen::Vector3d::Zero();
+    for (std::size_t r = 0; r < closed.size(); ++r) l[closed[r]] = x[r];
+    Eigen::Vector3d dd;
+    for (int i = 0; i < 3; ++i) {
+      dd[i] = s.d0[3 * i];
+      for (int j = 0; j < 3; ++j) dd[i] -= s.S(3 * i, 3 * j) * l[j];
+    }
+    if ((l.array() >= -1e-12).all() && (dd.array() <= 1e-12).all()) {
+      ++solutions;
+      EXPECT_NEAR((lambda - l).norm(), 0.0, 1e-10);
+      EXPECT_NEAR((d - dd).norm(), 0.0, 1e-10);
+    }
+  }
+  EXPECT_EQ(solutions, 1);  // SPD compliance: the solution is unique
+}
+
+TEST(ActiveSet, NonConvergenceIsReportedWithTheFlippingNodes) {
+  const std::vector<ContactConstraint> cs(3, constraint(FrictionLaw::Kind::Frictionless, 0, 0, 0));
+  ContactState state;
+  ActiveSetOptions few;
+  few.max_iterations = 4;
+  const IncrementOutcome out = solve_increment(cs, cycling_system(), state, few, {});
+  EXPECT_FALSE(out.converged);
+  EXPECT_NE(out.reason.find("no convergence in 4 iterations"), std::string::npos) << out.reason;
+  EXPECT_FALSE(out.offending.empty());
+  EXPECT_FALSE(state.started);  // the state is left as it was
+}
+
+}  // namespace
+}  // namespace styk::contact

@@ -1,0 +1,85 @@
+// The local complementarity laws of styk_contact (friction_law.hpp): classification and the
+// semi-smooth Newton rows, the slip rows checked against central finite differences of the slip
+// function (STYLE practice 9: the contact tangent is what Newton's convergence rests on).
+#include "styk/contact/friction_law.hpp"
+
+#include <gtest/gtest.h>
+
+namespace styk::contact {
+namespace {
+
+LocalPoint slipping_point() {
+  LocalPoint p;
+  p.lambda = {2.0, 0.7, -0.4};
+  p.d = {0.31, 0.9, 0.25};
+  p.d_ref = {0.0, 0.1, -0.2};
+  p.gap0 = 0.3;
+  p.c_n = 1.7;
+  p.c_t = 2.3;
+  p.live = {true, true, true};
+  return p;
+}
+
+TEST(FrictionLaw, Classification) {
+  LocalPoint p = slipping_point();
+  EXPECT_EQ(classify(p), NodeStatus::Slip);
+  p.tied = true;
+  EXPECT_EQ(classify(p), NodeStatus::Stick);
+  p.tied = false;
+  p.d.tail<2>() = p.d_ref.tail<2>();  // no tangential motion, |lambda_t| < lambda_n
+  EXPECT_EQ(classify(p), NodeStatus::Stick);
+  p.lambda[0] = -1.0;
+  p.d[0] = p.gap0 - 0.1;  // tension and an open gap
+  EXPECT_EQ(classify(p), NodeStatus::Open);
+  p.live = {true, false, false};  // frictionless: closed nodes slide freely
+  p.lambda[0] = 1.0;
+  EXPECT_EQ(classify(p), NodeStatus::Slip);
+  p.tied = true;
+  EXPECT_EQ(classify(p), NodeStatus::Stick);
+}
+
+// Q and D of the slip rows are the derivatives of F_t = lambda_t - b xi / |xi|; r is consistent
+// with the Newton step C(x_k) + J (x - x_k) = 0 written as Q d + D lambda = r.
+TEST(FrictionLaw, SlipTangentMatchesFiniteDifferences) {
+  const LocalPoint p = slipping_point();
+  ASSERT_EQ(classify(p), NodeStatus::Slip);
+  const LocalRows rows = linearise(p, NodeStatus::Slip);
+  const double h = 1e-6;
+  for (int j = 0; j < 3; ++j) {
+    LocalPoint plus = p, minus = p;
+    plus.lambda[j] += h;
+    minus.lambda[j] -= h;
+    const Eigen::Vector2d dl = (slip_function(plus) - slip_function(minus)) / (2 * h);
+    plus = p;
+    minus = p;
+    plus.d[j] += h;
+    minus.d[j] -= h;
+    const Eigen::Vector2d dd = (slip_function(plus) - slip_function(minus)) / (2 * h);
+    for (int i = 0; i < 2; ++i) {
+      EXPECT_NEAR(rows.D(1 + i, j), dl[i], 1e-7 * (1 + std::abs(dl[i]))) << i << "," << j;
+      EXPECT_NEAR(rows.Q(1 + i, j), dd[i], 1e-7 * (1 + std::abs(dd[i]))) << i << "," << j;
+    }
+  }
+  const Eigen::Vector3d consistent = rows.Q * p.d + rows.D * p.lambda;
+  const Eigen::Vector2d C = slip_function(p);
+  for (int i = 0; i < 2; ++i) EXPECT_NEAR(rows.r[1 + i], consistent[1 + i] - C[i], 1e-12);
+  // The normal row of a closed node is the equality d_n = gap0.
+  EXPECT_EQ(rows.Q(0, 0), 1.0);
+  EXPECT_EQ(rows.r[0], p.gap0);
+}
+
+TEST(FrictionLaw, ResidualVanishesExactlyOnTheLaw) {
+  LocalPoint p = slipping_point();
+  // A slipping solution: closed (d_n = gap0), lambda_t = lambda_n * direction of the slip.
+  p.d[0] = p.gap0;
+  const Eigen::Vector2d slip(0.3, -0.4);
+  p.d.tail<2>() = p.d_ref.tail<2>() + slip;
+  p.lambda.tail<2>() = p.lambda[0] * slip.normalized();
+  EXPECT_LT(complementarity_residual(p).norm(), 1e-14);
+  EXPECT_EQ(classify(p), NodeStatus::Slip);
+  p.lambda[2] *= 0.5;  // off the cone: a residual
+  EXPECT_GT(complementarity_residual(p).norm(), 0.1);
+}
+
+}  // namespace
+}  // namespace styk::contact
