@@ -84,6 +84,7 @@ render::RenderOptions make_options(const RenderArgs& args, bool has_results) {
   o.averaging = render::parse_averaging(args.averaging);
   o.bands = args.bands;
   o.smooth = args.smooth;
+  o.only_field_faces = args.contact_only;
   o.deform =
       render::parse_deform(args.deform.empty() ? (has_results ? "auto" : "none") : args.deform);
   o.undeformed_outline = !args.no_outline;

@@ -63,6 +63,8 @@ int main(int argc, char** argv) {
   render_cmd->add_option("--averaging", render.averaging, "Stress/strain averaging: none, I, II, centroid (default: II)");
   render_cmd->add_option("--bands", render.bands, "Contour colours, 2..24 (default: 12)")->check(CLI::Range(2, 24));
   render_cmd->add_flag("--smooth", render.smooth, "Continuous colours instead of bands");
+  render_cmd->add_flag("--contact-only", render.contact_only,
+                       "With a contact field: draw only the faces that carry contact output");
   render_cmd->add_option("--deform", render.deform, "Deformation scale: auto, none or a factor (default: auto with results)");
   render_cmd->add_flag("--no-outline", render.no_outline, "No undeformed outline under the deformed shape");
   render_cmd->add_option("--mode", render.mode, "points, wireframe, hidden, shaded, shaded-edges (default: shaded)");

@@ -15,6 +15,7 @@ struct RenderArgs {
   std::string averaging = "II";  // none | I | II | centroid (stress and strain fields)
   int bands = 12;                // 2..24 contour colours
   bool smooth = false;           // continuous colours instead of bands
+  bool contact_only = false;     // with a contact field: draw only the faces carrying it
   std::string deform;            // auto | none | factor; empty = auto for results, none for a deck
   bool no_outline = false;       // no undeformed outline under a deformed shape
   std::string mode = "shaded";   // points | wireframe | hidden | shaded | shaded-edges

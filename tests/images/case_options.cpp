@@ -43,6 +43,8 @@ render::RenderOptions options_for(const ImageCase& c, int width, int height) {
       o.bands = std::stoi(value);
     else if (key == "smooth")
       o.smooth = value == "1";
+    else if (key == "field_faces_only")
+      o.only_field_faces = value == "1";
     else if (key == "deform")
       o.deform = render::parse_deform(value);
     else if (key == "view")

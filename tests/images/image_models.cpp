@@ -3,6 +3,7 @@
 #include <cmath>
 #include <stdexcept>
 
+#include "contact_scene.hpp"
 #include "styk/elements/builtin.hpp"
 #include "styk/mesher/box_mesh.hpp"
 
@@ -139,6 +140,11 @@ TestScene make_scene(const std::string& name, const ElementRegistry& registry) {
     add_ring(model, *element, 2);
     model.source = name + "-ring.inp";
     scene.has_results = true;
+  } else if (name == "contact_block") {
+    model = contact_block_model();
+    scene.increment = solve_contact_block(model, registry);
+    scene.has_results = true;
+    return scene;  // solved, not synthetic
   } else {
     throw std::invalid_argument("unknown test scene " + name);
   }

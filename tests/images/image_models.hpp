@@ -30,6 +30,8 @@ struct TestScene {
 // "box_mesh": the same mesh without results.
 // "c3d21":    2 x 2 curved C3D21 elements (a quarter ring, S1 faces outward-bottom), results.
 // "c3d28":    2 x 2 curved C3D28 elements, same shape, results.
+// "contact_block": the solved contact model of contact_scene.hpp (element sets SLAB, BLOCK),
+//             results from the solver (U, S, contact output).
 // Throws std::invalid_argument for another name.
 TestScene make_scene(const std::string& name, const ElementRegistry& registry);
 

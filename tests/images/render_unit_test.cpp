@@ -159,7 +159,7 @@ TEST(Fields, MissingDataNamesWhatExists) {
     render::evaluate_field(model, inc, "CPRESS", render::Averaging::MethodI);
     FAIL() << "no error";
   } catch (const InputError& e) {
-    EXPECT_NE(std::string(e.what()).find("contact"), std::string::npos) << e.what();
+    EXPECT_NE(std::string(e.what()).find("holds no contact output"), std::string::npos) << e.what();
   }
   EXPECT_THROW(render::evaluate_field(model, inc, "U", render::Averaging::None), InputError);
 }

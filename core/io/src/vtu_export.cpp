@@ -93,10 +93,66 @@ void check_sizes(const Model& model, const IncrementResult& inc) {
       throw std::runtime_error("results of " + increment_label(inc) + " hold " +
                                std::to_string(field->size()) + " nodal vectors for " +
                                std::to_string(nodes) + " nodes");
+  for (const auto* field : {&inc.S_nodal_I, &inc.S_nodal_II})
+    if (!field->empty() && field->size() != nodes)
+      throw std::runtime_error("results of " + increment_label(inc) + " hold " +
+                               std::to_string(field->size()) + " nodal stresses for " +
+                               std::to_string(nodes) + " nodes");
+  for (const ContactNodeResult& c : inc.contact)
+    if (c.node < 0 || static_cast<std::size_t>(c.node) >= nodes)
+      throw std::runtime_error("results of " + increment_label(inc) +
+                               " hold contact output for node index " + std::to_string(c.node) +
+                               " of a model with " + std::to_string(nodes) + " nodes");
   if (!inc.S.empty() && (inc.ip_offset.size() != model.elements.size() + 1 ||
                          inc.S.size() != static_cast<std::size_t>(inc.ip_offset.back())))
     throw std::runtime_error("results of " + increment_label(inc) +
                              ": stresses do not match ip_offset and the elements");
+}
+
+// Tensors in VTK's symmetric-tensor order (XX YY ZZ XY YZ XZ; ours is 11 22 33 12 13 23) and
+// their von Mises values.
+void write_tensor_array(VtuWriter& writer, const std::string& name,
+                        const std::vector<Tensor6>& tensors) {
+  std::vector<double> components, mises_values;
+  components.reserve(6 * tensors.size());
+  mises_values.reserve(tensors.size());
+  for (const Tensor6& s : tensors) {
+    components.insert(components.end(), {s[0], s[1], s[2], s[3], s[5], s[4]});
+    mises_values.push_back(mises(s));
+  }
+  writer.array(name, 6, components, {"XX", "YY", "ZZ", "XY", "YZ", "XZ"});
+  writer.array(name + "_mises", 1, mises_values);
+}
+
+// Contact output as point data: one value per node, NaN at nodes that are no slave node (ParaView
+// leaves NaN out of colour ranges and draws it in its NaN colour). A node that is a slave of more
+// than one pair shows its most engaged entry: the highest status (slip > stick > open), then the
+// larger pressure -- the same rule as the renderer (docs/render.md).
+void write_contact_arrays(VtuWriter& writer, const Model& model, const IncrementResult& inc) {
+  std::vector<const ContactNodeResult*> entry(model.node_ids.size(), nullptr);
+  for (const ContactNodeResult& c : inc.contact) {
+    const ContactNodeResult*& held = entry[c.node];
+    if (!held || c.status > held->status ||
+        (c.status == held->status && c.pressure > held->pressure))
+      held = &c;
+  }
+  const double nan = std::numeric_limits<double>::quiet_NaN();
+  std::vector<double> pressure(entry.size(), nan), shear(entry.size(), nan),
+      slip(entry.size(), nan), gap(entry.size(), nan), status(entry.size(), nan);
+  for (std::size_t n = 0; n < entry.size(); ++n) {
+    const ContactNodeResult* c = entry[n];
+    if (!c) continue;
+    pressure[n] = c->pressure;
+    shear[n] = std::hypot(c->shear[0], c->shear[1]);
+    slip[n] = std::hypot(c->slip[0], c->slip[1]);
+    gap[n] = c->gap;
+    status[n] = static_cast<double>(static_cast<int>(c->status));
+  }
+  writer.array("CPRESS", 1, pressure);
+  writer.array("CSHEAR", 1, shear);
+  writer.array("CSLIP", 1, slip);
+  writer.array("CGAP", 1, gap);
+  writer.array("CSTATUS", 1, status);
 }
 
 }  // namespace
@@ -147,15 +203,18 @@ VtuExportSummary write_vtu(const std::string& path, const Model& model,
     out << "      <PointData>\n";
     if (inc != nullptr && !inc->U.empty()) writer.array("U", 3, flatten(inc->U));
     if (inc != nullptr && !inc->RF.empty()) writer.array("RF", 3, flatten(inc->RF));
+    if (inc != nullptr && !inc->S_nodal_I.empty())
+      write_tensor_array(writer, "S_nodal_I", inc->S_nodal_I);
+    if (inc != nullptr && !inc->S_nodal_II.empty())
+      write_tensor_array(writer, "S_nodal_II", inc->S_nodal_II);
+    if (inc != nullptr && !inc->contact.empty()) write_contact_arrays(writer, model, *inc);
     out << "      </PointData>\n";
 
     out << "      <CellData>\n";
     writer.array("element_id", 1, element_ids);
     if (inc != nullptr && !inc->S.empty()) {
-      // VTK's symmetric-tensor component order is XX YY ZZ XY YZ XZ; ours is 11 22 33 12 13 23.
-      std::vector<double> mean, mean_mises;
-      mean.reserve(6 * exported.size());
-      mean_mises.reserve(exported.size());
+      std::vector<Tensor6> means;
+      means.reserve(exported.size());
       for (const int e : exported) {
         const int first = inc->ip_offset[e], last = inc->ip_offset[e + 1];
         Tensor6 s{};
@@ -164,11 +223,9 @@ VtuExportSummary write_vtu(const std::string& path, const Model& model,
         const double scale =
             last > first ? 1.0 / (last - first) : std::numeric_limits<double>::quiet_NaN();
         for (double& v : s) v *= scale;
-        mean.insert(mean.end(), {s[0], s[1], s[2], s[3], s[5], s[4]});
-        mean_mises.push_back(mises(s));
+        means.push_back(s);
       }
-      writer.array("S_ip_mean", 6, mean, {"XX", "YY", "ZZ", "XY", "YZ", "XZ"});
-      writer.array("S_ip_mean_mises", 1, mean_mises);
+      write_tensor_array(writer, "S_ip_mean", means);
     }
     out << "      </CellData>\n";
 

@@ -56,7 +56,7 @@ void Scene::rebuild(const Document& document, const DisplaySettings& settings) {
                                          "the model or open a results file");
     field = render::evaluate_field(model, *increment, settings.field, settings.averaging);
     const std::array<double, 2> range = render::field_range(*skin, *field);
-    colors = render::ColorScale{range[0], range[1], settings.bands, settings.smooth};
+    colors = render::color_scale_for(*field, range, settings.bands, settings.smooth);
   }
   double scale = 0.0;
   if (increment && settings.deformed && increment->U.size() == model.coords.size()) {

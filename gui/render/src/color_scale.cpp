@@ -15,6 +15,8 @@ double ColorScale::normalized(double value) const {
 }
 
 Rgb ColorScale::band_color(int i) const {
+  if (!palette.empty())
+    return palette[static_cast<std::size_t>(std::clamp(i, 0, int(palette.size()) - 1))];
   // The first band is pure blue and the last pure red, so the extremes read the same as on the
   // smooth scale.
   return rainbow(bands > 1 ? static_cast<double>(i) / (bands - 1) : 0.0);
@@ -26,6 +28,19 @@ std::vector<double> ColorScale::limits() const {
   out.back() = max;  // exact, whatever the rounding of the line above
   return out;
 }
+
+Rgb contact_status_color(int status) {
+  switch (status) {
+    case 0:
+      return {0.0f, 0.35f, 1.0f};  // open
+    case 1:
+      return {0.0f, 0.75f, 0.0f};  // stick
+    default:
+      return {1.0f, 0.0f, 0.0f};  // slip
+  }
+}
+
+Rgb neutral_face_color() { return {0.62f, 0.62f, 0.62f}; }
 
 Rgb rainbow(double t) {
   t = std::clamp(t, 0.0, 1.0);

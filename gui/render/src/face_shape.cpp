@@ -113,6 +113,7 @@ FaceShape make_shape(const TElement& element, const FaceDef& face) {
   shape.flat = make_patch(element, c, 1);
   shape.curved =
       shape.curved_segments > 1 ? make_patch(element, c, shape.curved_segments) : shape.flat;
+  shape.split = shape.curved_segments >= 2 ? shape.curved : make_patch(element, c, 2);
   return shape;
 }
 

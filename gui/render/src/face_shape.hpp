@@ -36,6 +36,10 @@ struct FaceShape {
   std::vector<std::array<double, 2>> extra_st;
   FacePatch flat;    // segments = 1
   FacePatch curved;  // segments = curved_segments
+  // At least 2 segments per direction (= curved when that has 2 or more): a discrete field gives
+  // each grid cell the value of the face node nearest to it in (s, t), so every face node needs
+  // cells of its own.
+  FacePatch split;
 };
 
 // Face shapes of the formulations of one model, built eagerly for every face of every formulation

@@ -8,6 +8,7 @@
 
 #include <Eigen/Eigenvalues>
 
+#include "contact_field.hpp"
 #include "styk/core/diagnostics.hpp"
 
 namespace styk::render {
@@ -135,6 +136,25 @@ ScalarField tensor_field(const Model& model, const IncrementResult& inc, const c
   return field;
 }
 
+// What an increment holds that can be drawn, for messages: "U, RF, S (averaging II), ...".
+std::string drawable_data(const Model& model, const IncrementResult& inc) {
+  std::vector<std::string> held;
+  if (inc.U.size() == model.coords.size() && !inc.U.empty()) held.push_back("U");
+  if (inc.RF.size() == model.coords.size() && !inc.RF.empty()) held.push_back("RF");
+  const auto tensors = [&](const char* q, const TensorArrays& a) {
+    std::vector<std::string> ways;
+    if (!a.element_nodes->empty()) ways.push_back("none");
+    if (!a.nodal_I->empty()) ways.push_back("I");
+    if (!a.nodal_II->empty()) ways.push_back("II");
+    if (!a.centroid->empty()) ways.push_back("centroid");
+    if (!ways.empty()) held.push_back(std::string(q) + ".* (averaging " + join(ways, ", ") + ")");
+  };
+  tensors("S", {&inc.S_element_nodes, &inc.S_nodal_I, &inc.S_nodal_II, &inc.S_centroid, &inc.S});
+  tensors("E", {&inc.E_element_nodes, &inc.E_nodal_I, &inc.E_nodal_II, &inc.E_centroid, &inc.E});
+  if (!inc.contact.empty()) held.push_back("contact (" + join(contact_field_names(), ", ") + ")");
+  return held.empty() ? std::string("nothing drawable") : join(held, ", ");
+}
+
 }  // namespace
 
 Averaging parse_averaging(const std::string& text) {
@@ -172,6 +192,7 @@ std::vector<std::string> field_names() {
       names.push_back("S.tresca");
     }
   }
+  for (const std::string& name : contact_field_names()) names.push_back(name);
   return names;
 }
 
@@ -185,12 +206,9 @@ ScalarField evaluate_field(const Model& model, const IncrementResult& inc, const
     return InputError({}, "unknown field '" + name + "'; fields: " + join(field_names(), ", "));
   };
 
-  // Extension point for contact output (DESIGN "Data flow": pressure, shear, slip, gap, status):
-  // once IncrementResult carries per-contact-node arrays, evaluate them here as Node fields.
-  if (quantity == "CPRESS" || quantity == "CSLIP" || quantity == "CSTATUS" ||
-      quantity == "CSHEAR" || quantity == "CGAP" || quantity == "CONTACT")
-    throw InputError({}, "contact field '" + name +
-                             "' cannot be drawn yet: the results schema holds no contact output");
+  // Contact output (DESIGN "Data flow": pressure, shear, slip, gap, status) at the slave nodes.
+  if (is_contact_quantity(quantity))
+    return evaluate_contact_field(model, inc, quantity, suffix, drawable_data(model, inc));
 
   if (quantity == "U" || quantity == "RF") {
     const int component = vector_component(suffix);
@@ -230,6 +248,21 @@ ScalarField evaluate_field(const Model& model, const IncrementResult& inc, const
     return field;
   }
   throw unknown();
+}
+
+ColorScale color_scale_for(const ScalarField& field, const std::array<double, 2>& range, int bands,
+                           bool smooth) {
+  if (field.categories.empty()) return ColorScale{range[0], range[1], bands, smooth};
+  // Category k sits in the middle of band k: value k maps to (k + 0.5) / count.
+  ColorScale scale;
+  const int count = static_cast<int>(field.categories.size());
+  scale.min = -0.5;
+  scale.max = count - 0.5;
+  scale.bands = count;
+  scale.smooth = false;
+  for (int k = 0; k < count; ++k) scale.palette.push_back(contact_status_color(k));
+  scale.labels = field.categories;
+  return scale;
 }
 
 double max_displacement(const IncrementResult& inc, const std::vector<int>& nodes) {

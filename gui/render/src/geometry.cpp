@@ -105,20 +105,32 @@ class LayerTessellator {
                    FrameGeometry& g)
       : skin_(skin), rq_(rq), place_(place), g_(g) {}
 
-  void face(const SkinFace& sf, const Rgb& color, std::vector<EdgeRef>& edges) {
+  void face(const SkinFace& sf, const Rgb& layer_color, std::vector<EdgeRef>& edges) {
     const Model& model = skin_.model();
     const FaceShape& shape = skin_.shapes().get(skin_.formulations()[sf.element], sf.face);
     const int* conn = model.element_nodes(sf.element);
+    // A field with gaps (contact output: the slave nodes only) colours just the faces it covers
+    // entirely; the others are neutral grey, or left out on request.
+    const ScalarField* field = rq_.field;
+    Rgb color = layer_color;
+    if (field && !covers(*field, shape.curved, conn)) {
+      if (rq_.hide_undefined_faces) return;
+      field = nullptr;
+      color = neutral_face_color();
+    }
+    const bool discrete = field && !field->categories.empty();
     const std::array<V3, 4> corner = {
         place_(conn[shape.corners[0]]), place_(conn[shape.corners[1]]),
         place_(conn[shape.corners[2]]), place_(conn[shape.corners[3]])};
-    const FacePatch& patch = needs_curved(shape, conn, corner) ? shape.curved : shape.flat;
+    const bool field_varies = field && field->location != FieldLocation::Element;
+    const FacePatch& patch = discrete                                          ? shape.split
+                             : needs_curved(shape, conn, corner, field_varies) ? shape.curved
+                                                                               : shape.flat;
 
     const std::size_t count = patch.nodes.size();
     local_x_.resize(count);
     local_v_.assign(count, 0.0);
     for (std::size_t a = 0; a < count; ++a) local_x_[a] = place_(conn[patch.nodes[a]]);
-    const ScalarField* field = rq_.field;
     double element_value = 0.0;
     if (field) {
       const Element& element = model.elements[sf.element];
@@ -135,6 +147,7 @@ class LayerTessellator {
     const double face_len = norm(face_normal);
     if (face_len > 0) face_normal = (1.0 / face_len) * face_normal;
 
+    const int n = patch.segments;
     const auto base = static_cast<std::uint32_t>(g_.face_vertices.size());
     for (int p = 0; p < patch.points(); ++p) {
       V3 x, ds, dt;
@@ -146,19 +159,35 @@ class LayerTessellator {
         x = x + N[a] * local_x_[a];
         ds = ds + Ns[a] * local_x_[a];
         dt = dt + Nt[a] * local_x_[a];
-        if (field && field->location != FieldLocation::Element) value += N[a] * local_v_[a];
+        if (field_varies && !discrete) value += N[a] * local_v_[a];
       }
-      V3 n = cross(dt, ds);  // face nodes circle with the normal into the element: flip it out
-      const double len = norm(n);
-      n = len > 1e-12 * (dot(ds, ds) + dot(dt, dt)) && len > 0 ? (1.0 / len) * n : face_normal;
+      if (discrete)
+        value =
+            nearest_value(shape, conn, *field, double(p % (n + 1)) / n, double(p / (n + 1)) / n);
+      V3 normal = cross(dt, ds);  // face nodes circle with the normal into the element: flip it out
+      const double len = norm(normal);
+      normal =
+          len > 1e-12 * (dot(ds, ds) + dot(dt, dt)) && len > 0 ? (1.0 / len) * normal : face_normal;
       const float t = field ? static_cast<float>(rq_.colors->normalized(value)) : -1.0f;
-      g_.face_vertices.push_back(make_vertex(x, n, color, t));
+      g_.face_vertices.push_back(make_vertex(x, normal, color, t));
     }
-    const int n = patch.segments;
     for (int j = 0; j < n; ++j)
       for (int i = 0; i < n; ++i) {
-        const std::uint32_t v00 = base + j * (n + 1) + i, v10 = v00 + 1, v01 = v00 + (n + 1),
-                            v11 = v01 + 1;
+        std::uint32_t v00 = base + j * (n + 1) + i, v10 = v00 + 1, v01 = v00 + (n + 1),
+                      v11 = v01 + 1;
+        if (discrete) {
+          // One colour per cell, that of the nearest face node: the cell gets vertices of its own
+          // so that no colour is interpolated between two categories.
+          const float t = static_cast<float>(rq_.colors->normalized(
+              nearest_value(shape, conn, *field, (i + 0.5) / n, (j + 0.5) / n)));
+          const auto own = static_cast<std::uint32_t>(g_.face_vertices.size());
+          for (std::uint32_t v : {v00, v10, v11, v01}) {
+            Vertex copy = g_.face_vertices[v];
+            copy.t = t;
+            g_.face_vertices.push_back(copy);
+          }
+          v00 = own, v10 = own + 1, v11 = own + 2, v01 = own + 3;
+        }
         g_.triangles.insert(g_.triangles.end(), {v00, v10, v11, v00, v11, v01});
       }
     for (int e = 0; e < 4; ++e) {
@@ -172,9 +201,10 @@ class LayerTessellator {
   // A face with only corners is bilinear; a higher-order face is drawn subdivided when a field
   // varies over it or when, as placed (deformed), its other nodes leave the bilinear patch of
   // its corners by more than 1e-4 of its diagonals.
-  bool needs_curved(const FaceShape& shape, const int* conn, const std::array<V3, 4>& c) const {
+  bool needs_curved(const FaceShape& shape, const int* conn, const std::array<V3, 4>& c,
+                    bool field_varies) const {
     if (shape.curved_segments == 1) return false;
-    if (rq_.field && rq_.field->location != FieldLocation::Element) return true;
+    if (field_varies) return true;
     const double tolerance = 1e-4 * (norm(c[2] - c[0]) + norm(c[3] - c[1]));
     for (std::size_t k = 0; k < shape.extra_nodes.size(); ++k) {
       const double s = shape.extra_st[k][0], t = shape.extra_st[k][1];
@@ -183,6 +213,30 @@ class LayerTessellator {
       if (norm(place_(conn[shape.extra_nodes[k]]) - bilinear) > tolerance) return true;
     }
     return false;
+  }
+
+  // Whether every node of the face has a value of the field.
+  static bool covers(const ScalarField& field, const FacePatch& patch, const int* conn) {
+    if (field.defined.empty()) return true;
+    for (int a : patch.nodes)
+      if (!field.defined[conn[a]]) return false;
+    return true;
+  }
+
+  // The value of the face node nearest to (s, t) (corners at the unit square's corners, the other
+  // face nodes at their own (s, t)); the first one listed wins a tie.
+  static double nearest_value(const FaceShape& shape, const int* conn, const ScalarField& field,
+                              double s, double t) {
+    static constexpr double kCorner[4][2] = {{0, 0}, {1, 0}, {1, 1}, {0, 1}};
+    double best = std::numeric_limits<double>::max(), value = 0.0;
+    const auto visit = [&](int local, double ns, double nt) {
+      const double d = (s - ns) * (s - ns) + (t - nt) * (t - nt);
+      if (d < best) best = d, value = field.values[conn[local]];
+    };
+    for (int k = 0; k < 4; ++k) visit(shape.corners[k], kCorner[k][0], kCorner[k][1]);
+    for (std::size_t k = 0; k < shape.extra_nodes.size(); ++k)
+      visit(shape.extra_nodes[k], shape.extra_st[k][0], shape.extra_st[k][1]);
+    return value;
   }
 
   const SkinModel& skin_;
@@ -291,7 +345,7 @@ FrameGeometry build_geometry(const SkinModel& skin, const GeometryRequest& rq) {
     if (!rq.points) continue;
     for (int node : layer.nodes) {
       float t = -1.0f;
-      if (rq.field && rq.field->location == FieldLocation::Node)
+      if (rq.field && rq.field->location == FieldLocation::Node && rq.field->defined_at(node))
         t = static_cast<float>(rq.colors->normalized(rq.field->values[node]));
       g.points.push_back(make_vertex(place(node), V3{}, layer.color, t));
     }
@@ -300,6 +354,11 @@ FrameGeometry build_geometry(const SkinModel& skin, const GeometryRequest& rq) {
     GeometryRequest undeformed;
     undeformed.points = false;
     undeformed.feature_angle_degrees = rq.feature_angle_degrees;
+    if (rq.hide_undefined_faces) {  // the outline of the same faces
+      undeformed.field = rq.field;
+      undeformed.colors = rq.colors;
+      undeformed.hide_undefined_faces = true;
+    }
     FrameGeometry base = build_geometry(skin, undeformed);
     g.outline = std::move(base.features);
     for (Vertex& v : g.outline)
@@ -321,7 +380,8 @@ std::array<double, 2> field_range(const SkinModel& skin, const ScalarField& fiel
   const auto visit = [&](double v) { lo = std::min(lo, v), hi = std::max(hi, v); };
   const Model& model = skin.model();
   if (field.location == FieldLocation::Node) {
-    for (int n : skin.visible_nodes()) visit(field.values[n]);
+    for (int n : skin.visible_nodes())
+      if (field.defined_at(n)) visit(field.values[n]);
   } else {
     for (const SkinModel::LayerSkin& layer : skin.layers())
       for (int e : layer.elements) {

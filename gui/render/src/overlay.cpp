@@ -81,13 +81,19 @@ Overlay build_overlay(const OverlayContent& content, int width, int height) {
                  rainbow(1.0 - double(k) / slices), rainbow(1.0 - double(k + 1) / slices));
       }
     }
-    // Limits: label i at the boundary below band i from the top, i.e. the maximum first.
+    // Limits: label i at the boundary below band i from the top, i.e. the maximum first. A
+    // discrete scale names its bands instead, each name beside the middle of its band.
+    const bool named = !scale.labels.empty();
     const std::vector<double> limits = scale.limits();
     const int label_x = bar_x + bar_width + 3 * s;
     int label_width = 0;
     for (int i = 0; i <= bands; ++i) {
-      const int y = bar_top + i * band_height - kGlyphHeight * s / 2;
-      const TextItem label{format_legend_value(limits[bands - i]), label_x, y, s};
+      if (named && i == bands) break;
+      const int y =
+          bar_top + i * band_height - kGlyphHeight * s / 2 + (named ? band_height / 2 : 0);
+      const std::string text = named ? scale.labels[static_cast<std::size_t>(bands - 1 - i)]
+                                     : format_legend_value(limits[bands - i]);
+      const TextItem label{text, label_x, y, s};
       add_text(o, label, kInk);
       o.legend_labels.push_back(label);
       label_width = std::max(label_width, text_width(label.text, s));

@@ -113,8 +113,15 @@ RenderJob::RenderJob(const Model& model, const ElementRegistry& registry,
                                "mesh only");
     field_ = std::make_unique<ScalarField>(
         evaluate_field(model, *increment_, options_.field, options_.averaging));
+    if (!field_->defined.empty()) {
+      const std::vector<int> shown = skin_->visible_nodes();
+      if (std::none_of(shown.begin(), shown.end(), [&](int n) { return field_->defined_at(n); }))
+        throw InputError({}, "field '" + field_->name +
+                                 "' has no value at the nodes shown (for contact output: the "
+                                 "slave surfaces are hidden or filtered out)");
+    }
     const std::array<double, 2> range = field_range(*skin_, *field_);
-    colors_ = ColorScale{range[0], range[1], options_.bands, options_.smooth};
+    colors_ = color_scale_for(*field_, range, options_.bands, options_.smooth);
   }
 
   if (options_.deform.kind != DeformSpec::Kind::None) {
@@ -146,7 +153,9 @@ RenderJob::RenderJob(const Model& model, const ElementRegistry& registry,
   const float big = std::numeric_limits<float>::max();
   std::array<float, 3> lo{big, big, big}, hi{-big, -big, -big};
   const Vec3 c = skin_->centre();
+  const bool fit_field_faces = options_.only_field_faces && field_ && !field_->defined.empty();
   for (int n : skin_->visible_nodes()) {
+    if (fit_field_faces && !field_->defined_at(n)) continue;  // only those faces are drawn
     const Vec3& x = model.coords[n];
     grow_bounds(lo, hi, Vec3{x[0] - c[0], x[1] - c[1], x[2] - c[2]});
     if (scale_ > 0) {
@@ -175,7 +184,19 @@ std::vector<std::string> RenderJob::title_lines() const {
                   increment_->total_time);
     lines.push_back(buffer);
   }
-  if (field_) {
+  if (field_ && !field_->categories.empty()) {
+    // A discrete field: how many visible nodes are in each category.
+    std::vector<int> counts(field_->categories.size(), 0);
+    for (int n : skin_->visible_nodes())
+      if (field_->defined_at(n)) {
+        const auto k = static_cast<std::size_t>(field_->values[n]);
+        if (k < counts.size()) ++counts[k];
+      }
+    std::string line = "Field: " + field_->name + "  Nodes:";
+    for (std::size_t k = 0; k < counts.size(); ++k)
+      line += " " + field_->categories[k] + " " + std::to_string(counts[k]);
+    lines.push_back(line);
+  } else if (field_) {
     lines.push_back("Field: " + field_->name +
                     (field_->uses_averaging ? "  Averaging: " + averaging_name(options_.averaging)
                                             : std::string()) +
@@ -207,6 +228,7 @@ Frame RenderJob::frame(double fraction) const {
   }
   request.field = field_.get();
   request.colors = field_ ? &colors_ : nullptr;
+  request.hide_undefined_faces = options_.only_field_faces;
   request.points = options_.mode == DisplayMode::Points;
   frame.geometry = build_geometry(*skin_, request);
   frame.camera = camera_;

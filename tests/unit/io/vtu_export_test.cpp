@@ -209,6 +209,72 @@ TEST(VtuExport, WritesMeshAndIncrementThatParseBack) {
   EXPECT_NEAR(mises[0], 3.5, 1e-12);
   EXPECT_NEAR(mises[1], std::sqrt(267.0), 1e-12);
   EXPECT_NEAR(mises[2], 0.0, 1e-12);
+  // No nodal stresses and no contact in this increment: no such arrays.
+  EXPECT_FALSE(has_array(doc, "S_nodal_II"));
+  EXPECT_FALSE(has_array(doc, "CSTATUS"));
+}
+
+// Nodal stresses (both averaging methods) go out as 6-component point data in VTK order with
+// their Mises values; contact output as one number per node, NaN away from the slave nodes.
+TEST(VtuExport, WritesNodalStressesAndContactPointData) {
+  const Model model = two_hex_model();
+  IncrementResult inc = two_hex_results(model);
+  for (int n = 0; n < model.node_count(); ++n) {
+    inc.S_nodal_I.push_back({1.0 * n, 0, 0, 0, 0, 0});
+    inc.S_nodal_II.push_back({0, 0, 0, 1.0 * n, 2.0 * n, 3.0 * n});  // 12, 13, 23
+  }
+  ContactNodeResult a;  // node 6: sticking, pressure 4, shear (3, 4) -> 5, slip (0.6, 0.8) -> 1
+  a.node = 6, a.status = ContactStatus::Stick, a.pressure = 4.0, a.shear = {3.0, 4.0};
+  a.slip = {0.6, 0.8}, a.gap = 0.0;
+  ContactNodeResult b;  // node 7: open with a gap of 0.25
+  b.node = 7, b.status = ContactStatus::Open, b.gap = 0.25;
+  ContactNodeResult c;  // node 7 again in a second pair, slipping: the most engaged entry wins
+  c.pair = 1, c.node = 7, c.status = ContactStatus::Slip, c.pressure = 2.0, c.slip = {0.0, -2.0};
+  inc.contact = {a, b, c};
+
+  const std::string path = io_test::fresh_dir("vtu_nodal") + "/nodal.vtu";
+  write_vtu(path, model, &inc);
+  const std::vector<XmlElement> doc = scan_xml(io_test::read_text(path));
+
+  const std::vector<double> s1 = decode_array<double>(data_array(doc, "S_nodal_I"));
+  ASSERT_EQ(s1.size(), 6u * 12u);
+  EXPECT_EQ(data_array(doc, "S_nodal_I").attributes.at("NumberOfComponents"), "6");
+  EXPECT_EQ(data_array(doc, "S_nodal_II").attributes.at("ComponentName4"), "YZ");
+  EXPECT_EQ(s1[6 * 5 + 0], 5.0);
+  const std::vector<double> s2 = decode_array<double>(data_array(doc, "S_nodal_II"));
+  ASSERT_EQ(s2.size(), 6u * 12u);
+  // Node 2: (12, 13, 23) = (2, 4, 6) -> VTK XY YZ XZ = 2, 6, 4.
+  EXPECT_EQ((std::vector<double>(s2.begin() + 12, s2.begin() + 18)),
+            (std::vector<double>{0, 0, 0, 2, 6, 4}));
+  const std::vector<double> m1 = decode_array<double>(data_array(doc, "S_nodal_I_mises"));
+  const std::vector<double> m2 = decode_array<double>(data_array(doc, "S_nodal_II_mises"));
+  ASSERT_EQ(m1.size(), 12u);
+  ASSERT_EQ(m2.size(), 12u);
+  EXPECT_NEAR(m1[5], 5.0, 1e-12);  // uniaxial
+  // Pure shear (2, 4, 6): sqrt(3 (4 + 16 + 36)) = sqrt(168).
+  EXPECT_NEAR(m2[2], std::sqrt(168.0), 1e-12);
+
+  const std::vector<double> pressure = decode_array<double>(data_array(doc, "CPRESS"));
+  const std::vector<double> slip = decode_array<double>(data_array(doc, "CSLIP"));
+  const std::vector<double> status = decode_array<double>(data_array(doc, "CSTATUS"));
+  const std::vector<double> shear = decode_array<double>(data_array(doc, "CSHEAR"));
+  const std::vector<double> gap = decode_array<double>(data_array(doc, "CGAP"));
+  for (const auto* v : {&pressure, &slip, &status, &shear, &gap}) {
+    ASSERT_EQ(v->size(), 12u);
+    for (int n = 0; n < 12; ++n) {
+      if (n != 6 && n != 7) {
+        EXPECT_TRUE(std::isnan((*v)[n])) << "node " << n;
+      }
+    }
+  }
+  EXPECT_EQ(pressure[6], 4.0);
+  EXPECT_NEAR(shear[6], 5.0, 1e-12);
+  EXPECT_NEAR(slip[6], 1.0, 1e-12);
+  EXPECT_EQ(status[6], 1.0);
+  EXPECT_EQ(gap[6], 0.0);
+  EXPECT_EQ(status[7], 2.0);  // the slipping entry, not the open one
+  EXPECT_EQ(pressure[7], 2.0);
+  EXPECT_NEAR(slip[7], 2.0, 1e-12);
 }
 
 TEST(VtuExport, MeshOnlyHasNoResultArrays) {
@@ -218,6 +284,8 @@ TEST(VtuExport, MeshOnlyHasNoResultArrays) {
   const std::vector<XmlElement> doc = scan_xml(io_test::read_text(path));
   EXPECT_FALSE(has_array(doc, "U"));
   EXPECT_FALSE(has_array(doc, "S_ip_mean"));
+  EXPECT_FALSE(has_array(doc, "S_nodal_I"));
+  EXPECT_FALSE(has_array(doc, "CPRESS"));
   EXPECT_TRUE(has_array(doc, "element_id"));
   EXPECT_EQ(decode_array<double>(data_array(doc, "Points")).size(), 36u);
 }

@@ -21,8 +21,11 @@ struct VtuExportSummary {
 // drawn with fewer nodes than they have (documented in docs/results.md, "VTU export").
 int vtk_cell_type_for(const std::string& element_type);
 
-// Writes the mesh and, when `inc` is not null, its point data (U, RF) and cell data (S_ip_mean:
-// stress averaged over the element's integration points, S_ip_mean_mises: von Mises of that mean).
+// Writes the mesh and, when `inc` is not null, its point data (U, RF; the nodal stresses
+// S_nodal_I, S_nodal_II and their Mises values when the increment holds them; contact output
+// CPRESS, CSHEAR, CSLIP, CGAP, CSTATUS when it holds any, NaN away from slave nodes) and cell
+// data (S_ip_mean: stress averaged over the element's integration points, S_ip_mean_mises: von
+// Mises of that mean).
 // Every element gets its id in the cell array "element_id". Elements whose type has no VTK cell
 // are skipped and counted in the returned summary. Writes `path + ".tmp"` and renames it. Throws
 // std::runtime_error when the file cannot be written or `inc` does not match the model's sizes.

@@ -14,10 +14,18 @@ constexpr int kMaxBands = 24;
 constexpr int kDefaultBands = 12;
 
 struct ColorScale {
+  ColorScale() = default;
+  ColorScale(double min_value, double max_value, int band_count, bool smooth_colors)
+      : min(min_value), max(max_value), bands(band_count), smooth(smooth_colors) {}
+
   double min = 0.0;
   double max = 1.0;
   int bands = kDefaultBands;  // number of colours of a banded scale; the legend's intervals
   bool smooth = false;        // continuous colours instead of bands
+  // A discrete scale (CSTATUS): band i has colour palette[i] and is named labels[i]; the legend
+  // prints the names instead of limits. Empty: the rainbow with numeric limits.
+  std::vector<Rgb> palette;
+  std::vector<std::string> labels;
 
   // Position of a value on the scale, 0 at min and 1 at max (clamped). A scale of zero width puts
   // everything at 0.
@@ -27,6 +35,12 @@ struct ColorScale {
   // bands + 1 limits from min to max.
   std::vector<double> limits() const;
 };
+
+// The colours of the contact status categories: open, stick, slip (blue, green, red; none of
+// them grey, the colour of the faces without contact output).
+Rgb contact_status_color(int status);
+// The neutral grey of faces where a field has no value (e.g. away from the contact surfaces).
+Rgb neutral_face_color();
 
 // Continuous rainbow from blue (t = 0) over cyan, green and yellow to red (t = 1): the hue runs
 // linearly from 240 to 0 degrees at full saturation, so equal steps in t give distinct colours.

@@ -1,14 +1,18 @@
 // Scalar fields the renderer colours the model with, taken from one increment of the results
-// (SPEC §5): nodal vectors (U, RF: magnitude or component) and stress/strain tensors (components,
-// Mises, principal values) at the averaging the user asks for. The renderer never recomputes what
-// the solver stored: averaging picks one of the recovered arrays of IncrementResult.
+// (SPEC §5): nodal vectors (U, RF: magnitude or component), stress/strain tensors (components,
+// Mises, principal values) at the averaging the user asks for, and contact output at the slave
+// nodes (pressure, shear, slip, gap, and the status as a discrete field). The renderer never
+// recomputes what the solver stored: averaging picks one of the recovered arrays of
+// IncrementResult.
 #pragma once
 
+#include <array>
 #include <string>
 #include <vector>
 
 #include "styk/core/model.hpp"
 #include "styk/core/results.hpp"
+#include "styk/render/color_scale.hpp"
 
 namespace styk::render {
 
@@ -36,6 +40,15 @@ struct ScalarField {
   FieldLocation location = FieldLocation::Node;
   bool uses_averaging = false;  // tensor fields do; U and RF do not
   std::vector<double> values;
+  // Node fields only: per node, 1 where the field has a value (contact fields: the slave nodes).
+  // Empty: defined everywhere. A face is drawn with the field only when every one of its nodes
+  // has a value; the others are drawn neutral grey (or left out, GeometryRequest).
+  std::vector<char> defined;
+  // Non-empty: a discrete field whose values are indices into these names (CSTATUS: open, stick,
+  // slip); drawn one colour per category, each face node's colour over its share of the face.
+  std::vector<std::string> categories;
+
+  bool defined_at(int node) const { return defined.empty() || defined[node] != 0; }
 };
 
 // Every field name evaluate_field() accepts, for messages and `--help`.
@@ -44,10 +57,17 @@ std::vector<std::string> field_names();
 // Evaluates field `name` (e.g. "U", "U.z", "RF.mag", "S.mises", "S.p1", "E.11") of `increment`.
 // Throws InputError naming the accepted fields when `name` is unknown, and naming the data the
 // increment does hold when the requested array is empty (e.g. averaging II asked for, but the
-// solver stored no S_nodal_II). Contact fields (CPRESS, CSLIP, CSTATUS) are recognised and
-// rejected with the reason: the results schema does not hold contact output yet.
+// solver stored no S_nodal_II). Contact fields -- CPRESS (normal pressure), CSHEAR, CSHEAR.1/.2
+// (shear traction magnitude / along t1, t2), CSLIP, CSLIP.1/.2 (accumulated slip), CGAP, CSTATUS
+// (open / stick / slip) -- are Node fields defined at the slave nodes; an increment without
+// contact output is an InputError naming the fields it does hold.
 ScalarField evaluate_field(const Model& model, const IncrementResult& increment,
                            const std::string& name, Averaging averaging);
+
+// The colour scale of a field over `range` (field_range): a continuous field gets the banded or
+// smooth rainbow; a discrete one one band per category with the category colours and names.
+ColorScale color_scale_for(const ScalarField& field, const std::array<double, 2>& range, int bands,
+                           bool smooth);
 
 // Largest displacement magnitude over the given nodes (all nodes when `nodes` is empty).
 double max_displacement(const IncrementResult& increment, const std::vector<int>& nodes);

@@ -83,15 +83,18 @@ struct GeometryRequest {
   double scale = 0.0;                               // deformation scale factor
   const ScalarField* field = nullptr;               // nullptr = layer colours
   const ColorScale* colors = nullptr;               // required with a field
-  bool points = true;                               // fill FrameGeometry::points
-  bool outline = false;                             // fill FrameGeometry::outline (undeformed)
-  double feature_angle_degrees = 30.0;              // crease angle of feature lines
+  // With a field that has values at some nodes only (contact output): leave out the faces it
+  // does not cover instead of drawing them neutral grey.
+  bool hide_undefined_faces = false;
+  bool points = true;                   // fill FrameGeometry::points
+  bool outline = false;                 // fill FrameGeometry::outline (undeformed)
+  double feature_angle_degrees = 30.0;  // crease angle of feature lines
 };
 
 FrameGeometry build_geometry(const SkinModel& skin, const GeometryRequest& request);
 
-// Minimum and maximum of a field over the visible elements (their nodes, element nodes or
-// elements, as the field is located). {0, 0} when nothing is visible.
+// Minimum and maximum of a field over the visible elements (their nodes where the field is
+// defined, element nodes or elements, as the field is located). {0, 0} when nothing is visible.
 std::array<double, 2> field_range(const SkinModel& skin, const ScalarField& field);
 
 }  // namespace styk::render

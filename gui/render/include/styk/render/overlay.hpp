@@ -29,7 +29,8 @@ struct PixelRect {
 struct Overlay {
   std::vector<OverlayVertex> triangles;  // 3 per triangle
   std::vector<TextItem> texts;           // every text drawn (already part of `triangles`)
-  std::vector<TextItem> legend_labels;   // the band-limit numbers, top (max) to bottom (min)
+  std::vector<TextItem> legend_labels;   // the band-limit numbers, top (max) to bottom (min);
+                                         // for a discrete scale the band names, top to bottom
   PixelRect legend;                      // area of the legend (empty without a field)
   PixelRect title;                       // area of the title block
   PixelRect model;                       // what is left for the model

@@ -35,6 +35,9 @@ struct RenderOptions {
   Averaging averaging = Averaging::MethodII;
   int bands = kDefaultBands;
   bool smooth = false;
+  // A field with values at some nodes only (contact fields: the slave nodes) colours the faces it
+  // covers; the other faces are drawn neutral grey, or not at all when this is set.
+  bool only_field_faces = false;
   DeformSpec deform;
   bool undeformed_outline = true;  // with a deformed shape, draw the undeformed outline
   ViewSpec view;
