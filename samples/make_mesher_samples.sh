@@ -21,3 +21,16 @@ m spec-3.1.6-hemisphere-c3d21.inp hemisphere --element C3D21
 m spec-3.1.7-thick-cylinder-c3d21.inp thick-cylinder --element C3D21 --poisson 0.49
 m spec-3.1.8-patch-c3d28.inp patch-test --element C3D28
 m spec-6.2-cylinder-wall-c3d28.inp cylinder-wall --element C3D28
+# Contact models (SPEC §3.2, §4): two bodies with coincident interface nodes, *CONTACT PAIR.
+m spec-3.2.1-punch-foundation-c3d21.inp punch-foundation --element C3D21
+m spec-3.2.1-punch-foundation-c3d28.inp punch-foundation --element C3D28
+for e in c3d14 c3d21 c3d28; do m spec-3.2.2-cylinders-$e.inp cylinders --element $e; done
+m spec-3.2.2-cylinders-c3d20.inp cylinders --element C3D20
+m spec-3.2.3-two-cantilevers-c3d21-mu0.2.inp two-cantilevers --element C3D21 --mu 0.2
+m spec-3.2.3-two-cantilevers-c3d20-mu0.inp two-cantilevers --element C3D20 --mu 0
+m spec-3.2.4-punch-halfspace-c3d21-mu0.04.inp punch-halfspace --element C3D21 --mu 0.04
+m spec-3.2.4-punch-halfspace-c3d28-mu0.04.inp punch-halfspace --element C3D28 --mu 0.04
+m spec-3.2.4-punch-halfspace-c3d21-aniso.inp punch-halfspace --element C3D21 --mu 0.04 --mu2 0.4
+m spec-4.2-shrink-fit-A-c3d21-axial.inp shrink-fit --model A --element C3D21 --load-case axial
+m spec-4.2-shrink-fit-B-c3d21-torque.inp shrink-fit --model B --element C3D21 --load-case torque
+m spec-4.3-conical-fit-c3d21-mu0.2.inp conical-fit --element C3D21 --mu 0.2

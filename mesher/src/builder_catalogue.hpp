@@ -11,5 +11,11 @@ namespace styk::mesher::detail {
 void add_beam_builders(std::vector<BuilderInfo>& all);
 // SPEC §2.4, §3.1.5-§3.1.8, §6.2: single element, plate, shells, cylinders, patch test.
 void add_solid_builders(std::vector<BuilderInfo>& all);
+// SPEC §3.2.1-§3.2.4: the contact tests.
+void add_contact_builders(std::vector<BuilderInfo>& all);
+// SPEC §4.2: the shrink fit.
+void add_shrink_fit_builder(std::vector<BuilderInfo>& all);
+// SPEC §4.3: the conical fit.
+void add_conical_fit_builder(std::vector<BuilderInfo>& all);
 
 }  // namespace styk::mesher::detail
