@@ -16,15 +16,33 @@ std::string C3D8R::description() const {
 
 IntegrationRule C3D8R::rule(RuleKind) const { return gauss_rule(1, 1, 1); }
 
+double C3D8R::uniform_gradient(const ElementGeometry& g, Eigen::Ref<Eigen::MatrixXd> b_bar) const {
+  const IntegrationRule exact = gauss_rule(2, 2, 2);
+  Eigen::VectorXd N(8);
+  Eigen::MatrixXd dN(8, 3), dNdx(8, 3);
+  b_bar.setZero();
+  double volume = 0.0;
+  for (int k = 0; k < exact.size(); ++k) {
+    der(exact.points[k], N, dN);
+    const double dv = exact.weights[k] * jacobian(g, dN, dNdx, k + 1);
+    b_bar += dv * dNdx;
+    volume += dv;
+  }
+  b_bar /= volume;
+  return volume;
+}
+
+double C3D8R::point_measure(const ElementGeometry& g, const Eigen::Ref<const Eigen::MatrixXd>&,
+                            Eigen::Ref<Eigen::MatrixXd> dNdx, int) const {
+  return uniform_gradient(g, dNdx) / 8.0;  // the 1-point rule's weight is 8
+}
+
 void C3D8R::add_stabilisation(const ElementGeometry& g, const Matrix6d& D, const ElementOptions&,
                               Eigen::MatrixXd& K) const {
   if (kappa_ <= 0.0) return;
-  Eigen::Matrix<double, 8, 1> N;
-  Eigen::Matrix<double, 8, 3> dN, dNdx;
-  der(Vec3{0.0, 0.0, 0.0}, N, dN);
-  const double detJ0 = jacobian(g, dN, dNdx, 1);
-  const double volume = 8.0 * detJ0;  // the 1-point rule's volume
-  // b : b with b = V dN/dx(0), the FB "B-vectors"; divided by V it scales like modulus * length.
+  Eigen::MatrixXd dNdx(8, 3);
+  const double volume = uniform_gradient(g, dNdx);
+  // b : b with b = V B_bar, the FB "B-vectors"; divided by V it scales like modulus * length.
   const double bb = volume * volume * dNdx.squaredNorm();
   const double stiffness_modulus = (D(0, 0) + D(1, 1) + D(2, 2)) / 3.0;  // lambda + 2 mu
   const double c = kappa_ * stiffness_modulus * bb / (8.0 * volume);

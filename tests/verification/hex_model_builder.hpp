@@ -28,7 +28,9 @@ struct FullRegistry {
 inline std::unique_ptr<FullRegistry> registry_with_plugins() {
   auto out = std::make_unique<FullRegistry>();
   register_builtin_elements(out->registry);
-  out->diagnostics = load_plugins(out->registry, out->libraries, {STYK_PLUGIN_BUILD_DIR});
+  // The build's plug-ins, and the template plug-in of docs/plugins.md (built into examples/).
+  out->diagnostics = load_plugins(out->registry, out->libraries,
+                                  {STYK_PLUGIN_BUILD_DIR, STYK_PLUGIN_BUILD_DIR "/examples"});
   return out;
 }
 

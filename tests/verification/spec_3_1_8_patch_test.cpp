@@ -7,7 +7,9 @@
 // extrapolated element node and every node averaged by methods I and II (SPEC §5), all to 1e-9
 // relative. Meshes: C3D8, C3D20 and C3D14 alone, C3D21 + C3D20 and C3D28 + C3D20 (the six outer
 // elements of the contact type with their special face S1 on the cube boundary, the inner one
-// C3D20, so every shared face is a C3D20 face).
+// C3D20, so every shared face is a C3D20 face); every other solid alone (C3D8R with hourglass
+// control, C3D8I, C3D20R, C3D27); and TMPL8, the template plug-in of docs/plugins.md, loaded from
+// the build's examples/ plug-in directory.
 #include <array>
 #include <string>
 #include <vector>
@@ -139,7 +141,9 @@ TEST_P(PatchTest, ConstantStressEverywhere) {
 INSTANTIATE_TEST_SUITE_P(Spec3_1_8, PatchTest,
                          ::testing::Values(PatchCase{"C3D8", "C3D8"}, PatchCase{"C3D20", "C3D20"},
                                            PatchCase{"C3D14", "C3D14"}, PatchCase{"C3D20", "C3D21"},
-                                           PatchCase{"C3D20", "C3D28"}),
+                                           PatchCase{"C3D20", "C3D28"}, PatchCase{"C3D8R", "C3D8R"},
+                                           PatchCase{"C3D8I", "C3D8I"}, PatchCase{"C3D20R", "C3D20R"},
+                                           PatchCase{"C3D27", "C3D27"}, PatchCase{"TMPL8", "TMPL8"}),
                          [](const ::testing::TestParamInfo<PatchCase>& param_info) {
                            return std::string(param_info.param.outer) + "_in_" +
                                   param_info.param.inner;
