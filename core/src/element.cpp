@@ -52,37 +52,21 @@ const FaceDef& checked_face(const ElementGeometry& g, const TElement& e, int fac
   return faces[face];
 }
 
-// Free natural coordinates (s, t) of a face on `axis`, in cyclic order after it, so that
-// x,s x x,t points along +axis on the reference element.
-void face_directions(int axis, int& s, int& t) {
-  s = (axis + 1) % 3;
-  t = (axis + 2) % 3;
-}
-
-// Visits the face integration points: calls visit(N, dN, x_s x x_t, weight) with the shape
-// functions, the natural derivatives and the (unnormalised, +axis oriented) surface normal.
+// Visits the face integration points: calls visit(N, dA, weight-free) with the shape functions and
+// the weighted area vector (oriented along +face.axis) from TElement::face_quadrature.
 template <typename Visit>
 void for_each_face_point(const ElementGeometry& g, const TElement& e, const FaceDef& face,
                          Visit&& visit) {
-  std::vector<double> points, weights;
-  gauss_legendre(e.face_rule_order(), points, weights);
-  int s = 0, t = 0;
-  face_directions(face.axis, s, t);
+  std::vector<Vec3> points;
+  std::vector<Eigen::Vector3d> weighted_normals;
+  e.face_quadrature(g, face, points, weighted_normals);
   const int n = e.node_count();
   Eigen::VectorXd N(n);
   Eigen::MatrixXd dN(n, 3);
-  Eigen::Matrix3d J;
-  for (std::size_t a = 0; a < points.size(); ++a)
-    for (std::size_t b = 0; b < points.size(); ++b) {
-      Vec3 xi{};
-      xi[face.axis] = face.value;
-      xi[s] = points[a];
-      xi[t] = points[b];
-      e.der(xi, N, dN);
-      J.noalias() = dN.transpose() * g.X;  // row i = dx / dxi_i
-      const Eigen::Vector3d normal = J.row(s).transpose().cross(J.row(t).transpose());
-      visit(N, normal, weights[a] * weights[b]);
-    }
+  for (std::size_t k = 0; k < points.size(); ++k) {
+    e.der(points[k], N, dN);
+    visit(N, weighted_normals[k]);
+  }
 }
 
 }  // namespace
@@ -140,6 +124,42 @@ double TElement::jacobian(const ElementGeometry& g, const Eigen::Ref<const Eigen
   dNdx.noalias() = dN * J.inverse().transpose();
   return det;
 }
+
+double TElement::point_measure(const ElementGeometry& g,
+                               const Eigen::Ref<const Eigen::MatrixXd>& dN,
+                               Eigen::Ref<Eigen::MatrixXd> dNdx, int point) const {
+  return jacobian(g, dN, dNdx, point);
+}
+
+void TElement::face_quadrature(const ElementGeometry& g, const FaceDef& face,
+                               std::vector<Vec3>& points,
+                               std::vector<Eigen::Vector3d>& weighted_normals) const {
+  std::vector<double> gauss, weights;
+  gauss_legendre(face_rule_order(), gauss, weights);
+  // Free natural coordinates (s, t) in cyclic order after the face axis, so that x,s x x,t
+  // points along +axis on the reference element.
+  const int s = (face.axis + 1) % 3, t = (face.axis + 2) % 3;
+  const int n = node_count();
+  Eigen::VectorXd N(n);
+  Eigen::MatrixXd dN(n, 3);
+  Eigen::Matrix3d J;
+  points.clear();
+  weighted_normals.clear();
+  for (std::size_t a = 0; a < gauss.size(); ++a)
+    for (std::size_t b = 0; b < gauss.size(); ++b) {
+      Vec3 xi{};
+      xi[face.axis] = face.value;
+      xi[s] = gauss[a];
+      xi[t] = gauss[b];
+      der(xi, N, dN);
+      J.noalias() = dN.transpose() * g.X;  // row i = dx / dxi_i
+      points.push_back(xi);
+      weighted_normals.push_back(weights[a] * weights[b] *
+                                 J.row(s).transpose().cross(J.row(t).transpose()));
+    }
+}
+
+void TElement::complete_strain(const Material&, double, Eigen::Matrix<double, 6, 1>&) const {}
 
 void TElement::incompatible_bee(const ElementGeometry&, const Vec3&, double,
                                 Eigen::Ref<Eigen::MatrixXd>) const {}
@@ -208,23 +228,20 @@ void TElement::pressure_load(const ElementGeometry& g, int face, double p,
   const FaceDef& fd = checked_face(g, *this, face);
   const double orientation = fd.value > 0.0 ? 1.0 : -1.0;
   f.setZero(3 * node_count());
-  for_each_face_point(g, *this, fd,
-                      [&](const Eigen::VectorXd& N, const Eigen::Vector3d& normal, double w) {
-                        // Positive pressure pushes into the element: against the outward normal.
-                        const Eigen::Vector3d traction = (-p * orientation * w) * normal;
-                        for (Eigen::Index a = 0; a < N.size(); ++a)
-                          f.segment<3>(3 * a) += N(a) * traction;
-                      });
+  for_each_face_point(g, *this, fd, [&](const Eigen::VectorXd& N, const Eigen::Vector3d& dA) {
+    // Positive pressure pushes into the element: against the outward normal.
+    const Eigen::Vector3d traction = (-p * orientation) * dA;
+    for (Eigen::Index a = 0; a < N.size(); ++a) f.segment<3>(3 * a) += N(a) * traction;
+  });
 }
 
 void TElement::nodal_areas(const ElementGeometry& g, int face, Eigen::VectorXd& area) const {
   check_geometry(g, *this);
   const FaceDef& fd = checked_face(g, *this, face);
   area.setZero(node_count());
-  for_each_face_point(g, *this, fd,
-                      [&](const Eigen::VectorXd& N, const Eigen::Vector3d& normal, double w) {
-                        area.noalias() += (w * normal.norm()) * N;
-                      });
+  for_each_face_point(g, *this, fd, [&](const Eigen::VectorXd& N, const Eigen::Vector3d& dA) {
+    area.noalias() += dA.norm() * N;
+  });
 }
 
 void TElement::strains_stresses(const ElementGeometry& g, const Material& material, RuleKind kind,
@@ -254,9 +271,11 @@ void TElement::strains_stresses(const ElementGeometry& g, const Material& materi
     op.evaluate(k);
     engineering.noalias() = op.B() * u;
     if (modes.size() > 0) engineering.noalias() += op.G() * modes;
+    const double thermal_strain = alpha_dT.size() > 0 ? op.N().dot(alpha_dT) : 0.0;
     mechanical = engineering;
-    if (alpha_dT.size() > 0) mechanical.head<3>().array() -= op.N().dot(alpha_dT);
+    mechanical.head<3>().array() -= thermal_strain;
     stress.row(k).noalias() = (D * mechanical).transpose();
+    complete_strain(material, thermal_strain, engineering);
     strain.row(k) = engineering.transpose();
     strain.row(k).tail<3>() *= 0.5;  // report tensor shear components eps_ij = gamma_ij / 2
   }

@@ -8,6 +8,8 @@
 #include "styk/elements/c3d8.hpp"
 #include "styk/elements/c3d8i.hpp"
 #include "styk/elements/c3d8r.hpp"
+#include "styk/elements/plane_quads.hpp"
+#include "styk/elements/t3d2.hpp"
 
 namespace styk {
 
@@ -20,6 +22,11 @@ void register_builtin_elements(ElementRegistry& registry) {
   registry.add(std::make_unique<C3D20>(), source);
   registry.add(std::make_unique<C3D20R>(), source);
   registry.add(std::make_unique<C3D27>(), source);
+  registry.add(std::make_unique<PlaneQuad4>(PlaneKind::Stress), source);  // CPS4
+  registry.add(std::make_unique<PlaneQuad4>(PlaneKind::Strain), source);  // CPE4
+  registry.add(std::make_unique<PlaneQuad8>(PlaneKind::Stress), source);  // CPS8
+  registry.add(std::make_unique<PlaneQuad8>(PlaneKind::Strain), source);  // CPE8
+  registry.add(std::make_unique<T3D2>(), source);
 }
 
 }  // namespace styk

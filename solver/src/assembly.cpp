@@ -14,6 +14,7 @@ void element_geometry(const Model& model, int e, ElementGeometry& geometry) {
     for (int d = 0; d < 3; ++d) geometry.X(k, d) = model.coords[nodes[k]][d];
   geometry.id = element.id;
   geometry.where = element.where;
+  geometry.cross_section = cross_section_of(model, e);  // thickness / area of plane and truss
 }
 
 void assemble_stiffness(const Model& model, const PreparedModel& prepared, StiffnessMatrix& K,

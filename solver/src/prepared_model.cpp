@@ -1,5 +1,6 @@
 #include "prepared_model.hpp"
 
+#include <array>
 #include <cmath>
 
 namespace styk::solver_detail {
@@ -27,7 +28,23 @@ const Material& checked_material(const Model& model, int section_index) {
   return material;
 }
 
+void check_section_measure(const Model& model, const Element& element,
+                           const TElement& formulation) {
+  const Section& section = model.sections[element.section];
+  if (formulation.section_measure() == SectionMeasure::Area && !section.thickness)
+    throw InputError(section.where, "the *SOLID SECTION of element set " + section.elset +
+                                        " gives no cross-section area (its first data line), "
+                                        "which element " + std::to_string(element.id) +
+                                        " of type " + element.type + " needs");
+}
+
 }  // namespace
+
+double cross_section_of(const Model& model, int e) {
+  const int section = model.elements[e].section;
+  if (section < 0 || section >= static_cast<int>(model.sections.size())) return 1.0;
+  return model.sections[section].thickness.value_or(1.0);
+}
 
 PreparedModel prepare_model(const Model& model, const ElementRegistry& registry) {
   PreparedModel prepared;
@@ -38,6 +55,8 @@ PreparedModel prepare_model(const Model& model, const ElementRegistry& registry)
   prepared.active_of_node.assign(model.node_count(), -1);
 
   std::vector<const Material*> material_of_section(model.sections.size(), nullptr);
+  // Per model node: which displacement components some element stiffens (bit d for direction d).
+  std::vector<unsigned char> stiffened_bits(model.node_count(), 0);
   for (int e = 0; e < element_count; ++e) {
     const Element& element = model.elements[e];
     const TElement* formulation = registry.find(element.type);
@@ -60,6 +79,10 @@ PreparedModel prepare_model(const Model& model, const ElementRegistry& registry)
                                           "by a *SOLID SECTION");
     const Material*& material = material_of_section[element.section];
     if (material == nullptr) material = &checked_material(model, element.section);
+    check_section_measure(model, element, *formulation);
+    const std::array<bool, 3> active = formulation->active_displacements();
+    const unsigned char bits = static_cast<unsigned char>(
+        (active[0] ? 1 : 0) | (active[1] ? 2 : 0) | (active[2] ? 4 : 0));
     prepared.formulation[e] = formulation;
     prepared.material[e] = material;
 
@@ -69,6 +92,7 @@ PreparedModel prepare_model(const Model& model, const ElementRegistry& registry)
         throw InputError(element.where, "element " + std::to_string(element.id) +
                                             " refers to an undefined node");
       prepared.active_of_node[nodes[k]] = 0;
+      stiffened_bits[nodes[k]] |= bits;
     }
   }
 
@@ -89,6 +113,8 @@ PreparedModel prepare_model(const Model& model, const ElementRegistry& registry)
     if (prepared.active_of_node[n] < 0) continue;
     prepared.active_of_node[n] = static_cast<int>(prepared.node_of_active.size());
     prepared.node_of_active.push_back(n);
+    for (int d = 0; d < 3; ++d)
+      prepared.stiffened.push_back((stiffened_bits[n] >> d) & 1 ? 1 : 0);
   }
   return prepared;
 }

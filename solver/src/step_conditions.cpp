@@ -1,7 +1,10 @@
 #include "step_conditions.hpp"
 
 #include <map>
+#include <string>
 #include <utility>
+
+#include "node_rotations.hpp"
 
 namespace styk::solver_detail {
 namespace {
@@ -22,6 +25,58 @@ int checked_dof(const Model& model, const PreparedModel& prepared, int node, int
   return 3 * active + dof - 1;
 }
 
+// "z" or "x, z": the global directions no element at active node a stiffens.
+std::string unstiffened_directions(const PreparedModel& prepared, int a) {
+  static const char* const kAxis[] = {"x", "y", "z"};
+  std::string list;
+  for (int d = 0; d < 3; ++d)
+    if (prepared.inactive_dof(3 * a + d))
+      list += (list.empty() ? "" : ", ") + std::string(kAxis[d]);
+  return list;
+}
+
+// Per active dof, 1 when it is inactive in the nodal system (the node's *TRANSFORM axes where it
+// has one): no element stiffens that direction. A transformed node must keep its inactive global
+// directions as local axes (e.g. a cylindrical system about z for plane elements), otherwise its
+// local dofs would mix stiffened and unstiffened directions.
+std::vector<char> inactive_nodal_dofs(const Model& model, const PreparedModel& prepared) {
+  std::vector<char> inactive(prepared.active_dofs(), 0);
+  bool any = false;
+  for (int dof = 0; dof < prepared.active_dofs(); ++dof)
+    if (prepared.inactive_dof(dof)) {
+      inactive[dof] = 1;
+      any = true;
+    }
+  if (!any || model.transforms.empty()) return inactive;
+  for (const Transform& transform : model.transforms) {  // a later *TRANSFORM overrides
+    const NodeSet* set = model.find_nset(transform.nset);
+    if (set == nullptr) continue;  // NodeRotations reports it
+    for (int node : set->nodes) {
+      const int a = prepared.active_of_node[node];
+      if (a < 0) continue;
+      Eigen::Matrix3d R;
+      if (!local_axes_at(transform.axes, model.coords[node], R)) continue;  // reported elsewhere
+      int global_inactive = 0, local_inactive = 0;
+      for (int d = 0; d < 3; ++d) {
+        global_inactive += prepared.inactive_dof(3 * a + d) ? 1 : 0;
+        double stiffened_part = 0.0;  // the local axis' components along stiffened directions
+        for (int g = 0; g < 3; ++g)
+          if (!prepared.inactive_dof(3 * a + g)) stiffened_part += R(g, d) * R(g, d);
+        inactive[3 * a + d] = stiffened_part < 1e-18 ? 1 : 0;
+        local_inactive += inactive[3 * a + d];
+      }
+      if (local_inactive != global_inactive)
+        throw InputError(transform.where,
+                         "*TRANSFORM: node " + std::to_string(model.node_ids[node]) +
+                             " belongs only to elements without stiffness along " +
+                             unstiffened_directions(prepared, a) +
+                             " (plane elements), so its local system must keep that direction "
+                             "as one of its axes (e.g. a cylindrical system about z)");
+    }
+  }
+  return inactive;
+}
+
 std::vector<DofValue> to_vector(const std::map<int, double>& values) {
   std::vector<DofValue> out;
   out.reserve(values.size());
@@ -33,10 +88,27 @@ std::vector<DofValue> to_vector(const std::map<int, double>& values) {
 
 std::vector<StepConditions> accumulate_step_conditions(const Model& model,
                                                        const PreparedModel& prepared) {
+  const std::vector<char> inactive = inactive_nodal_dofs(model, prepared);
+  // A dof no element stiffens takes no load and no displacement but zero; a zero boundary value
+  // is accepted silently (CalculiX decks of plane models often fix dof 3).
+  auto refuse_inactive = [&](int dof, const SourceLoc& where, const std::string& what) {
+    const int node = prepared.node_of_active[dof / 3];
+    throw InputError(where, what + " on degree of freedom " + std::to_string(dof % 3 + 1) +
+                                " of node " + std::to_string(model.node_ids[node]) +
+                                ", which no element there stiffens (plane elements carry only "
+                                "ux and uy)" +
+                                (what == "boundary condition" ? "; only a zero value is accepted"
+                                                              : ""));
+  };
+  auto prescribe = [&](std::map<int, double>& into, const Boundary& b) {
+    const int dof = checked_dof(model, prepared, b.node, b.dof, b.where, "boundary condition");
+    if (inactive[dof] && b.value != 0.0) refuse_inactive(dof, b.where, "boundary condition");
+    into[dof] = b.value;
+  };
   std::map<int, double> model_level;
-  for (const Boundary& b : model.boundaries)
-    model_level[checked_dof(model, prepared, b.node, b.dof, b.where, "boundary condition")] =
-        b.value;
+  for (int dof = 0; dof < prepared.active_dofs(); ++dof)
+    if (inactive[dof]) model_level[dof] = 0.0;
+  for (const Boundary& b : model.boundaries) prescribe(model_level, b);
 
   std::map<int, double> prescribed = model_level;
   std::map<int, double> nodal_loads;
@@ -47,12 +119,12 @@ std::vector<StepConditions> accumulate_step_conditions(const Model& model,
     if (step.boundary_op_new) prescribed = model_level;
     if (step.cload_op_new) nodal_loads.clear();
     if (step.dload_op_new) pressures.clear();
-    for (const Boundary& b : step.boundaries)
-      prescribed[checked_dof(model, prepared, b.node, b.dof, b.where, "boundary condition")] =
-          b.value;
-    for (const ConcentratedLoad& c : step.cloads)
-      nodal_loads[checked_dof(model, prepared, c.node, c.dof, c.where, "concentrated load")] =
-          c.value;
+    for (const Boundary& b : step.boundaries) prescribe(prescribed, b);
+    for (const ConcentratedLoad& c : step.cloads) {
+      const int dof = checked_dof(model, prepared, c.node, c.dof, c.where, "concentrated load");
+      if (inactive[dof]) refuse_inactive(dof, c.where, "concentrated load");
+      nodal_loads[dof] = c.value;
+    }
     for (const DistributedLoad& d : step.dloads) {
       if (d.element < 0 || d.element >= model.element_count())
         throw InputError(d.where, "distributed load on an undefined element");

@@ -21,6 +21,9 @@ struct StepConditions {
 
 // One entry per Model::steps[k]. Throws InputError at the line of a boundary condition or load
 // on a node no element uses, on a dof other than 1..3, or on a face the element does not have.
+// Inactive dofs (no element stiffens them: uz of plane-element nodes) are prescribed to zero in
+// every step, so the linear solver eliminates them; a load or a nonzero boundary value on one is
+// an InputError at its line, a zero boundary value is accepted.
 std::vector<StepConditions> accumulate_step_conditions(const Model& model,
                                                        const PreparedModel& prepared);
 

@@ -22,6 +22,10 @@
 //   shear strains (gamma_12 = 2 eps_12); strains reported to users are tensor components.
 // - Faces are numbered as Abaqus S1..S6: S1 zeta=-1, S2 zeta=+1, S3 eta=-1, S4 xi=+1, S5 eta=+1,
 //   S6 xi=-1.
+// - Plane elements (CPS/CPE) live in the x-y plane on natural (xi, eta) (zeta = 0); their faces
+//   are their edges P1..P4, and they keep 3 dofs per node but stiffen only ux, uy
+//   (active_displacements()). Trusses (T3D2) use xi only. Both customise the kinematics through
+//   point_measure(), face_quadrature() and complete_strain(), which solids inherit unchanged.
 // - Element matrices are dense, dof order (node 0: x y z, node 1: x y z, ...).
 #pragma once
 
@@ -49,6 +53,11 @@ struct ElementOptions {
   bool selective_volumetric = false;
 };
 
+// What the element's section must give on its first data line (*SOLID SECTION): nothing for
+// solids, the out-of-plane thickness of plane elements (default 1, as in CalculiX), the
+// cross-section area of trusses (required).
+enum class SectionMeasure { None, Thickness, Area };
+
 struct IntegrationRule {
   std::string label;                    // e.g. "3x3x3 Gauss"
   std::vector<Vec3> points;             // natural coordinates
@@ -71,6 +80,9 @@ struct ElementGeometry {
   Eigen::MatrixXd X;                    // node coordinates, one row per element node
   Id id = 0;                            // user element id
   SourceLoc where;                      // the deck line that defined it
+  // The section's geometric datum: thickness of plane elements, cross-section area of trusses
+  // (SectionMeasure); ignored by solids. Must be positive where it is used.
+  double cross_section = 1.0;
 };
 
 class TElement {
@@ -83,6 +95,12 @@ class TElement {
   virtual int node_count() const = 0;
   virtual const std::vector<Vec3>& natural_nodes() const = 0;
   virtual const std::vector<FaceDef>& faces() const = 0;  // faces()[0] is S1
+
+  // Which displacement components (ux, uy, uz) the element stiffens: a solver dof that no
+  // element stiffens is inactive (plane elements: uz). Default: all three.
+  virtual std::array<bool, 3> active_displacements() const { return {true, true, true}; }
+  // What the section must give (ElementGeometry::cross_section). Default: nothing.
+  virtual SectionMeasure section_measure() const { return SectionMeasure::None; }
 
   // --- DER: shape functions N (n) and natural derivatives dN (n x 3) at xi ----------------------
   virtual void der(const Vec3& xi, Eigen::Ref<Eigen::VectorXd> N,
@@ -110,6 +128,25 @@ class TElement {
   // vanish on every affine displacement field so that the patch test still holds.
   virtual void add_stabilisation(const ElementGeometry& g, const Matrix6d& D,
                                  const ElementOptions& options, Eigen::MatrixXd& K) const;
+
+  // --- kinematics hooks (defaults: a solid on (xi, eta, zeta)) --------------------------------
+  // Cartesian derivatives dNdx (n x 3) at a point and its measure dV / (dxi deta dzeta): det J
+  // for solids (jacobian()), det J2 x thickness for plane elements, |dx/dxi| x area for trusses.
+  // Throws InputError like jacobian() on an inverted or degenerate element.
+  virtual double point_measure(const ElementGeometry& g,
+                               const Eigen::Ref<const Eigen::MatrixXd>& dN,
+                               Eigen::Ref<Eigen::MatrixXd> dNdx, int point) const;
+  // Integration points on a face: natural coordinates and, per point, the quadrature weight times
+  // the area vector dA (oriented along +face.axis; its length is the area measure). Solids: a
+  // face_rule_order()^2 Gauss rule on the face; plane elements: a line rule along the edge,
+  // times the thickness.
+  virtual void face_quadrature(const ElementGeometry& g, const FaceDef& face,
+                               std::vector<Vec3>& points,
+                               std::vector<Eigen::Vector3d>& weighted_normals) const;
+  // Completes the engineering strain at a point with what the formulation leaves to a stress
+  // condition (plane stress: eps33 from sigma33 = 0). thermal_strain = alpha dT at the point.
+  virtual void complete_strain(const Material& material, double thermal_strain,
+                               Eigen::Matrix<double, 6, 1>& engineering) const;
 
   // --- template methods ------------------------------------------------------------------------
   // Cartesian derivatives dNdx (n x 3) and det J at xi. Throws InputError naming the element and

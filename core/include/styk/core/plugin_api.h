@@ -34,8 +34,11 @@ extern "C" {
 
 /* The version of the plug-in ABI this header describes. History: 1 = first release; 2 = TElement
  * gained ElementOptions on its template methods, thermal_load/internal_force, and the
- * incompatible-mode and stabilisation hooks (new virtual functions). */
-#define STYK_PLUGIN_ABI_VERSION 2u
+ * incompatible-mode and stabilisation hooks (new virtual functions); 3 = TElement gained
+ * active_displacements(), section_measure() and the kinematics hooks point_measure(),
+ * face_quadrature(), complete_strain() (plane and truss elements), ElementGeometry gained
+ * cross_section. */
+#define STYK_PLUGIN_ABI_VERSION 3u
 
 /* The name of the entry point, for dlsym. */
 #define STYK_PLUGIN_ENTRY_NAME "styk_plugin_register"

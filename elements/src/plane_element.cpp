@@ -1,0 +1,111 @@
+#include "styk/elements/plane_element.hpp"
+
+#include <cstdio>
+#include <string>
+
+#include <Eigen/Dense>
+
+namespace styk {
+namespace {
+
+std::string label(const ElementGeometry& g, const TElement& e) {
+  return "element " + std::to_string(g.id) + " (" + e.name() + ")";
+}
+
+std::string format_number(double value) {
+  char buffer[32];
+  std::snprintf(buffer, sizeof buffer, "%.6g", value);
+  return buffer;
+}
+
+void check_thickness(const ElementGeometry& g, const TElement& e) {
+  if (!(g.cross_section > 0.0))
+    throw InputError(g.where, label(g, e) + ": thickness " + format_number(g.cross_section) +
+                                  " must be positive (first data line of its *SOLID SECTION)");
+}
+
+}  // namespace
+
+void PlaneElement::bee(const Eigen::Ref<const Eigen::MatrixXd>& dNdx,
+                       Eigen::Ref<Eigen::MatrixXd> B) const {
+  B.setZero();
+  for (Eigen::Index a = 0; a < dNdx.rows(); ++a) {
+    const double dx = dNdx(a, 0), dy = dNdx(a, 1);
+    const Eigen::Index c = 3 * a;
+    B(0, c) = dx;
+    B(1, c + 1) = dy;
+    B(3, c) = dy;  // gamma_12
+    B(3, c + 1) = dx;
+  }
+}
+
+void PlaneElement::dee(const Material& material, Matrix6d& D) const {
+  TElement::dee(material, D);  // checks E and nu, 3D isotropic law
+  if (kind_ == PlaneKind::Strain) return;
+  // sigma33 = 0: eliminate eps33 from the 3D law (static condensation of row/column 33). The
+  // in-plane block becomes E/(1-nu^2) [1 nu; nu 1]; the 33 row and column are zero so that
+  // S33 = 0 and a (B-bar or thermal) eps33 carries no stress.
+  const double d33 = D(2, 2);
+  for (int i = 0; i < 6; ++i)
+    for (int j = 0; j < 6; ++j)
+      if (i != 2 && j != 2) D(i, j) -= D(i, 2) * D(2, j) / d33;
+  D.row(2).setZero();
+  D.col(2).setZero();
+}
+
+double PlaneElement::point_measure(const ElementGeometry& g,
+                                   const Eigen::Ref<const Eigen::MatrixXd>& dN,
+                                   Eigen::Ref<Eigen::MatrixXd> dNdx, int point) const {
+  check_thickness(g, *this);
+  Eigen::Matrix2d J;
+  J.noalias() = dN.leftCols<2>().transpose() * g.X.leftCols<2>();  // J(i, j) = dx_j / dxi_i
+  const double det = J.determinant();
+  // As for solids: degenerate relative to the lengths of the natural tangents (Hadamard).
+  const double scale = J.row(0).norm() * J.row(1).norm();
+  if (!(det > 1e-12 * scale))
+    throw InputError(g.where, label(g, *this) + ": Jacobian determinant " + format_number(det) +
+                                  " at integration point " + std::to_string(point) +
+                                  " is not positive: the element is inverted, degenerate or its "
+                                  "nodes run clockwise in the x-y plane");
+  dNdx.leftCols<2>().noalias() = dN.leftCols<2>() * J.inverse().transpose();
+  dNdx.col(2).setZero();
+  return det * g.cross_section;
+}
+
+void PlaneElement::face_quadrature(const ElementGeometry& g, const FaceDef& face,
+                                   std::vector<Vec3>& points,
+                                   std::vector<Eigen::Vector3d>& weighted_normals) const {
+  check_thickness(g, *this);
+  std::vector<double> gauss, weights;
+  gauss_legendre(face_rule_order(), gauss, weights);
+  const int along = 1 - face.axis;  // the natural coordinate running along the edge
+  const int n = node_count();
+  Eigen::VectorXd N(n);
+  Eigen::MatrixXd dN(n, 3);
+  points.clear();
+  weighted_normals.clear();
+  for (std::size_t a = 0; a < gauss.size(); ++a) {
+    Vec3 xi{};
+    xi[face.axis] = face.value;
+    xi[along] = gauss[a];
+    der(xi, N, dN);
+    const Eigen::Vector2d tangent = g.X.leftCols<2>().transpose() * dN.col(along);
+    // The solid's x,s x x,t with the zeta tangent = thickness e_z: along +axis for a
+    // counter-clockwise element (xi edges: t x e_z; eta edges: e_z x t).
+    const Eigen::Vector3d normal = face.axis == 0 ? Eigen::Vector3d(tangent.y(), -tangent.x(), 0.0)
+                                                  : Eigen::Vector3d(-tangent.y(), tangent.x(), 0.0);
+    points.push_back(xi);
+    weighted_normals.push_back(weights[a] * g.cross_section * normal);
+  }
+}
+
+void PlaneElement::complete_strain(const Material& material, double thermal_strain,
+                                   Eigen::Matrix<double, 6, 1>& engineering) const {
+  if (kind_ == PlaneKind::Strain) return;  // eps33 = 0 by definition
+  // sigma33 = 0 of the 3D law: eps33 = -nu/(1-nu) (eps11 + eps22) + (1+nu)/(1-nu) alpha dT.
+  const double nu = *material.poisson;  // dee() has checked it
+  engineering(2) =
+      (-nu * (engineering(0) + engineering(1)) + (1.0 + nu) * thermal_strain) / (1.0 - nu);
+}
+
+}  // namespace styk
