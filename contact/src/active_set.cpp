@@ -4,6 +4,7 @@
 #include <cmath>
 #include <set>
 
+#include <Eigen/Cholesky>
 #include <Eigen/LU>
 
 namespace styk::contact {
@@ -17,6 +18,42 @@ struct Setup {
   std::vector<double> c_n, c_t;
   double load_force = 0.0;  // force scale of the loading as the contacts feel it
 };
+
+// A component that moves only what the node's earlier components already move is dependent:
+// e.g. on a symmetry plane the tangent t2 = (eps, 1, 0) of a node whose y is prescribed acts only
+// through eps u_x, a multiple of the normal row (eps is the quadratic face's normal error at the
+// node, ~1e-3, so the magnitude test above keeps it). Its multiplier would be undetermined and the
+// linearised system singular; the force it stood for is taken by the support. Test: the Schur
+// complement of the row in the Gram matrix of the node's rows, S_kk + w^2 G_k G_k^T (the rigid
+// motions of bodies held by contact count as movement, weighted to S's scale), at most 1e-8 of
+// its diagonal.
+void drop_dependent_rows(const LinearContactSystem& system, int k, double max_diag, double g_max,
+                         std::array<bool, 3>& live) {
+  Eigen::Matrix3d M = system.S.block<3, 3>(3 * k, 3 * k);
+  if (system.G.cols() > 0 && g_max > 0.0) {
+    const Eigen::MatrixXd Gk = system.G.middleRows<3>(3 * k);
+    M += (max_diag / (g_max * g_max)) * Gk * Gk.transpose();
+  }
+  std::vector<int> accepted;
+  for (int c = 0; c < 3; ++c) {
+    if (!live[c]) continue;
+    double schur = M(c, c);
+    if (!accepted.empty()) {
+      const int a = static_cast<int>(accepted.size());
+      Eigen::MatrixXd Maa(a, a);
+      Eigen::VectorXd mac(a);
+      for (int i = 0; i < a; ++i) {
+        mac[i] = M(accepted[i], c);
+        for (int j = 0; j < a; ++j) Maa(i, j) = M(accepted[i], accepted[j]);
+      }
+      schur -= mac.dot(Maa.ldlt().solve(mac));
+    }
+    if (schur <= 1e-8 * M(c, c))
+      live[c] = false;
+    else
+      accepted.push_back(c);
+  }
+}
 
 Setup set_up(const std::vector<ContactConstraint>& constraints, const LinearContactSystem& system) {
   const int m = static_cast<int>(constraints.size());
@@ -38,6 +75,7 @@ Setup set_up(const std::vector<ContactConstraint>& constraints, const LinearCont
           (system.G.cols() == 0 || system.G.row(row).cwiseAbs().maxCoeff() <= 1e-12 * g_max);
       s.live[k][c] = allowed && !degenerate;
     }
+    drop_dependent_rows(system, k, max_diag, g_max, s.live[k]);
     const double snn = system.S(3 * k, 3 * k);
     s.c_n[k] = 1.0 / (snn > 1e-12 * max_diag ? snn : max_diag);
     double stt = 0.0;

@@ -10,6 +10,7 @@
 #include "floating_bodies.hpp"
 #include "linear_solver.hpp"
 #include "mechanism_check.hpp"
+#include "model_constraints.hpp"
 #include "parallel.hpp"
 #include "phase_recorder.hpp"
 #include "prepared_model.hpp"
@@ -19,6 +20,7 @@
 #include "stress_averaging.hpp"
 #include "styk/contact/active_set.hpp"
 #include "styk/contact/contact_results.hpp"
+#include "thermal_load.hpp"
 
 namespace styk::solver_detail {
 namespace {
@@ -38,7 +40,7 @@ std::vector<double> lerp(const std::vector<double>& a, const std::vector<double>
 // K factorised with the prescribed dofs plus the dofs pinning the bodies held only by contact,
 // and the structure-side pieces of the contact system that depend on it.
 struct ContactFactor {
-  std::vector<int> prescribed;  // the model's (without the fixing dofs)
+  std::vector<int> prescribed;  // the model's (nodal dofs, without the fixing dofs)
   FloatingBodies floating;
   std::unique_ptr<LinearSolver> solver;
   Eigen::MatrixXd S, G;
@@ -87,6 +89,28 @@ void check_equilibrium(const std::vector<double>& applied, const IncrementResult
   out.relative_residual = norm(imbalance) / scale;
 }
 
+// The loads of one step end (or start): mechanical forces on the nodal dofs (what reactions are
+// measured against), the thermal load of the step's temperature change (global components;
+// empty without one) and the temperature change itself, which recovery needs for the stresses.
+struct StepLoads {
+  std::vector<double> mechanical;
+  std::vector<double> thermal;
+  std::vector<double> dT;
+};
+
+std::vector<double> lerp_or_empty(const std::vector<double>& a, const std::vector<double>& b,
+                                  double t) {
+  if (a.empty() && b.empty()) return {};
+  if (a.empty()) return lerp(std::vector<double>(b.size(), 0.0), b, t);
+  if (b.empty()) return lerp(a, std::vector<double>(a.size(), 0.0), t);
+  return lerp(a, b, t);
+}
+
+std::vector<double> to_global(const ModelConstraints& kinematic, std::vector<double> nodal) {
+  kinematic.rotations().to_global(nodal);
+  return nodal;
+}
+
 }  // namespace
 
 Results run_contact_analysis(const Model& model, const ElementRegistry& registry,
@@ -107,6 +131,8 @@ Results run_contact_analysis(const Model& model, const ElementRegistry& registry
   PreparedModel prepared;
   std::vector<StepConditions> conditions;
   std::vector<contact::ContactConstraint> constraints;
+  ModelConstraints kinematic;  // *TRANSFORM and *EQUATION
+  std::vector<std::vector<double>> temperature_changes;
   {
     const PhaseRecorder::Scope phase(phases, "check");
     if (model.steps.empty())
@@ -114,6 +140,8 @@ Results run_contact_analysis(const Model& model, const ElementRegistry& registry
     if (model.element_count() == 0) throw InputError(whole_model, "the model has no elements");
     prepared = prepare_model(model, registry);
     conditions = accumulate_step_conditions(model, prepared);
+    kinematic = ModelConstraints::build(model, prepared);
+    temperature_changes = step_temperature_changes(model);
     std::vector<std::string> notes;
     constraints = contact::build_contact_constraints(model, registry, &notes);
     for (const std::string& note : notes) phases.info(note);
@@ -129,11 +157,15 @@ Results run_contact_analysis(const Model& model, const ElementRegistry& registry
                 std::to_string(model.contact_pairs.size()) + " pairs");
   }
   const StressAveraging averaging(model, prepared.formulation, RuleKind::Full);
-  StiffnessMatrix K(model, prepared, threads);
-  {
+  // K in the nodal systems with the equations eliminated (model_constraints.hpp), as in the
+  // linear path; the contact rows stay global and the compliance maps between the two.
+  StiffnessMatrix K(model, prepared, threads, kinematic.extra_node_couplings(model, prepared));
+  auto assemble = [&] {
     const PhaseRecorder::Scope phase(phases, "assemble");
     assemble_stiffness(model, prepared, K, threads);
-  }
+    kinematic.apply(K);
+  };
+  assemble();
   const SolverContext context{model, prepared, phases, threads};
   const ContactOperator B(prepared, constraints);
   const std::vector<char> touches_contact = contact_nodes(prepared, constraints);
@@ -142,25 +174,28 @@ Results run_contact_analysis(const Model& model, const ElementRegistry& registry
   auto set_up = [&](const std::vector<int>& prescribed) {
     factor.solver.reset();
     factor.prescribed = prescribed;
-    factor.floating = find_floating_bodies(model, prepared, K.graph(), prescribed, touches_contact);
-    std::vector<int> pinned = prescribed;
-    pinned.insert(pinned.end(), factor.floating.fixing_dofs.begin(),
-                  factor.floating.fixing_dofs.end());
-    std::sort(pinned.begin(), pinned.end());
-    pinned.erase(std::unique(pinned.begin(), pinned.end()), pinned.end());
+    const std::vector<int> known = kinematic.known_dofs(model, prepared, prescribed);
+    factor.floating = find_floating_bodies(
+        model, prepared, K.graph(), kinematic.restraints(model, prepared, prescribed), prescribed,
+        known, kinematic.rotations(), touches_contact);
+    std::vector<int> held = prescribed, pinned = known;
+    for (std::vector<int>* dofs : {&held, &pinned}) {
+      dofs->insert(dofs->end(), factor.floating.fixing_dofs.begin(),
+                   factor.floating.fixing_dofs.end());
+      std::sort(dofs->begin(), dofs->end());
+      dofs->erase(std::unique(dofs->begin(), dofs->end()), dofs->end());
+    }
     {
       const PhaseRecorder::Scope phase(phases, "check");
-      check_rigid_body_modes(model, prepared, K.graph(), pinned);
+      check_rigid_body_modes(model, prepared, K.graph(),
+                             kinematic.restraints(model, prepared, held));
     }
-    if (!K.pristine()) {
-      const PhaseRecorder::Scope phase(phases, "assemble");
-      assemble_stiffness(model, prepared, K, threads);
-    }
+    if (!K.pristine()) assemble();
     factor.solver = make_cholmod_solver(context);
     factor.solver->prepare(K, partition_dofs(prepared.active_dofs(), pinned));
     {
       const PhaseRecorder::Scope phase(phases, "contact compliance");
-      factor.S = B.compliance(*factor.solver, prepared.active_dofs());
+      factor.S = B.compliance(*factor.solver, prepared.active_dofs(), kinematic);
       factor.G = B.apply_columns(factor.floating.modes);
     }
     phases.info("contact: " + std::to_string(factor.floating.count()) +
@@ -171,31 +206,60 @@ Results run_contact_analysis(const Model& model, const ElementRegistry& registry
     }
   };
 
+  // The structure's displacement (global) and the contact-row images d = B u of a step end's
+  // loads: mechanical + thermal forces, turned to the nodal systems and reduced by the equations.
+  auto solve_global = [&](const std::vector<double>& mechanical, const std::vector<double>& thermal,
+                          const std::vector<double>& prescribed_values) {
+    std::vector<double> u = factor.solver->solve(
+        kinematic.reduced_forces(kinematic.plus_global(mechanical, thermal)), prescribed_values);
+    kinematic.to_global_displacements(u);
+    return u;
+  };
+  // The rigid-mode equilibrium right-hand side R^T f (global forces; the thermal load is
+  // self-equilibrated, R^T f_th = 0 up to round-off, and kept for consistency with d0).
+  auto rigid_load = [&](const StepLoads& loads) {
+    std::vector<double> f = to_global(kinematic, loads.mechanical);
+    for (std::size_t i = 0; i < loads.thermal.size(); ++i) f[i] += loads.thermal[i];
+    const Eigen::Map<const Eigen::VectorXd> map(f.data(), prepared.active_dofs());
+    return Eigen::VectorXd(factor.floating.modes.transpose() * map);
+  };
+
   Results results;
   contact::ContactState state;
-  std::vector<double> f_previous(prepared.active_dofs(), 0.0);
-  std::vector<double> u_previous(prepared.active_dofs(), 0.0);
+  StepLoads previous{std::vector<double>(prepared.active_dofs(), 0.0), {}, {}};
+  std::vector<double> u_previous(prepared.active_dofs(), 0.0);  // nodal components
   double total_time = 0.0;
   for (std::size_t k = 0; k < model.steps.size(); ++k) {
     const Step& step = model.steps[k];
     const std::vector<int> prescribed = prescribed_dofs(conditions[k]);
     if (!factor.solver || prescribed != factor.prescribed) set_up(prescribed);
     const Eigen::MatrixXd& R = factor.floating.modes;
+    const std::vector<int> reaction_dofs = kinematic.reaction_dofs(prescribed);
 
-    // Loads and prescribed values ramp linearly from the end of the previous step (newly
-    // prescribed dofs from where they are) to this step's values.
-    const std::vector<double> f_end = assemble_loads(model, prepared, conditions[k]);
+    // Loads, prescribed values and temperatures ramp linearly from the end of the previous step
+    // (newly prescribed dofs from where they are) to this step's values: Abaqus' default RAMP
+    // amplitude of a static step, applied to the temperature field too, so an increment at step
+    // fraction tau carries tau of the step's temperature change (docs/contact.md).
+    StepLoads end;
+    end.mechanical = kinematic.nodal_forces(model, prepared, conditions[k]);
+    end.dT = temperature_changes[k];
+    if (!end.dT.empty()) {
+      const PhaseRecorder::Scope phase(phases, "assemble");
+      end.thermal = assemble_thermal_load(model, prepared, end.dT, threads);
+    }
     std::vector<double> up_end(prepared.active_dofs(), 0.0);
     for (const DofValue& p : conditions[k].prescribed) up_end[p.dof] = p.value;
-    const std::vector<double> f_start = f_previous, up_start = u_previous;
+    const StepLoads start = previous;
+    // Only the prescribed dofs' values matter (dependent and fixing dofs start from zero).
+    std::vector<double> up_start(prepared.active_dofs(), 0.0);
+    for (const DofValue& p : conditions[k].prescribed) up_start[p.dof] = u_previous[p.dof];
     contact::LinearContactSystem system;
     system.S = factor.S;
     system.G = factor.G;
-    const Eigen::VectorXd d0_start = B.apply(factor.solver->solve(f_start, up_start));
-    const Eigen::VectorXd d0_end = B.apply(factor.solver->solve(f_end, up_end));
-    const Eigen::Map<const Eigen::VectorXd> fs(f_start.data(), prepared.active_dofs());
-    const Eigen::Map<const Eigen::VectorXd> fe(f_end.data(), prepared.active_dofs());
-    const Eigen::VectorXd h_start = R.transpose() * fs, h_end = R.transpose() * fe;
+    const Eigen::VectorXd d0_start =
+        B.apply(solve_global(start.mechanical, start.thermal, up_start));
+    const Eigen::VectorXd d0_end = B.apply(solve_global(end.mechanical, end.thermal, up_end));
+    const Eigen::VectorXd h_start = rigid_load(start), h_end = rigid_load(end);
 
     const double period = step.procedure.total_time;
     const bool fixed = step.procedure.fixed_increments;
@@ -240,17 +304,25 @@ Results run_contact_analysis(const Model& model, const ElementRegistry& registry
       state = std::move(trial);
       t += dt;
       ++increment_number;
-      quick = outcome.iterations <= 5 ? quick + 1 : 0;
+      // "Quick": within the iteration budget of docs/contact.md (8 per increment). A tighter
+      // limit (5) kept the shrink-fit push at 1/90 of the step for 100 increments of 6
+      // iterations each.
+      quick = outcome.iterations <= 8 ? quick + 1 : 0;
 
       // Displacements: the contact forces act on the structure as loads.
-      const std::vector<double> f_t = lerp(f_start, f_end, tau);
+      const std::vector<double> f_t = lerp(start.mechanical, end.mechanical, tau);
+      const std::vector<double> thermal_t = lerp_or_empty(start.thermal, end.thermal, tau);
+      const std::vector<double> dT_t = lerp_or_empty(start.dT, end.dT, tau);
       const std::vector<double> up_t = lerp(up_start, up_end, tau);
       Eigen::VectorXd lambda(3 * constraints.size());
       for (std::size_t j = 0; j < constraints.size(); ++j)
         lambda.segment<3>(3 * j) = state.nodes[j].lambda;
-      std::vector<double> loads = f_t;
-      B.add_transpose(lambda, -1.0, loads);
-      std::vector<double> u = factor.solver->solve(loads, up_t);
+      std::vector<double> contact_forces(prepared.active_dofs(), 0.0);
+      B.add_transpose(lambda, -1.0, contact_forces);
+      // External forces on the nodal dofs (reactions are measured against them): the mechanical
+      // loads and the contact forces; the thermal load joins only the right-hand side.
+      const std::vector<double> loads = kinematic.plus_global(f_t, contact_forces);
+      std::vector<double> u = solve_global(loads, thermal_t, up_t);
       if (R.cols() > 0) {
         const Eigen::VectorXd rigid = R * state.alpha;
         for (std::size_t i = 0; i < u.size(); ++i) u[i] += rigid[i];
@@ -262,20 +334,24 @@ Results run_contact_analysis(const Model& model, const ElementRegistry& registry
       increment.total_time = total_time + t;
       {
         const PhaseRecorder::Scope phase(phases, "recover");
-        recover_increment(model, prepared, prescribed, u, loads, threads, increment);
+        const RecoveryInput input{reaction_dofs, u, loads, dT_t.empty() ? nullptr : &dT_t,
+                                  &kinematic.rotations()};
+        recover_increment(model, prepared, input, threads, increment);
         averaging.apply(threads, increment);
         contact::fill_contact_results(model, constraints, state, increment);
-        check_equilibrium(f_t, increment, constraints, state, increment.contact_equilibrium);
+        check_equilibrium(to_global(kinematic, f_t), increment, constraints, state,
+                          increment.contact_equilibrium);
       }
       phases.info(where + format(": converged in %.0f iterations, equilibrium residual %.2e",
                                  outcome.iterations,
                                  increment.contact_equilibrium.relative_residual));
       results.increments.push_back(std::move(increment));
       u_previous = u;
+      kinematic.rotations().to_local(u_previous);
       if (!fixed && quick >= 2) dt = std::min(dt * 1.5, max_increment);
     }
     total_time += period;
-    f_previous = f_end;
+    previous = std::move(end);
   }
   return results;
 }

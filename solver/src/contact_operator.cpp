@@ -54,7 +54,7 @@ void ContactOperator::add_transpose(const Eigen::VectorXd& lambda, double factor
 }
 
 Eigen::MatrixXd ContactOperator::compliance(LinearSolver& solver, int active_dofs,
-                                            int block) const {
+                                            const ModelConstraints& kinematic, int block) const {
   std::vector<int> columns;
   for (int i = 0; i < rows(); ++i)
     if (row_used(i)) columns.push_back(i);
@@ -67,7 +67,21 @@ Eigen::MatrixXd ContactOperator::compliance(LinearSolver& solver, int active_dof
       const int i = columns[first + j];
       for (int p = ptr_[i]; p < ptr_[i + 1]; ++p) F[j * n + dof_[p]] += value_[p];
     }
-    const std::vector<double> X = solver.solve_homogeneous(F, count);
+    std::vector<double> column(kinematic.empty() ? 0 : n);
+    if (!kinematic.empty())
+      for (int j = 0; j < count; ++j) {
+        std::copy(F.begin() + j * n, F.begin() + (j + 1) * n, column.begin());
+        column =
+            kinematic.reduced_forces(kinematic.plus_global(std::vector<double>(n, 0.0), column));
+        std::copy(column.begin(), column.end(), F.begin() + j * n);
+      }
+    std::vector<double> X = solver.solve_homogeneous(F, count);
+    if (!kinematic.empty())
+      for (int j = 0; j < count; ++j) {
+        std::copy(X.begin() + j * n, X.begin() + (j + 1) * n, column.begin());
+        kinematic.to_global_displacements(column);
+        std::copy(column.begin(), column.end(), X.begin() + j * n);
+      }
     for (int j = 0; j < count; ++j) {
       const Eigen::Map<const Eigen::VectorXd> x(X.data() + j * n, active_dofs);
       const Eigen::VectorXd Bx = apply(Eigen::Ref<const Eigen::VectorXd>(x));

@@ -9,6 +9,7 @@
 #include <Eigen/Core>
 
 #include "linear_solver.hpp"
+#include "model_constraints.hpp"
 #include "prepared_model.hpp"
 #include "styk/contact/constraints.hpp"
 
@@ -29,8 +30,12 @@ class ContactOperator {
   Eigen::MatrixXd apply_columns(const Eigen::MatrixXd& U) const;  // B U (columns)
 
   // S = B K_ff^-1 B^T with `solver` prepared on K; unused rows/columns stay zero. Columns are
-  // solved in blocks of `block` right-hand sides.
-  Eigen::MatrixXd compliance(LinearSolver& solver, int active_dofs, int block = 64) const;
+  // solved in blocks of `block` right-hand sides. With *TRANSFORM / *EQUATION (`kinematic` not
+  // empty) K is the reduced nodal stiffness P^T R^T K R P: each column B^T e_i (global forces) is
+  // turned to nodal components and reduced before the solve, and the solution expanded and
+  // rotated back, so S stays the compliance seen by the global contact rows.
+  Eigen::MatrixXd compliance(LinearSolver& solver, int active_dofs,
+                             const ModelConstraints& kinematic, int block = 64) const;
 
  private:
   std::vector<int> ptr_;  // row i: entries ptr_[i] .. ptr_[i+1]

@@ -46,14 +46,29 @@ Eigen::Vector3d rigid_motion(const Vector6& mode, const Eigen::Vector3d& p) {
 }  // namespace
 
 FloatingBodies find_floating_bodies(const Model& model, const PreparedModel& prepared,
-                                    const NodeGraph& graph, const std::vector<int>& prescribed,
+                                    const NodeGraph& graph,
+                                    const std::vector<Restraint>& restraints,
+                                    const std::vector<int>& prescribed,
+                                    const std::vector<int>& known, const NodeRotations& rotations,
                                     const std::vector<char>& touches_contact) {
-  std::vector<char> is_prescribed(prepared.active_dofs(), 0);
+  std::vector<char> is_prescribed(prepared.active_dofs(), 0), is_known(prepared.active_dofs(), 0);
   for (int dof : prescribed) is_prescribed[dof] = 1;
+  for (int dof : known) is_known[dof] = 1;
   std::vector<Eigen::VectorXd> columns;
   std::vector<int> fixing;
+  const std::vector<std::vector<int>> parts = connected_parts(graph);
+  std::vector<int> part_of(prepared.active_nodes(), -1), index_in_part(prepared.active_nodes(), -1);
+  for (std::size_t k = 0; k < parts.size(); ++k)
+    for (std::size_t i = 0; i < parts[k].size(); ++i) {
+      part_of[parts[k][i]] = static_cast<int>(k);
+      index_in_part[parts[k][i]] = static_cast<int>(i);
+    }
+  std::vector<std::vector<const Restraint*>> restraints_of(parts.size());
+  for (const Restraint& r : restraints)
+    if (!r.terms.empty()) restraints_of[part_of[r.terms.front().first]].push_back(&r);
 
-  for (const std::vector<int>& part : connected_parts(graph)) {
+  for (std::size_t k_part = 0; k_part < parts.size(); ++k_part) {
+    const std::vector<int>& part = parts[k_part];
     if (std::none_of(part.begin(), part.end(), [&](int a) { return touches_contact[a] != 0; }))
       continue;
     Eigen::Vector3d lo = Eigen::Vector3d::Constant(INFINITY), hi = -lo;
@@ -70,17 +85,18 @@ FloatingBodies find_floating_bodies(const Model& model, const PreparedModel& pre
     const double size = std::max((hi - lo).maxCoeff(), 1e-300);
     for (Eigen::Vector3d& p : x) p = (p - centroid) / size;
 
-    // G = sum over prescribed dofs of r r^T, r = the six rigid modes at that dof; its null space
-    // is the set of rigid motions the supports leave free (as in the mechanism check).
+    // G = sum over the restraints of r r^T, r = the restraint applied to the six rigid modes
+    // (a term v at x sees translation t and rotation w as v.t + w.(x cross v)); its null space is
+    // the set of rigid motions the restraints leave free (as in the mechanism check).
     Matrix6 G = Matrix6::Zero();
-    for (std::size_t i = 0; i < part.size(); ++i)
-      for (int d = 0; d < 3; ++d) {
-        if (!is_prescribed[3 * part[i] + d]) continue;
-        Vector6 r = Vector6::Zero();
-        r[d] = 1.0;
-        for (int k = 0; k < 3; ++k) r[3 + k] = Eigen::Vector3d::Unit(k).cross(x[i])[d];
-        G.noalias() += r * r.transpose();
+    for (const Restraint* restraint : restraints_of[k_part]) {
+      Vector6 r = Vector6::Zero();
+      for (const auto& [a, v] : restraint->terms) {
+        r.head<3>() += v;
+        r.tail<3>() += x[index_in_part[a]].cross(v);
       }
+      G.noalias() += r * r.transpose();
+    }
     const Eigen::SelfAdjointEigenSolver<Matrix6> eigen(G);
     const double largest = eigen.eigenvalues()[5];
     std::vector<Vector6> free_modes;
@@ -93,20 +109,34 @@ FloatingBodies find_floating_bodies(const Model& model, const PreparedModel& pre
       }
     if (free_modes.empty()) continue;
 
+    // The modes in nodal components (local for *TRANSFORM nodes): zero in the prescribed
+    // directions (round-off of an exact null vector), candidates for pinning in the free ones.
     const int n = static_cast<int>(part.size());
-    Eigen::MatrixXd R = Eigen::MatrixXd::Zero(3 * n, static_cast<int>(free_modes.size()));
+    Eigen::MatrixXd W = Eigen::MatrixXd::Zero(3 * n, static_cast<int>(free_modes.size()));
     for (std::size_t k = 0; k < free_modes.size(); ++k)
       for (int i = 0; i < n; ++i) {
-        const Eigen::Vector3d u = rigid_motion(free_modes[k], x[i]);
+        Eigen::Vector3d u = rigid_motion(free_modes[k], x[i]);
+        const Eigen::Matrix3d* axes = rotations.of(part[i]);
+        if (axes != nullptr) u = axes->transpose() * u;
         for (int d = 0; d < 3; ++d)
-          if (!is_prescribed[3 * part[i] + d]) R(3 * i + d, static_cast<int>(k)) = u[d];
+          if (!is_prescribed[3 * part[i] + d]) W(3 * i + d, static_cast<int>(k)) = u[d];
       }
-    // The dofs that pin the free modes best: the first pivots of a column-pivoted QR of R^T.
-    const Eigen::ColPivHouseholderQR<Eigen::MatrixXd> qr(R.transpose());
+    // The dofs that pin the free modes best: the first pivots of a column-pivoted QR of W^T over
+    // the dofs the solver keeps (not prescribed, not eliminated by an equation).
+    Eigen::MatrixXd candidates = W;
+    for (int i = 0; i < n; ++i)
+      for (int d = 0; d < 3; ++d)
+        if (is_known[3 * part[i] + d]) candidates.row(3 * i + d).setZero();
+    const Eigen::ColPivHouseholderQR<Eigen::MatrixXd> qr(candidates.transpose());
     for (std::size_t k = 0; k < free_modes.size(); ++k) {
       const int local = qr.colsPermutation().indices()[static_cast<int>(k)];
       fixing.push_back(3 * part[local / 3] + local % 3);
     }
+    Eigen::MatrixXd R = W;  // back to global components
+    for (int i = 0; i < n; ++i)
+      if (const Eigen::Matrix3d* axes = rotations.of(part[i]))
+        for (int k = 0; k < R.cols(); ++k)
+          R.block<3, 1>(3 * i, k) = *axes * W.block<3, 1>(3 * i, k);
     for (int k = 0; k < R.cols(); ++k) {
       Eigen::VectorXd column = Eigen::VectorXd::Zero(prepared.active_dofs());
       for (int i = 0; i < n; ++i) column.segment<3>(3 * part[i]) = R.block<3, 1>(3 * i, k);

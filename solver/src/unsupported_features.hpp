@@ -6,9 +6,9 @@
 
 namespace styk::solver_detail {
 
-// Throws InputError at the first *EQUATION, *TRANSFORM or step *TEMPERATURE of a model with
-// contact pairs (the contact path does not apply them yet). Each check goes when the solver
-// learns the feature.
+// Throws InputError at the first feature the model uses that the solver cannot apply. Currently
+// none: *EQUATION, *TRANSFORM and *TEMPERATURE work with and without contact pairs. A check is
+// added here when the reader learns a keyword before the solver does.
 void reject_unsupported_features(const Model& model);
 
 }  // namespace styk::solver_detail
