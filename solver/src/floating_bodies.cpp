@@ -1,5 +1,7 @@
 #include "floating_bodies.hpp"
 
+#include "mechanism_check.hpp"
+
 #include <algorithm>
 #include <cmath>
 
@@ -12,31 +14,6 @@ namespace {
 
 using Matrix6 = Eigen::Matrix<double, 6, 6>;
 using Vector6 = Eigen::Matrix<double, 6, 1>;
-
-std::vector<std::vector<int>> connected_parts(const NodeGraph& graph) {
-  std::vector<int> part(graph.nodes(), -1);
-  std::vector<std::vector<int>> parts;
-  std::vector<int> stack;
-  for (int seed = 0; seed < graph.nodes(); ++seed) {
-    if (part[seed] >= 0) continue;
-    const int label = static_cast<int>(parts.size());
-    parts.emplace_back();
-    part[seed] = label;
-    stack.push_back(seed);
-    while (!stack.empty()) {
-      const int a = stack.back();
-      stack.pop_back();
-      parts.back().push_back(a);
-      for (std::int64_t p = graph.ptr[a]; p < graph.ptr[a + 1]; ++p)
-        if (part[graph.adj[p]] < 0) {
-          part[graph.adj[p]] = label;
-          stack.push_back(graph.adj[p]);
-        }
-    }
-    std::sort(parts.back().begin(), parts.back().end());
-  }
-  return parts;
-}
 
 // Rigid-body mode `mode` = (translation, rotation) evaluated at scaled position p.
 Eigen::Vector3d rigid_motion(const Vector6& mode, const Eigen::Vector3d& p) {

@@ -13,33 +13,6 @@ namespace {
 using Matrix6 = Eigen::Matrix<double, 6, 6>;
 using Vector6 = Eigen::Matrix<double, 6, 1>;
 
-// Connected parts of the node graph: label per active node, and the nodes of each part.
-std::vector<std::vector<int>> connected_parts(const NodeGraph& graph) {
-  std::vector<int> part(graph.nodes(), -1);
-  std::vector<std::vector<int>> parts;
-  std::vector<int> stack;
-  for (int seed = 0; seed < graph.nodes(); ++seed) {
-    if (part[seed] >= 0) continue;
-    const int label = static_cast<int>(parts.size());
-    parts.emplace_back();
-    part[seed] = label;
-    stack.push_back(seed);
-    while (!stack.empty()) {
-      const int a = stack.back();
-      stack.pop_back();
-      parts.back().push_back(a);
-      for (std::int64_t p = graph.ptr[a]; p < graph.ptr[a + 1]; ++p) {
-        const int b = graph.adj[p];
-        if (part[b] < 0) {
-          part[b] = label;
-          stack.push_back(b);
-        }
-      }
-    }
-    std::sort(parts.back().begin(), parts.back().end());
-  }
-  return parts;
-}
 
 std::string node_list(const Model& model, const PreparedModel& prepared,
                       const std::vector<int>& nodes) {
@@ -69,6 +42,33 @@ std::string format_vector(Eigen::Vector3d v, double scale) {
 }
 
 }  // namespace
+
+std::vector<std::vector<int>> connected_parts(const NodeGraph& graph) {
+  std::vector<int> part(graph.nodes(), -1);
+  std::vector<std::vector<int>> parts;
+  std::vector<int> stack;
+  for (int seed = 0; seed < graph.nodes(); ++seed) {
+    if (part[seed] >= 0) continue;
+    const int label = static_cast<int>(parts.size());
+    parts.emplace_back();
+    part[seed] = label;
+    stack.push_back(seed);
+    while (!stack.empty()) {
+      const int a = stack.back();
+      stack.pop_back();
+      parts.back().push_back(a);
+      for (std::int64_t p = graph.ptr[a]; p < graph.ptr[a + 1]; ++p) {
+        const int b = graph.adj[p];
+        if (part[b] < 0) {
+          part[b] = label;
+          stack.push_back(b);
+        }
+      }
+    }
+    std::sort(parts.back().begin(), parts.back().end());
+  }
+  return parts;
+}
 
 void check_rigid_body_modes(const Model& model, const PreparedModel& prepared,
                             const NodeGraph& graph, const std::vector<int>& prescribed) {

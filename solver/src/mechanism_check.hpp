@@ -14,6 +14,9 @@
 
 namespace styk::solver_detail {
 
+// Connected parts of the node graph (active node indices), each a list of its nodes.
+std::vector<std::vector<int>> connected_parts(const NodeGraph& graph);
+
 // Throws InputError(SourceLoc{model.source, 0}, ...) naming the free motion and up to ten nodes
 // of the part that can perform it. `prescribed` holds sorted active dof indices.
 void check_rigid_body_modes(const Model& model, const PreparedModel& prepared,
