@@ -12,6 +12,7 @@
 #include <Eigen/Core>
 #include <Eigen/Eigenvalues>
 
+#include "../elements/element_fixtures.hpp"  // reference/distorted geometry, unit material, zero eigenvalues
 #include "styk/core/element.hpp"
 #include "styk/core/element_registry.hpp"
 #include "styk/core/plugin_loader.hpp"
@@ -48,29 +49,6 @@ class PluginElementTest : public ::testing::TestWithParam<std::string> {
   const TElement* element_ = nullptr;
 };
 
-inline ElementGeometry reference_geometry(const TElement& element, Id id = 1) {
-  ElementGeometry g;
-  const auto& nodes = element.natural_nodes();
-  g.X.resize(element.node_count(), 3);
-  for (int i = 0; i < element.node_count(); ++i)
-    for (int j = 0; j < 3; ++j) g.X(i, j) = nodes[i][j];
-  g.id = id;
-  g.where = SourceLoc{"test.inp", 7};
-  return g;
-}
-
-// Every node moved by a uniform random amount in [-amplitude, amplitude] (elements-ref section 7
-// uses up to 0.15).
-inline ElementGeometry distorted_geometry(const TElement& element, unsigned seed,
-                                          double amplitude = 0.15) {
-  ElementGeometry g = reference_geometry(element);
-  std::mt19937 rng(seed);
-  std::uniform_real_distribution<double> shift(-amplitude, amplitude);
-  for (int i = 0; i < g.X.rows(); ++i)
-    for (int j = 0; j < 3; ++j) g.X(i, j) += shift(rng);
-  return g;
-}
-
 inline Material material(double young, double poisson) {
   Material m;
   m.name = "TEST";
@@ -80,27 +58,12 @@ inline Material material(double young, double poisson) {
   return m;
 }
 
-// E = 1, nu = 0.3: the material of elements-ref section 7.
-inline Material unit_material() { return material(1.0, 0.3); }
-
 inline std::vector<Vec3> random_points(unsigned seed, int count) {
   std::mt19937 rng(seed);
   std::uniform_real_distribution<double> u(-1.0, 1.0);
   std::vector<Vec3> points;
   for (int k = 0; k < count; ++k) points.push_back(Vec3{u(rng), u(rng), u(rng)});
   return points;
-}
-
-// Zero eigenvalues of a symmetric K, relative tolerance 1e-9 of the largest (elements-ref
-// section 7, where the gap to the first non-zero eigenvalue is > 1e13).
-inline int zero_eigenvalue_count(const Eigen::MatrixXd& K) {
-  Eigen::SelfAdjointEigenSolver<Eigen::MatrixXd> solver(K, Eigen::EigenvaluesOnly);
-  const Eigen::VectorXd lambda = solver.eigenvalues();
-  const double largest = lambda.cwiseAbs().maxCoeff();
-  int zeros = 0;
-  for (Eigen::Index i = 0; i < lambda.size(); ++i)
-    if (std::abs(lambda(i)) < 1e-9 * largest) ++zeros;
-  return zeros;
 }
 
 inline const std::vector<std::string>& contact_hexahedra() {
