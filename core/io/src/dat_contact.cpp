@@ -12,8 +12,10 @@
 namespace styk::io {
 namespace {
 
+// ccx's contact blocks put the E14.7 time right after "time" (one blank, the field's own), unlike
+// its "for set" blocks ("time  0.1000000E+01"); checked against ccx in contact_print_test.cpp.
 void header(std::ostream& out, const std::string& what, double time) {
-  out << "\n " << what << " and time " << fortran_e14_7(time) << "\n\n";
+  out << "\n " << what << " and time" << fortran_e14_7(time) << "\n\n";
 }
 
 void row(std::ostream& out, Id id, std::initializer_list<double> values) {

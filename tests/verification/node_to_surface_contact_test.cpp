@@ -1,0 +1,260 @@
+// Node-to-surface contact of non-matching meshes (SPEC §2.5 normals and areas, docs/contact.md
+// "Constraints" and "Node-to-surface on non-matching meshes"): every slave node projected on a
+// master face, solved exactly (Lagrange multipliers) through run_static_analysis.
+//
+// - Flat patch: a block [0,1]^2 x [1,2] (slave bottom, n x n elements) pressed by p = 1 on its top
+//   onto a block [0,1]^2 x [0,1] (master top, m x m), frictionless, both on rollers (uz = 0 at
+//   z = 0, ux = 0 on x = 0, uy = 0 on y = 0); the upper block is held in z by the contact alone.
+//   Exact solution: uniform stress, pressure 1.
+// - SPEC §3.2.2 concentric cylinders with 4 and 6 elements around the quarter on the two sides.
+#include <algorithm>
+#include <cmath>
+#include <memory>
+#include <optional>
+#include <string>
+
+#include <gtest/gtest.h>
+#include <Eigen/Core>
+
+#include "contact_model_kit.hpp"
+#include "contact_spec_models.hpp"
+#include "hex_model_builder.hpp"
+#include "styk/mesher/convert.hpp"
+#include "styk/solver/analysis.hpp"
+
+namespace styk {
+namespace {
+
+constexpr double kPi = 3.14159265358979323846;
+
+// One side of the interface: element type of its contact layer and divisions along x and y.
+struct Side {
+  std::string type;  // C3D8, C3D20, or C3D21 (a C3D20 block whose contact layer is converted)
+  int divisions = 1;
+};
+
+Model flat_patch(const Side& slave, const Side& master, double master_young) {
+  mesher::Mesh mesh;
+  auto block_type = [](const std::string& t) { return t == "C3D8" ? "C3D8" : "C3D20"; };
+  const mesher::Block lower =
+      test::add_box(mesh, {0, 0, 0}, {1, 1, 1}, {master.divisions, master.divisions, 2},
+                    block_type(master.type), "LOWER");
+  const mesher::Block upper =
+      test::add_box(mesh, {0, 0, 1}, {1, 1, 2}, {slave.divisions, slave.divisions, 2},
+                    block_type(slave.type), "UPPER");
+  mesh.add_to_surface("LOWER_TOP", lower.side_faces(2, 1));
+  mesh.add_to_surface("UPPER_BOTTOM", upper.side_faces(2, -1));
+  mesh.add_to_surface("LOAD", upper.side_faces(2, 1));
+  if (slave.type == "C3D21") mesher::convert_layer_to_c3d21(mesh, "UPPER_BOTTOM");
+  if (master.type == "C3D21") mesher::convert_layer_to_c3d21(mesh, "LOWER_TOP");
+  Model model = test::contact_model(mesh, {{"LOWER", master_young, 0.3}, {"UPPER", 1.0, 0.3}});
+  test::add_contact_pair(model, "UPPER_BOTTOM", "LOWER_TOP", "SMOOTH", std::nullopt);
+  test::add_pressure(model, "LOAD", 1.0);
+  for (int axis = 0; axis < 3; ++axis)
+    test::fix(model,
+              test::nodes_where(model, [axis](const Vec3& x) { return std::abs(x[axis]) < 1e-9; }),
+              {axis + 1});
+  return model;
+}
+
+class NodeToSurfaceContact : public ::testing::Test {
+ protected:
+  static void SetUpTestSuite() { full_ = test::registry_with_plugins(); }
+  static void TearDownTestSuite() { full_.reset(); }
+  static const ElementRegistry& registry() { return full_->registry; }
+  static std::unique_ptr<test::FullRegistry> full_;
+};
+std::unique_ptr<test::FullRegistry> NodeToSurfaceContact::full_;
+
+struct PatchResult {
+  double low = INFINITY, high = -INFINITY;  // extreme nodal pressures of the closed nodes
+  int open = 0;
+  std::size_t nodes = 0;
+};
+
+// Solves the flat patch and asserts what holds for every mesh pair: total contact force = applied
+// load p A = 1 to 1e-8 (SPEC §3.2 exact enforcement; measured 1e-15), penetration at round-off
+// at closed nodes (|gap| <= 1e-12; measured 2e-14), nodal areas summing to the face area 1 (1e-12),
+// equilibrium.
+PatchResult solve_patch(const ElementRegistry& registry, const Side& slave, const Side& master,
+                        double master_young) {
+  const Model model = flat_patch(slave, master, master_young);
+  const Results results = run_static_analysis(model, registry, SolveOptions{}, nullptr, nullptr);
+  const IncrementResult& r = results.increments.back();
+  PatchResult out;
+  out.nodes = r.contact.size();
+  double area = 0.0, force = 0.0;
+  for (const ContactNodeResult& c : r.contact) {
+    area += c.area;
+    force += c.force[2];
+    if (c.status == ContactStatus::Open) {
+      ++out.open;
+      EXPECT_EQ(c.force[2], 0.0);
+      EXPECT_GT(c.gap, 0.0);
+      continue;
+    }
+    EXPECT_NEAR(c.gap, 0.0, 1e-12) << "node " << model.node_ids[c.node];
+    out.low = std::min(out.low, c.pressure);
+    out.high = std::max(out.high, c.pressure);
+  }
+  EXPECT_NEAR(area, 1.0, 1e-12);
+  EXPECT_NEAR(force, 1.0, 1e-8);
+  EXPECT_NEAR(r.contact_pairs.at(0).force[2], 1.0, 1e-8);
+  EXPECT_LT(r.contact_equilibrium.relative_residual, 1e-8);
+  return out;
+}
+
+// On a master 1e6 times stiffer than the slave the patch test is passed: pressure 1 at every node
+// within 1e-5 (measured 5.2e-7 for C3D8, 2.3e-6 for C3D21 on C3D20). The remaining deviation is
+// the master's deformation under the node-to-surface load transfer, so it must fall in proportion
+// to the master's compliance: from stiffness ratio 1e3 to 1e6 by 1000 (asserted 900-1100; measured
+// 5.245e-4 -> 5.245e-7). Over a rigid master the pairing, normals and areas are exact.
+TEST_F(NodeToSurfaceContact, FlatPatchOverAStiffMasterIsUniform) {
+  const std::pair<Side, Side> cases[] = {{{"C3D8", 3}, {"C3D8", 4}},
+                                         {{"C3D8", 4}, {"C3D8", 3}},
+                                         {{"C3D21", 3}, {"C3D20", 4}},
+                                         {{"C3D21", 4}, {"C3D20", 3}}};
+  for (const auto& [slave, master] : cases) {
+    SCOPED_TRACE(slave.type + " " + std::to_string(slave.divisions) + " on " + master.type + " " +
+                 std::to_string(master.divisions));
+    const PatchResult stiff = solve_patch(registry(), slave, master, 1e6);
+    const PatchResult stiffer_by_1e3 = solve_patch(registry(), slave, master, 1e3);
+    EXPECT_EQ(stiff.open, 0);
+    EXPECT_LT(std::max(stiff.high - 1.0, 1.0 - stiff.low), 1e-5);
+    const double ratio = std::max(stiffer_by_1e3.high - 1.0, 1.0 - stiffer_by_1e3.low) /
+                         std::max(stiff.high - 1.0, 1.0 - stiff.low);
+    EXPECT_GT(ratio, 900.0);
+    EXPECT_LT(ratio, 1100.0);
+  }
+}
+
+// Equal stiffness: the total force is exact (asserted in solve_patch) but the nodal pressures are
+// not uniform — the one-pass node-to-surface pairing hands the slave forces to the master nodes
+// with the master's shape functions at the slave points, not as the consistent load of a uniform
+// pressure on the master mesh, so it does not pass the contact patch test (Taylor & Papadopoulos
+// 1991; docs/contact.md). Measured spreads, asserted with a margin as a regression bound:
+// C3D8 3x3 on 4x4 0.761-1.119 (bound 0.72-1.16), 4x4 on 3x3 0.828-1.083 (0.79-1.12),
+// C3D21 4x4 on C3D20 3x3 0.947-1.025 (0.92-1.05): the finer mesh as slave is the better choice.
+TEST_F(NodeToSurfaceContact, FlatPatchOfEqualStiffnessKeepsTheTotalAndBoundsTheSpread) {
+  struct Case {
+    Side slave, master;
+    double low, high;
+  };
+  const Case cases[] = {{{"C3D8", 3}, {"C3D8", 4}, 0.72, 1.16},
+                        {{"C3D8", 4}, {"C3D8", 3}, 0.79, 1.12},
+                        {{"C3D21", 4}, {"C3D20", 3}, 0.92, 1.05}};
+  for (const Case& c : cases) {
+    SCOPED_TRACE(c.slave.type + " " + std::to_string(c.slave.divisions) + " on " + c.master.type);
+    const PatchResult r = solve_patch(registry(), c.slave, c.master, 1.0);
+    EXPECT_EQ(r.open, 0);
+    EXPECT_GT(r.low, c.low);
+    EXPECT_LT(r.high, c.high);
+  }
+}
+
+// A C3D20 slave face has negative corner areas (−1/12 of the face, docs/contact.md): a uniform
+// pressure would need those nodes to pull, so they open. 3x3 C3D20 slave on 4x4 C3D8: 40 slave
+// nodes, the 16 corner nodes open with zero force, the 24 mid-edge nodes carry the whole load
+// (total still 1 to 1e-8). This is what C3D21/C3D28 contact layers are for.
+TEST_F(NodeToSurfaceContact, C3D20SlaveOpensItsCornerNodes) {
+  const PatchResult r = solve_patch(registry(), {"C3D20", 3}, {"C3D8", 4}, 1.0);
+  EXPECT_EQ(r.nodes, 40u);
+  EXPECT_EQ(r.open, 16);
+  EXPECT_GT(r.low, 0.0);
+}
+
+// ---------------------------------------------------------------------------------------------
+// SPEC §3.2.2 concentric cylinders (plane strain, length 1): inner r 1-2 (E = 10, nu = 0.3),
+// outer r 2-3 (E = 20, nu = 0.2), internal pressure 5, external 3; quarter model, 3 radial x
+// `around` x 1 axial C3D20 per cylinder. Slave: the outer cylinder's bore (C3D21 layer, so every
+// nodal area is positive); master: the inner cylinder's C3D20 outer face. Nodes coincide only at
+// the angles both divisions share (0, 22.5°, 45°, ...): the rest pair node-to-surface.
+Model cylinders(int inner_around, int outer_around) {
+  mesher::Mesh mesh;
+  auto ring = [&](double r0, double r1, int around, const std::string& elset) {
+    const mesher::PatchMap profile =
+        mesher::quad_map({{r0, 0, 0}, {r0, 0, 1}, {r1, 0, 1}, {r1, 0, 0}});
+    mesher::BlockSpec spec;
+    spec.type = "C3D20";
+    spec.divisions = {1, 3, around};
+    spec.elset = elset;
+    return mesher::mesh_block(mesh, mesher::revolve(profile, {0, 0, 0}, {0, 0, 1}, 0.0, kPi / 2),
+                              spec);
+  };
+  const mesher::Block inner = ring(1.0, 2.0, inner_around, "INNER");
+  const mesher::Block outer = ring(2.0, 3.0, outer_around, "OUTER");
+  mesh.add_to_surface("INNER_OUT", inner.side_faces(1, 1));
+  mesh.add_to_surface("OUTER_IN", outer.side_faces(1, -1));
+  mesh.add_to_surface("P_IN", inner.side_faces(1, -1));
+  mesh.add_to_surface("P_OUT", outer.side_faces(1, 1));
+  mesher::convert_layer_to_c3d21(mesh, "OUTER_IN");
+  Model model = test::contact_model(mesh, {{"INNER", 10.0, 0.3}, {"OUTER", 20.0, 0.2}});
+  test::add_contact_pair(model, "OUTER_IN", "INNER_OUT", "SMOOTH", std::nullopt);
+  test::add_pressure(model, "P_IN", 5.0);
+  test::add_pressure(model, "P_OUT", 3.0);
+  test::fix(model, test::nodes_where(model, [](const Vec3&) { return true; }), {3});
+  test::fix(model, test::nodes_where(model, [](const Vec3& x) { return std::abs(x[0]) < 1e-9; }),
+            {1});
+  test::fix(model, test::nodes_where(model, [](const Vec3& x) { return std::abs(x[1]) < 1e-9; }),
+            {2});
+  return model;
+}
+
+// SPEC §3.2.2: Lamé contact pressure 3.294 (uniform), asserted within 2 % on the interface means:
+// the resultant on the quarter interface, F_x = F_y = p r L = 6.588 (measured p = 3.2912 for 6
+// slave elements on 4, 3.2918 for 4 on 6), and the force per area sum(lambda) / sum(A) (3.2917,
+// 3.2916). The slave normals are radial to 1e-12 away from the symmetry planes (the two faces'
+// errors cancel at a shared node; measured 1e-15) and within the quadratic face's normal error on
+// them (bound h^2/3 = 0.0129 rad for 22.5° elements, measured 1.86e-3); the nodal areas add up to
+// the quarter bore, pi r L / 2 = pi, within the quadratic faces' interpolation of the circle
+// (asserted 1e-4 relative; measured -5e-6 with 6 elements, -2.5e-5 with 4). Nodal pressures
+// scatter around the mean by the node-to-surface transfer error, as on the flat patch (measured
+// -22 % ... +27 %, bounded at 30 %), where the matching 16 + 16 mesh of spec_3_2_contact_test.cpp
+// is uniform within 1 %.
+void expect_lame(const ElementRegistry& registry, int inner_around, int outer_around) {
+  SCOPED_TRACE("inner " + std::to_string(inner_around) + ", outer " + std::to_string(outer_around));
+  const Model model = cylinders(inner_around, outer_around);
+  const Results results = run_static_analysis(model, registry, SolveOptions{}, nullptr, nullptr);
+  const IncrementResult& r = results.increments.back();
+  const double lame = 3.294, radius = 2.0;
+  ASSERT_EQ(r.contact.size(), static_cast<std::size_t>(3 * (2 * outer_around + 1)));
+  double force = 0.0, area = 0.0, worst_interior = 0.0, worst_plane = 0.0;
+  for (const ContactNodeResult& c : r.contact) {
+    const Vec3& x = model.coords[c.node];
+    const Eigen::Vector3d inward(-x[0] / radius, -x[1] / radius, 0.0);  // out of the bore
+    const double normal_error =
+        (Eigen::Vector3d(c.normal[0], c.normal[1], c.normal[2]) - inward).norm();
+    const bool on_plane = std::abs(x[0]) < 1e-9 || std::abs(x[1]) < 1e-9;
+    double& worst = on_plane ? worst_plane : worst_interior;
+    worst = std::max(worst, normal_error);
+    EXPECT_NE(c.status, ContactStatus::Open) << "node " << model.node_ids[c.node];
+    EXPECT_NEAR(c.gap, 0.0, 1e-12);
+    EXPECT_NEAR(c.pressure, lame, 0.30 * lame) << "node " << model.node_ids[c.node];
+    force += c.pressure * c.area;
+    area += c.area;
+  }
+  EXPECT_LT(worst_interior, 1e-12);
+  EXPECT_LT(worst_plane, (kPi / 16) * (kPi / 16) / 3.0);
+  EXPECT_NEAR(area, kPi, 1e-4 * kPi);
+  EXPECT_NEAR(force / area, lame, 0.02 * lame);
+  for (int d = 0; d < 2; ++d)
+    EXPECT_NEAR(r.contact_pairs.at(0).force[d], lame * radius, 0.02 * lame * radius);
+  EXPECT_LT(r.contact_equilibrium.relative_residual, 1e-8);
+  ::testing::Test::RecordProperty(
+      "pressure_" + std::to_string(inner_around) + "_" + std::to_string(outer_around),
+      std::to_string(r.contact_pairs.at(0).force[0] / radius));
+  ::testing::Test::RecordProperty(
+      "area_error_" + std::to_string(inner_around) + "_" + std::to_string(outer_around),
+      std::to_string(area / kPi - 1.0));
+}
+
+TEST_F(NodeToSurfaceContact, ConcentricCylindersSixSlaveElementsOnFour) {
+  expect_lame(registry(), 4, 6);
+}
+
+TEST_F(NodeToSurfaceContact, ConcentricCylindersFourSlaveElementsOnSix) {
+  expect_lame(registry(), 6, 4);
+}
+
+}  // namespace
+}  // namespace styk
