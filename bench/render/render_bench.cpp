@@ -13,8 +13,10 @@
 #include "styk/elements/builtin.hpp"
 #include "styk/io/results_file.hpp"
 #include "styk/mesher/box_mesh.hpp"
+#include "styk/render/camera.hpp"
 #include "styk/render/image.hpp"
 #include "styk/render/osmesa_renderer.hpp"
+#include "styk/render/overlay.hpp"
 #include "styk/render/render_job.hpp"
 #include "styk/render/skin.hpp"
 
@@ -24,6 +26,62 @@ using Clock = std::chrono::steady_clock;
 
 double seconds_since(Clock::time_point start) {
   return std::chrono::duration<double>(Clock::now() - start).count();
+}
+
+// Frames per second while orbiting (the azimuth turned 3 deg per frame), each frame drawn and
+// read back, four ways: uploading the geometry with every frame (render; "old" = also without
+// back-face culling, which is what GlRenderer did before it kept the geometry) or drawing the
+// retained geometry (render_view), each with and without culling. The ways take turns in blocks
+// so that a change in the machine's load hits them alike. Then the retained orbit in a small
+// picture, and fixed_ms: the per-frame cost without any model (clear, overlay, read-back).
+struct OrbitTimes {
+  double old_fps = 0, upload_fps = 0, retained_no_cull_fps = 0, retained_fps = 0,
+         retained_small_fps = 0, fixed_ms = 0;
+};
+
+OrbitTimes time_orbit(const styk::render::Frame& frame, styk::render::OsmesaRenderer& renderer) {
+  using namespace styk::render;
+  const double aspect = double(frame.overlay.model.width) / frame.overlay.model.height;
+  ViewSpec spec;
+  Frame culled = frame, open = frame;
+  open.geometry.closed = false;  // never culled
+  const auto turn = [&] {
+    spec.azimuth += 3.0;
+    culled.camera = open.camera =
+        fit_camera(spec, frame.geometry.lower, frame.geometry.upper, aspect);
+  };
+  const int blocks = 3, per_block = 5;
+  double seconds[4] = {};
+  for (int b = 0; b < blocks; ++b)
+    for (int way = 0; way < 4; ++way) {
+      const Frame& f = way % 2 == 0 ? open : culled;
+      if (way >= 2) renderer.set_geometry(f.geometry);
+      const auto start = Clock::now();
+      for (int k = 0; k < per_block; ++k) {
+        turn();
+        if (way < 2)
+          renderer.render(f);
+        else
+          renderer.render_view(f);
+      }
+      seconds[way] += seconds_since(start);
+    }
+  const double frames = blocks * per_block;
+  // The same orbit in a 400 x 300 picture (1/16 of the pixels, the same triangles): what is
+  // left is the per-vertex and per-triangle work.
+  Frame small = culled;
+  small.width = 400, small.height = 300;
+  small.overlay = build_overlay(OverlayContent{}, small.width, small.height);
+  auto start = Clock::now();
+  for (int k = 0; k < blocks * per_block; ++k)
+    turn(), small.camera = culled.camera, renderer.render_view(small);
+  const double small_s = seconds_since(start);
+  renderer.set_geometry(FrameGeometry{});
+  start = Clock::now();
+  for (int k = 0; k < blocks * per_block; ++k) renderer.render_view(culled);
+  const double fixed_s = seconds_since(start);
+  return {frames / seconds[0], frames / seconds[1], frames / seconds[2],
+          frames / seconds[3], frames / small_s,    1e3 * fixed_s / frames};
 }
 
 }  // namespace
@@ -38,7 +96,9 @@ int main(int argc, char** argv) {
   register_builtin_elements(registry);
   std::printf(
       "elements,nodes,skin_faces,mesh_s,skin_s,job_s,geometry_s,draw_read_s,png_s,"
-      "render_total_s,triangles,results_file_s,styk_render_s\n");
+      "render_total_s,triangles,results_file_s,styk_render_s,closed,orbit_old_fps,"
+      "orbit_upload_fps,orbit_retained_no_cull_fps,orbit_retained_fps,orbit_retained_400x300_fps,"
+      "frame_fixed_ms\n");
   for (int n : sizes) {
     auto start = Clock::now();
     Model model;
@@ -101,10 +161,14 @@ int main(int argc, char** argv) {
     args.output = "render_bench_cli_" + std::to_string(model.elements.size()) + ".png";
     cli::render_command(args);
     const double cli_s = seconds_since(start);
-    std::printf("%zu,%zu,%zu,%.3f,%.3f,%.3f,%.3f,%.3f,%.3f,%.3f,%zu,%.3f,%.3f\n",
-                model.elements.size(), model.coords.size(), skin.size(), mesh_s, skin_s, job_s,
-                geometry_s, draw_s, png_s, total_s, frame.geometry.triangles.size() / 3, write_s,
-                cli_s);
+    const OrbitTimes orbit = time_orbit(frame, renderer);
+    std::printf(
+        "%zu,%zu,%zu,%.3f,%.3f,%.3f,%.3f,%.3f,%.3f,%.3f,%zu,%.3f,%.3f,%d,%.2f,%.2f,%.2f,%.2f,"
+        "%.2f,%.1f\n",
+        model.elements.size(), model.coords.size(), skin.size(), mesh_s, skin_s, job_s, geometry_s,
+        draw_s, png_s, total_s, frame.geometry.triangles.size() / 3, write_s, cli_s,
+        int(frame.geometry.closed), orbit.old_fps, orbit.upload_fps, orbit.retained_no_cull_fps,
+        orbit.retained_fps, orbit.retained_small_fps, orbit.fixed_ms);
     std::fflush(stdout);
   }
   return 0;

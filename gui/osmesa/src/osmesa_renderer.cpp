@@ -24,6 +24,16 @@ struct OsmesaRenderer::Impl {
                                std::to_string(h) + " buffer");
     width = w, height = h;
   }
+
+  // Another OsmesaRenderer (or anyone) may have made its own context current since: GL calls go
+  // to the current context, so take ours back first, at the wanted size.
+  void ensure_current(int w, int h) {
+    if (w != width || h != height)
+      make_current(w, h);
+    else if (OSMesaGetCurrentContext() != context &&
+             !OSMesaMakeCurrent(context, buffer.data(), GL_UNSIGNED_BYTE, w, h))
+      throw std::runtime_error("OSMesa: cannot make the context current again");
+  }
 };
 
 OsmesaRenderer::OsmesaRenderer(int width, int height) : impl_(std::make_unique<Impl>()) {
@@ -55,15 +65,28 @@ OsmesaRenderer::OsmesaRenderer(int width, int height) : impl_(std::make_unique<I
 }
 
 OsmesaRenderer::~OsmesaRenderer() {
-  impl_->renderer.reset();  // its GL objects die while the context is still current
+  if (OSMesaGetCurrentContext() != impl_->context)  // its GL objects die in their own context
+    OSMesaMakeCurrent(impl_->context, impl_->buffer.data(), GL_UNSIGNED_BYTE, impl_->width,
+                      impl_->height);
+  impl_->renderer.reset();
   OSMesaDestroyContext(impl_->context);
 }
 
 Image OsmesaRenderer::render(const Frame& frame) {
-  if (frame.width != impl_->width || frame.height != impl_->height)
-    impl_->make_current(frame.width, frame.height);
-  impl_->renderer->draw(frame);
-  return impl_->renderer->read_pixels(frame.width, frame.height);
+  set_geometry(frame.geometry);
+  return render_view(frame);
+}
+
+void OsmesaRenderer::set_geometry(const FrameGeometry& geometry) {
+  impl_->ensure_current(impl_->width, impl_->height);
+  impl_->renderer->set_geometry(geometry);
+}
+
+Image OsmesaRenderer::render_view(const FrameView& view) {
+  // Rebinding the context to a new buffer keeps its GL objects (the retained geometry).
+  impl_->ensure_current(view.width, view.height);
+  impl_->renderer->draw_view(view);
+  return impl_->renderer->read_pixels(view.width, view.height);
 }
 
 }  // namespace styk::render

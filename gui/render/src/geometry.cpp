@@ -56,6 +56,7 @@ struct EdgeRef {
   std::uint32_t base;  // first face vertex of the face's grid
   int segments;        // grid subdivisions of the face
   int edge;            // 0..3, c_edge -> c_edge+1
+  bool forward;        // the face's triangles run along the edge from a to b
 };
 
 std::uint32_t edge_vertex(const EdgeRef& r, int i) {
@@ -146,6 +147,13 @@ class LayerTessellator {
     V3 face_normal = cross(corner[3] - corner[1], corner[2] - corner[0]);
     const double face_len = norm(face_normal);
     if (face_len > 0) face_normal = (1.0 / face_len) * face_normal;
+    // Triangles turn clockwise seen from outside the element: in the face's node order when the
+    // corners' normal points out of the element, reversed otherwise (formulations differ).
+    const double outwards =
+        dot(face_normal,
+            0.25 * (corner[0] + corner[1] + corner[2] + corner[3]) - element_centre(sf.element));
+    const bool reverse = outwards < 0;
+    if (outwards == 0) oriented_ = false;
 
     const int n = patch.segments;
     const auto base = static_cast<std::uint32_t>(g_.face_vertices.size());
@@ -188,16 +196,31 @@ class LayerTessellator {
           }
           v00 = own, v10 = own + 1, v11 = own + 2, v01 = own + 3;
         }
-        g_.triangles.insert(g_.triangles.end(), {v00, v10, v11, v00, v11, v01});
+        if (reverse)
+          g_.triangles.insert(g_.triangles.end(), {v00, v11, v10, v00, v01, v11});
+        else
+          g_.triangles.insert(g_.triangles.end(), {v00, v10, v11, v00, v11, v01});
       }
     for (int e = 0; e < 4; ++e) {
       if (shape.corner_count == 3 && e == 2) continue;  // the repeated corner's zero-length edge
       const int a = conn[shape.corners[e]], b = conn[shape.corners[(e + 1) % 4]];
-      edges.push_back(EdgeRef{std::min(a, b), std::max(a, b), base, n, e});
+      edges.push_back(EdgeRef{std::min(a, b), std::max(a, b), base, n, e, (a < b) != reverse});
     }
   }
 
+  // Whether every face so far could be oriented (its corners' normal is not parallel to the
+  // face: a planar element's own face is not).
+  bool oriented() const { return oriented_; }
+
  private:
+  V3 element_centre(int element) const {
+    const int* conn = skin_.model().element_nodes(element);
+    const int count = skin_.model().elements[element].node_count;
+    V3 sum;
+    for (int k = 0; k < count; ++k) sum = sum + place_(conn[k]);
+    return (1.0 / count) * sum;
+  }
+
   // A face with only corners is bilinear; a higher-order face is drawn subdivided when a field
   // varies over it or when, as placed (deformed), its other nodes leave the bilinear patch of
   // its corners by more than 1e-4 of its diagonals.
@@ -245,10 +268,13 @@ class LayerTessellator {
   FrameGeometry& g_;
   std::vector<V3> local_x_;
   std::vector<double> local_v_;
+  bool oriented_ = true;
 };
 
-void emit_edges(FrameGeometry& g, std::vector<EdgeRef>& edges, const Rgb& color,
+// Emits the layer's edges; returns whether its faces form a closed, consistently oriented skin.
+bool emit_edges(FrameGeometry& g, std::vector<EdgeRef>& edges, const Rgb& color,
                 double crease_cos) {
+  bool closed = true;
   std::sort(edges.begin(), edges.end(), [](const EdgeRef& l, const EdgeRef& r) {
     return l.a != r.a ? l.a < r.a : (l.b != r.b ? l.b < r.b : l.base < r.base);
   });
@@ -257,6 +283,7 @@ void emit_edges(FrameGeometry& g, std::vector<EdgeRef>& edges, const Rgb& color,
     while (end < edges.size() && edges[end].a == edges[k].a && edges[end].b == edges[k].b) ++end;
     add_polyline(g, edges[k], color, g.edges);
     bool feature = end - k != 2;  // an open boundary or a non-manifold edge
+    if (feature || edges[k].forward == edges[k + 1].forward) closed = false;
     if (!feature) {
       const V3 n0 = edge_mid_normal(g, edges[k]), n1 = edge_mid_normal(g, edges[k + 1]);
       const double l0 = norm(n0), l1 = norm(n1);
@@ -265,6 +292,7 @@ void emit_edges(FrameGeometry& g, std::vector<EdgeRef>& edges, const Rgb& color,
     if (feature) add_polyline(g, edges[k], color, g.features);
     k = end;
   }
+  return closed;
 }
 
 void grow(FrameGeometry& g, const std::vector<Vertex>& vertices) {
@@ -338,10 +366,12 @@ FrameGeometry build_geometry(const SkinModel& skin, const GeometryRequest& rq) {
   const double crease_cos = std::cos(rq.feature_angle_degrees * 3.14159265358979323846 / 180.0);
   LayerTessellator tessellate(skin, rq, place, g);
   std::vector<EdgeRef> edges;
+  g.closed = !skin.layers().empty();
   for (const SkinModel::LayerSkin& layer : skin.layers()) {
     edges.clear();
     for (const SkinFace& face : layer.faces) tessellate.face(face, layer.color, edges);
-    emit_edges(g, edges, layer.color, crease_cos);
+    if (!emit_edges(g, edges, layer.color, crease_cos)) g.closed = false;
+    if (!tessellate.oriented()) g.closed = false;
     if (!rq.points) continue;
     for (int node : layer.nodes) {
       float t = -1.0f;

@@ -22,6 +22,11 @@ class OsmesaRenderer {
   // Draws the frame (resizing the buffer to the frame's size if needed) and returns the picture.
   Image render(const Frame& frame);
 
+  // Retained drawing (GlRenderer::set_geometry / draw_view): upload the geometry once, then
+  // picture it under as many views as wanted (orbits, views of one model).
+  void set_geometry(const FrameGeometry& geometry);
+  Image render_view(const FrameView& view);
+
  private:
   struct Impl;
   std::unique_ptr<Impl> impl_;

@@ -1,5 +1,5 @@
 // One picture, ready to draw: geometry, camera, overlay and how to draw them. Built on the CPU by
-// RenderJob; drawn by GlRenderer (OSMesa or the Qt widget).
+// RenderJob (or the desktop program's Scene); drawn by GlRenderer (OSMesa or the Qt widget).
 #pragma once
 
 #include <string>
@@ -25,16 +25,24 @@ enum class DisplayMode {
 DisplayMode parse_display_mode(const std::string& text);
 std::string display_mode_name(DisplayMode mode);
 
-struct Frame {
+// How a picture looks at one moment: everything that changes when the user orbits, pans, zooms
+// or resizes (camera, overlay, picture size) plus the cheap drawing state (mode, colour scale:
+// uniforms, not vertex data). GlRenderer::draw_view draws the retained geometry with it.
+struct FrameView {
   int width = 0;
   int height = 0;
   DisplayMode mode = DisplayMode::Shaded;
-  FrameGeometry geometry;
   Camera camera;
   Overlay overlay;
   bool has_field = false;
   ColorScale colors;  // meaningful when has_field
   float point_size = 3.0f;
+};
+
+// One complete picture: the view and the geometry (the vertex arrays; expensive to build and to
+// upload, so the desktop view uploads them once per change, see GlRenderer::set_geometry).
+struct Frame : FrameView {
+  FrameGeometry geometry;
 };
 
 }  // namespace styk::render

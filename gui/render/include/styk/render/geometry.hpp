@@ -32,13 +32,20 @@ struct Vertex {
 struct FrameGeometry {
   Vec3 origin{};
   std::vector<Vertex> face_vertices;
-  std::vector<std::uint32_t> triangles;  // indices into face_vertices, 3 per triangle
-  std::vector<Vertex> edges;             // line pairs: every edge of every skin face, once
-  std::vector<Vertex> features;          // line pairs: boundary, non-manifold and crease edges
-  std::vector<Vertex> outline;           // line pairs: feature edges of the undeformed shape
-  std::vector<Vertex> points;            // the nodes of the visible elements
-  std::array<float, 3> lower{0, 0, 0};   // bounds of everything above, relative to origin
+  // Indices into face_vertices, 3 per triangle, turning clockwise as seen from outside the
+  // element the face belongs to (whatever the node order of the formulation's faces).
+  std::vector<std::uint32_t> triangles;
+  std::vector<Vertex> edges;            // line pairs: every edge of every skin face, once
+  std::vector<Vertex> features;         // line pairs: boundary, non-manifold and crease edges
+  std::vector<Vertex> outline;          // line pairs: feature edges of the undeformed shape
+  std::vector<Vertex> points;           // the nodes of the visible elements
+  std::array<float, 3> lower{0, 0, 0};  // bounds of everything above, relative to origin
   std::array<float, 3> upper{0, 0, 0};
+  // Every layer's faces form closed, consistently oriented surfaces: each face edge is shared by
+  // exactly two faces of the layer that run along it in opposite directions. The camera always
+  // stays outside the model, so back faces of such a skin are hidden and need not be drawn.
+  // False for open skins (left-out faces, shells, planar meshes) and inverted elements.
+  bool closed = false;
 };
 
 // The visible part of a model: per visible layer, its elements after the filter, their skin and

@@ -1,7 +1,9 @@
 // Draws a Frame with OpenGL 3.3 core into the framebuffer bound in the current context. The GL
 // functions come through a glad2 loader (multi-context build: the function table belongs to this
 // object, not to a global), fed by the caller's getProcAddress: OSMesaGetProcAddress headless,
-// QOpenGLContext::getProcAddress in the desktop program. No GL or window type appears here.
+// QOpenGLContext::getProcAddress in the desktop program. No GL or window type appears here. The
+// GL objects (programs, buffers, vertex arrays) belong to the context current at construction;
+// it must also be current whenever a member is called, destruction included.
 #pragma once
 
 #include <functional>
@@ -23,8 +25,19 @@ class GlRenderer {
   GlRenderer(const GlRenderer&) = delete;
   GlRenderer& operator=(const GlRenderer&) = delete;
 
-  // Draws the frame into a framebuffer of frame.width x frame.height pixels.
+  // One picture: uploads frame.geometry (as set_geometry) and draws it with the frame's view,
+  // into a framebuffer of frame.width x frame.height pixels (styk render, animation frames).
   void draw(const Frame& frame);
+
+  // Retained drawing, for a view that changes more often than the model (orbit, pan, zoom,
+  // overlay): set_geometry() copies the vertex arrays into GL buffers that stay until the next
+  // set_geometry(); draw_view() draws them with the view's camera, overlay, mode and colour
+  // scale without sending any vertex of the model again. The caller uploads again whenever the
+  // geometry changes (new field, colours, deformation, layers); before the first upload
+  // draw_view() draws the overlay on an empty scene.
+  void set_geometry(const FrameGeometry& geometry);
+  void draw_view(const FrameView& view);
+
   // Waits for the GL and reads the framebuffer, rows top-down.
   Image read_pixels(int width, int height);
 
