@@ -45,7 +45,13 @@ int info_command(const InfoArgs& args) {
   fmt::print("nodes:     {} ({} used by elements)\n", model.node_count(), active);
   fmt::print("elements:  {}\n", model.element_count());
   for (const auto& [type, n] : by_type) fmt::print("  {:<8} {}\n", type, n);
-  fmt::print("dofs:      {} (3 per used node, before constraints)\n", 3LL * active);
+  bool scalar = false;  // steady heat / electric potential: one unknown per node
+  for (const Step& step : model.steps) scalar |= step.kind != StepKind::Static;
+  if (scalar)
+    fmt::print("dofs:      {} (1 per used node: {}, before boundary conditions)\n", active,
+               model.steps.front().kind == StepKind::HeatTransfer ? "temperature" : "potential");
+  else
+    fmt::print("dofs:      {} (3 per used node, before constraints)\n", 3LL * active);
   fmt::print("node sets: {}\n", model.nsets.size());
   for (const auto& [name, set] : model.nsets) fmt::print("  {:<24} {} nodes\n", name, set.nodes.size());
   fmt::print("element sets: {}\n", model.elsets.size());
@@ -62,6 +68,15 @@ int info_command(const InfoArgs& args) {
   fmt::print("steps:     {}\n", model.steps.size());
   for (std::size_t k = 0; k < model.steps.size(); ++k) {
     const Step& s = model.steps[k];
+    if (s.kind != StepKind::Static) {
+      fmt::print(
+          "  step {} {}: {} (steady), time {}; {} boundary, {} flow, {} face flux, {} output "
+          "requests\n",
+          k + 1, s.name, s.kind == StepKind::HeatTransfer ? "heat transfer" : "electric",
+          s.procedure.total_time, s.boundaries.size(), s.cfluxes.size(), s.dfluxes.size(),
+          s.outputs.size());
+      continue;
+    }
     fmt::print("  step {} {}: static, time {}, solver {}; {} boundary, {} cload, {} dload, {} output requests\n",
                k + 1, s.name, s.procedure.total_time, solver_name(s.procedure.solver),
                s.boundaries.size(), s.cloads.size(), s.dloads.size(), s.outputs.size());

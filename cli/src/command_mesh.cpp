@@ -61,8 +61,11 @@ int mesh_command(const MeshArgs& args) {
   AtomicTextFile file(args.output);
   write_inp(result.model, file.stream());
   file.commit();
+  // Steady heat / electric-potential decks have one unknown per node, mechanical ones three.
+  bool scalar = false;
+  for (const Step& step : result.model.steps) scalar |= step.kind != StepKind::Static;
   fmt::print("{}: {} nodes, {} elements, {} DOFs\n", args.output, result.model.node_count(),
-             result.model.element_count(), 3 * result.model.node_count());
+             result.model.element_count(), (scalar ? 1 : 3) * result.model.node_count());
   if (!result.note.empty()) fmt::print("note: {}\n", result.note);
   return kOk;
 }

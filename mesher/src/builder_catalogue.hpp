@@ -17,5 +17,7 @@ void add_contact_builders(std::vector<BuilderInfo>& all);
 void add_shrink_fit_builder(std::vector<BuilderInfo>& all);
 // SPEC §4.3: the conical fit.
 void add_conical_fit_builder(std::vector<BuilderInfo>& all);
+// SPEC §6.1: the electric plate with and without slit.
+void add_electric_plate_builder(std::vector<BuilderInfo>& all);
 
 }  // namespace styk::mesher::detail

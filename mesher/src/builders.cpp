@@ -65,6 +65,7 @@ std::vector<BuilderInfo> builder_catalogue() {
   detail::add_contact_builders(all);
   detail::add_shrink_fit_builder(all);
   detail::add_conical_fit_builder(all);
+  detail::add_electric_plate_builder(all);
   // SPEC order: compare the section numbers field by field ("§3.1.10" after "§3.1.9").
   auto numbers = [](const std::string& section) {
     std::vector<int> out;

@@ -258,32 +258,49 @@ BuildResult patch_test(const BuilderParams& p, const ElementRegistry&) {
 BuildResult cylinder_wall(const BuilderParams& p, const ElementRegistry&) {
   const std::string fam = family(p, kFamilies);
   const double r1 = 2, r2 = 3, length = p.positive("length");
+  const double t1 = p.number("t1"), t2 = p.number("t2"), k = p.positive("conductivity");
   BuildResult r;
   const Block b = ring(r.mesh, base_type(fam), r1, r2, 2 * kPi, length,
                        {p.count("nr"), p.count("ntheta"), p.count("nz")}, 1.0);
   r.mesh.add_to_surface("INNERFACE", b.side_faces(0, -1));
   merge_coincident_nodes(r.mesh);  // close the ring at 0 / 360 deg
   apply_family(r.mesh, fam, "INNERFACE");
-  r.note =
-      "SPEC 6.2 is a steady heat problem (T = 100 on r = 2, T = 25 on r = 3); the heat "
-      "procedure is not available yet, so this deck carries the geometry with a mechanical "
-      "stand-in load (unit internal pressure, plane strain).";
-  r.model = finish_model(r.mesh, "SPEC 6.2 cylinder wall r1 = 2, r2 = 3 (" + fam + "). " + r.note,
-                         p.positive("young"), p.number("poisson"));
+  char theory[160];
+  std::snprintf(theory, sizeof theory,
+                "T(r) = %g - (%g - %g) ln(r/2)/ln(3/2); heat flow per unit length 2 pi k "
+                "(T1 - T2)/ln(3/2) = %.6g",
+                t1, t1, t2, 2 * kPi * k * (t1 - t2) / std::log(r2 / r1));
+  r.model =
+      finish_model(r.mesh,
+                   "SPEC 6.2 steady heat through a cylinder wall r1 = 2 (T = " + p.text("t1") +
+                       "), r2 = 3 (T = " + p.text("t2") + "), " + fam +
+                       ", k = " + p.text("conductivity") + ": " + theory,
+                   1.0, 0.0);
+  // A heat deck: the material conducts; it needs no elastic constants.
+  Material& material = r.model.materials.front();
+  material.young.reset();
+  material.poisson.reset();
+  material.conductivity = std::array<double, 3>{k, k, k};
+  // The inner wall by its faces: the face nodes a C3D21/C3D28 adds there are interpolated on
+  // the quadratic face and sit up to ~1e-6 off the circle.
+  const std::vector<int> inner = r.mesh.surface_nodes("INNERFACE");
   const double tol = 1e-7 * r2;
-  fix(r.model,
-      nodes_where(r.mesh, [&](const Vec3& x) { return x[2] < tol || x[2] > length - tol; }), {3});
-  fix(r.model, nodes_where(r.mesh, [&](const Vec3& x) { return std::abs(x[1]) < tol; }), {2});
-  fix(r.model, nodes_where(r.mesh, [&](const Vec3& x) { return std::abs(x[0]) < tol; }), {1});
-  add_node_set(r.model, "INNER", nodes_where(r.mesh, [&](const Vec3& x) {
-                 return std::abs(std::hypot(x[0], x[1]) - r1) < tol;
-               }));
-  add_node_set(r.model, "OUTER", nodes_where(r.mesh, [&](const Vec3& x) {
-                 return std::abs(std::hypot(x[0], x[1]) - r2) < tol;
-               }));
-  Step step = static_step();
-  pressure_on(step, r.mesh, "INNERFACE", 1.0);
-  step.outputs = {print_request(OutputRequest::Kind::NodePrint, "INNER", {"U"})};
+  const auto outer = nodes_where(
+      r.mesh, [&](const Vec3& x) { return std::abs(std::hypot(x[0], x[1]) - r2) < tol; });
+  add_node_set(r.model, "INNER", inner);
+  add_node_set(r.model, "OUTER", outer);
+  std::vector<int> all(r.model.node_count());
+  for (int n = 0; n < r.model.node_count(); ++n) all[n] = n;
+  add_node_set(r.model, "NALL", all);
+  Step step;
+  step.name = "HEAT";
+  step.kind = StepKind::HeatTransfer;
+  step.has_procedure = true;
+  for (int n : inner) step.boundaries.push_back({n, 11, t1, {}});
+  for (int n : outer) step.boundaries.push_back({n, 11, t2, {}});
+  step.outputs = {print_request(OutputRequest::Kind::NodePrint, "NALL", {"NT"}),
+                  print_request(OutputRequest::Kind::NodePrint, "INNER", {"RFL"}, true),
+                  print_request(OutputRequest::Kind::NodePrint, "OUTER", {"RFL"}, true)};
   r.model.steps.push_back(step);
   return r;
 }
@@ -339,14 +356,15 @@ void add_solid_builders(std::vector<BuilderInfo>& all) {
                  patch_test});
   all.push_back({"cylinder-wall",
                  "§6.2",
-                 "Cylinder wall r 2-3 (geometry; heat pending)",
+                 "Steady heat through a cylinder wall r 2-3, T 100 inside, 25 outside",
                  {family_param("C3D28", kFamilies),
                   {"nr", "1", "elements through the wall"},
                   {"ntheta", "40", "elements around"},
                   {"nz", "5", "elements along the axis"},
                   {"length", "1", "axial length"},
-                  {"young", "200000", "Young's modulus E"},
-                  {"poisson", "0.3", "Poisson's ratio"}},
+                  {"t1", "100", "temperature on r = 2"},
+                  {"t2", "25", "temperature on r = 3"},
+                  {"conductivity", "1", "conductivity k"}},
                  cylinder_wall});
 }
 

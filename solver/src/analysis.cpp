@@ -14,6 +14,8 @@
 #include "phase_recorder.hpp"
 #include "prepared_model.hpp"
 #include "recovery.hpp"
+#include "scalar_field_analysis.hpp"
+#include "scalar_field_model.hpp"
 #include "step_conditions.hpp"
 #include "stiffness_matrix.hpp"
 #include "stress_averaging.hpp"
@@ -77,6 +79,9 @@ Results run_static_analysis(const Model& model, const ElementRegistry& registry,
                             const SolveOptions& options, ProgressSink* progress,
                             AnalysisReport* report) {
   reject_unsupported_features(model);
+  // Steady heat / electric potential: one scalar unknown per node (scalar_field_analysis.hpp).
+  if (has_scalar_field_steps(model))
+    return run_scalar_field_analysis(model, registry, options, progress, report);
   // Contact pairs make the analysis nonlinear: load increments and the active-set iteration.
   if (!model.contact_pairs.empty())
     return run_contact_analysis(model, registry, options, progress, report);

@@ -49,6 +49,17 @@ U
 *END STEP
 """
 BASE = NODES + ELEMENTS + SETS + MATERIAL + SECTION + BOUNDARY + STEP
+# Pieces for the steady heat decks.
+HEAT_MATERIAL = "*MATERIAL, NAME=STEEL\n*CONDUCTIVITY\n50.\n"
+HEAT_STEP = """*STEP
+*HEAT TRANSFER, STEADY STATE
+*BOUNDARY
+FIXED, 11, 11, 100.
+TIP, 11, 11, 20.
+*NODE PRINT, NSET=TIP
+NT
+*END STEP
+"""
 # Pieces for the contact decks: two faces of the block as surfaces, an interaction, a pair.
 CONTACT_SURFACES = "*SURFACE, NAME=BOTTOM_FACE\n1, S1\n*SURFACE, NAME=TOP_FACE\nBLOCK, S2\n"
 INTERACTION = "*SURFACE INTERACTION, NAME=DRY\n*SURFACE BEHAVIOR, PRESSURE-OVERCLOSURE=HARD\n" \
@@ -156,9 +167,9 @@ DECKS = [
      "load label 'GRAV' is not supported"),
     ("dof_out_of_range", "a rotational dof on a solid",
      base(BOUNDARY="*BOUNDARY\n>>FIXED, 1, 6\n"), 1, "last dof 6 is out of range"),
-    ("temperature_dof", "dof 11 (temperature)",
+    ("temperature_dof", "dof 11 (temperature) for every step of a mechanical deck",
      base(BOUNDARY="*BOUNDARY\nFIXED, 1, 3\n>>TIP, 11, 11, 20.\n"), 1,
-     "11 (temperature) is not supported"),
+     "dof 11 (temperature) is prescribed for every step"),
     ("boundary_encastre", "an Abaqus named boundary type",
      base(BOUNDARY="*BOUNDARY\n>>FIXED, ENCASTRE\n"), 1, "ENCASTRE are not supported"),
     ("unknown_output_variable", "a stress request in *NODE PRINT",
@@ -251,6 +262,45 @@ DECKS = [
      "Jacobian"),
     ("solver_unconstrained", "no boundary conditions: valid input, the solver rejects it",
      "@@" + base(BOUNDARY=""), 1, "free"),
+    # Steady heat and electric potential (docs/input.md): scalar and mechanical data kept apart.
+    ("heat_missing_conductivity", "a heat step whose material has no *CONDUCTIVITY",
+     base(MATERIAL=">>" + MATERIAL, BOUNDARY="", STEP=HEAT_STEP), 1, "has no *CONDUCTIVITY"),
+    ("heat_dof_in_static_step", "dof 11 prescribed inside a *STATIC step",
+     base(STEP="*STEP\n*STATIC\n*BOUNDARY\n>>TIP, 11, 11, 20.\n*END STEP\n"), 1,
+     "dof 11 (temperature) in a *STATIC step"),
+    ("heat_transient", "*HEAT TRANSFER without STEADY STATE",
+     base(MATERIAL=HEAT_MATERIAL, BOUNDARY="",
+          STEP="*STEP\n>>*HEAT TRANSFER\n1., 1.\n*END STEP\n"), 1,
+     "transient analysis, which Styk does not solve"),
+    ("heat_displacement_dof", "a displacement boundary condition in a heat step",
+     base(MATERIAL=HEAT_MATERIAL, BOUNDARY="",
+          STEP="*STEP\n*HEAT TRANSFER, STEADY STATE\n*BOUNDARY\n>>FIXED, 1, 3\n*END STEP\n"),
+     1, "*HEAT TRANSFER steps take dof 11 (temperature) only"),
+    ("heat_cload", "*CLOAD in a heat step",
+     base(MATERIAL=HEAT_MATERIAL, BOUNDARY="",
+          STEP="*STEP\n*HEAT TRANSFER, STEADY STATE\n*BOUNDARY\nFIXED, 11, 11, 0.\n*CLOAD\n"
+               ">>TIP, 3, 1.\n*END STEP\n"), 1, "use *CFLUX"),
+    ("heat_cecur", "*CECUR (current) in a heat step",
+     base(MATERIAL=HEAT_MATERIAL, BOUNDARY="",
+          STEP="*STEP\n*HEAT TRANSFER, STEADY STATE\n*BOUNDARY\nFIXED, 11, 11, 0.\n*CECUR\n"
+               ">>TIP, 9, 1.\n*END STEP\n"), 1, "*CECUR in a *HEAT TRANSFER step"),
+    ("heat_output_variable", "a stress request in a heat step",
+     base(MATERIAL=HEAT_MATERIAL, BOUNDARY="",
+          STEP="*STEP\n*HEAT TRANSFER, STEADY STATE\n*BOUNDARY\nFIXED, 11, 11, 0.\n"
+               ">>*EL PRINT\nS\n*END STEP\n"), 1, "output variable S in a *HEAT TRANSFER step"),
+    ("electric_missing_conductivity", "an electric step whose material has only *CONDUCTIVITY",
+     base(MATERIAL=">>" + HEAT_MATERIAL, BOUNDARY="",
+          STEP="*STEP\n*COUPLED THERMAL-ELECTRICAL, STEADY STATE\n*BOUNDARY\nFIXED, 9, 9, 0.\n"
+               "*END STEP\n"), 1, "has no *ELECTRICAL CONDUCTIVITY"),
+    ("solver_heat_after_static", "a heat step after a static step",
+     base(MATERIAL=MATERIAL.rstrip("\n") + "\n*CONDUCTIVITY\n50.\n", BOUNDARY="",
+          STEP="*STEP\n*STATIC\n*BOUNDARY\nFIXED, 1, 3\n*END STEP\n*STEP\n"
+               ">>*HEAT TRANSFER, STEADY STATE\n*BOUNDARY\nFIXED, 11, 11, 0.\n*END STEP\n"), 1,
+     "Styk runs decks whose steps are all mechanical"),
+    ("solver_heat_unprescribed", "a heat step with no temperature prescribed anywhere",
+     base(MATERIAL=HEAT_MATERIAL, BOUNDARY="",
+          STEP="*STEP\n>>*HEAT TRANSFER, STEADY STATE\n*CFLUX\nTIP, 11, 1.\n*END STEP\n"), 1,
+     "its steady field is determined only up to a constant"),
 ]
 
 

@@ -134,6 +134,30 @@ const std::vector<DeckReader::KeywordSpec>& DeckReader::keywords() {
        &DeckReader::on_initial_conditions,
        kData},
       {"TEMPERATURE", S::Step, {{"OP", false, V::Required}}, &DeckReader::on_temperature, kData},
+      // Steady heat and electric potential (scalar_keywords.cpp)
+      {"HEAT TRANSFER",
+       S::Step,
+       {{"STEADY STATE", false, V::None}},
+       &DeckReader::on_heat_transfer,
+       kData},
+      {"COUPLED THERMAL-ELECTRICAL",
+       S::Step,
+       {{"STEADY STATE", false, V::None}},
+       &DeckReader::on_coupled_thermal_electrical,
+       kData},
+      {"CONDUCTIVITY",
+       S::Material,
+       {{"TYPE", false, V::Required}},
+       &DeckReader::on_conductivity,
+       kData},
+      {"ELECTRICAL CONDUCTIVITY",
+       S::Material,
+       {{"TYPE", false, V::Required}},
+       &DeckReader::on_conductivity,
+       kData},
+      {"CFLUX", S::Step, {{"OP", false, V::Required}}, &DeckReader::on_cflux, kData},
+      {"CECUR", S::Step, {{"OP", false, V::Required}}, &DeckReader::on_cecur, kData},
+      {"DFLUX", S::Step, {{"OP", false, V::Required}}, &DeckReader::on_dflux, kData},
   };
   return table;
 }
@@ -335,8 +359,7 @@ void DeckReader::finish() {
     throw InputError(deck, "the deck defines no elements (*ELEMENT)");
   if (model_.steps.empty())
     throw InputError(deck, "the deck has no analysis step (*STEP ... *END STEP)");
-  for (const Material& m : model_.materials)
-    if (!m.young) throw InputError(m.where, "material " + m.name + " has no *ELASTIC constants");
+  check_field_kinds();  // includes the materials' *ELASTIC / *CONDUCTIVITY checks
   assign_sections();
   resolve_contact_references();
 }

@@ -1,7 +1,8 @@
 // DeckReader: the state of reading one deck into a Model. The keyword table (deck_reader.cpp)
 // checks where a keyword may appear and which parameters it takes, then calls one handler per
 // keyword; the handlers live in mesh_keywords.cpp, property_keywords.cpp, step_keywords.cpp,
-// contact_keywords.cpp, constraint_keywords.cpp and thermal_keywords.cpp.
+// contact_keywords.cpp, constraint_keywords.cpp, thermal_keywords.cpp and
+// scalar_keywords.cpp.
 #pragma once
 
 #include <optional>
@@ -87,6 +88,18 @@ class DeckReader {
   // thermal_keywords.cpp
   void on_initial_conditions(const KeywordLine& kw);
   void on_temperature(const KeywordLine& kw);
+  // scalar_keywords.cpp
+  void on_heat_transfer(const KeywordLine& kw);
+  void on_coupled_thermal_electrical(const KeywordLine& kw);
+  void on_conductivity(const KeywordLine& kw);  // also *ELECTRICAL CONDUCTIVITY
+  void on_cflux(const KeywordLine& kw);
+  void on_cecur(const KeywordLine& kw);
+  void on_dflux(const KeywordLine& kw);
+  void read_scalar_procedure(const KeywordLine& kw, StepKind kind);
+  void read_scalar_loads(const KeywordLine& kw, int dof);
+  // Once the deck is complete: boundary dofs and loads match their steps' procedures, and the
+  // materials have what the procedures need.
+  void check_field_kinds();
 
   // Helpers shared by the handlers.
   // Node indices named by one field: a node id or the name of a node set.

@@ -81,6 +81,14 @@ int displacement_dof(const DataLine& line, std::size_t index, const std::string&
   return static_cast<int>(dof);
 }
 
+int boundary_dof(const DataLine& line, std::size_t index, const std::string& what) {
+  const std::int64_t dof = integer_field(line, index, what);
+  if ((dof < 1 || dof > 3) && dof != 9 && dof != 11)
+    throw InputError(line.where, what + " " + std::to_string(dof) +
+                                     " is out of range; Styk reads dofs 1..3 (ux, uy, uz), 11 "
+                                     "(temperature) and 9 (electric potential)");
+  return static_cast<int>(dof);
+}
 
 Id id_field(const DataLine& line, std::size_t index, const std::string& what) {
   const std::int64_t value = integer_field(line, index, what);

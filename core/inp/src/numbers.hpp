@@ -14,6 +14,9 @@ double real_field(const DataLine& line, std::size_t index, const std::string& wh
 std::int64_t integer_field(const DataLine& line, std::size_t index, const std::string& what);
 // A displacement degree of freedom 1..3; 11 (temperature) is named as not supported.
 int displacement_dof(const DataLine& line, std::size_t index, const std::string& what);
+// A *BOUNDARY dof: 1..3 (displacement), 11 (temperature) or 9 (electric potential); whether it
+// fits the step is checked when the deck is complete.
+int boundary_dof(const DataLine& line, std::size_t index, const std::string& what);
 // A user id: an integer >= 1.
 Id id_field(const DataLine& line, std::size_t index, const std::string& what);
 

@@ -1,4 +1,5 @@
 // *STEP, *STATIC, *END STEP, *BOUNDARY, *CLOAD, *DLOAD and the output requests.
+// (*HEAT TRANSFER, *COUPLED THERMAL-ELECTRICAL and their loads: scalar_keywords.cpp.)
 #include <algorithm>
 
 #include "deck_reader.hpp"
@@ -98,8 +99,9 @@ void DeckReader::on_static(const KeywordLine& kw) {
 
 void DeckReader::on_end_step(const KeywordLine& kw) {
   if (!current_step().has_procedure)
-    throw InputError(
-        kw.where, "the step (at " + current_step().where.str() + ") has no procedure; add *STATIC");
+    throw InputError(kw.where, "the step (at " + current_step().where.str() +
+                                   ") has no procedure; add *STATIC, *HEAT TRANSFER or *COUPLED "
+                                   "THERMAL-ELECTRICAL");
   in_step_ = false;
 }
 
@@ -115,9 +117,15 @@ void DeckReader::on_boundary(const KeywordLine& kw) {
                            " (named boundary types such as ENCASTRE are not supported; "
                            "give the dofs, e.g. 'SET, 1, 3')");
     const std::vector<int> nodes = nodes_of(*line, 0, "node or node set");
-    const int first = displacement_dof(*line, 1, "first dof");
+    const int first = boundary_dof(*line, 1, "first dof");
     const bool has_last = line->fields.size() > 2 && !line->fields[2].empty();
-    const int last = has_last ? displacement_dof(*line, 2, "last dof") : first;
+    const int last = has_last ? boundary_dof(*line, 2, "last dof") : first;
+    if ((first > 3 || last > 3) && last != first)
+      throw InputError(line->where, "dofs " + std::to_string(first) + " to " +
+                                        std::to_string(last) +
+                                        ": a scalar-field dof (9, 11) is given alone, e.g. '" +
+                                        std::to_string(std::max(first, last)) + ", " +
+                                        std::to_string(std::max(first, last)) + "'");
     if (last < first)
       throw InputError(line->where, "last dof " + std::to_string(last) +
                                         " is smaller than first dof " + std::to_string(first));
@@ -161,8 +169,11 @@ void DeckReader::on_dload(const KeywordLine& kw) {
 void DeckReader::read_output(const KeywordLine& kw, OutputRequest::Kind kind) {
   using K = OutputRequest::Kind;
   const bool nodal = kind == K::NodePrint || kind == K::NodeFile;
+  // Scalar-field variables (NT, RFL, HFL heat; EPOT, RECUR, ECD electric) are matched with the
+  // step's procedure once the deck is complete (scalar_keywords.cpp).
   const std::vector<std::string> allowed =
-      nodal ? std::vector<std::string>{"U", "RF"} : std::vector<std::string>{"S", "E"};
+      nodal ? std::vector<std::string>{"U", "RF", "NT", "RFL", "EPOT", "RECUR"}
+            : std::vector<std::string>{"S", "E", "HFL", "ECD"};
   OutputRequest request;
   request.kind = kind;
   request.where = kw.where;
@@ -198,7 +209,8 @@ void DeckReader::read_output(const KeywordLine& kw, OutputRequest::Kind kind) {
                                      ": expected INTEGRATION POINTS, CENTROIDAL or AVERAGED AT "
                                      "NODES");
   }
-  const std::string list = allowed[0] + ", " + allowed[1];
+  std::string list;
+  for (const std::string& name : allowed) list += (list.empty() ? "" : ", ") + name;
   while (std::optional<DataLine> line = next_data_line()) {
     for (const std::string& field : line->fields) {
       if (field.empty()) continue;

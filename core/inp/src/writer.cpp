@@ -1,5 +1,7 @@
 #include "styk/inp/writer.hpp"
 
+#include <array>
+#include <optional>
 #include <string>
 
 #include "writer_parts.hpp"
@@ -70,6 +72,18 @@ void write_mesh(const Model& model, std::ostream& out) {
   }
 }
 
+// Isotropic when the three diagonal values agree, TYPE=ORTHO otherwise.
+void write_conductivity(std::ostream& out, const char* keyword,
+                        const std::optional<std::array<double, 3>>& k) {
+  if (!k) return;
+  const auto& v = *k;
+  if (v[0] == v[1] && v[1] == v[2])
+    out << keyword << '\n' << num(v[0]) << '\n';
+  else
+    out << keyword << ", TYPE=ORTHO\n"
+        << num(v[0]) << ", " << num(v[1]) << ", " << num(v[2]) << '\n';
+}
+
 void write_properties(const Model& model, std::ostream& out) {
   for (const Material& m : model.materials) {
     out << "*MATERIAL, NAME=" << m.name << '\n';
@@ -78,6 +92,8 @@ void write_properties(const Model& model, std::ostream& out) {
     if (m.density) out << "*DENSITY\n" << num(*m.density) << '\n';
     if (m.expansion)
       out << "*EXPANSION, ZERO=" << num(m.expansion_reference) << '\n' << num(*m.expansion) << '\n';
+    write_conductivity(out, "*CONDUCTIVITY", m.conductivity);
+    write_conductivity(out, "*ELECTRICAL CONDUCTIVITY", m.electrical_conductivity);
   }
   for (const Section& s : model.sections) {
     out << "*SOLID SECTION, ELSET=" << s.elset << ", MATERIAL=" << s.material
@@ -126,7 +142,12 @@ void write_step(const Model& model, const Step& step, std::ostream& out) {
   out << "*STEP";
   if (!step.name.empty()) out << ", NAME=" << step.name;
   out << '\n';
-  if (step.has_procedure) {
+  if (step.has_procedure && step.kind != StepKind::Static) {
+    const StaticProcedure& p = step.procedure;
+    out << (step.kind == StepKind::HeatTransfer ? "*HEAT TRANSFER" : "*COUPLED THERMAL-ELECTRICAL")
+        << ", STEADY STATE\n"
+        << num(p.initial_increment) << ", " << num(p.total_time) << '\n';
+  } else if (step.has_procedure) {
     const StaticProcedure& p = step.procedure;
     out << "*STATIC";
     if (const char* solver = solver_name(p.solver)) out << ", SOLVER=" << solver;
@@ -149,6 +170,17 @@ void write_step(const Model& model, const Step& step, std::ostream& out) {
       out << model.elements[d.element].id << ", P" << d.face << ", " << num(d.magnitude) << '\n';
   }
   inp::write_step_temperatures(model, step, out);
+  if (!step.cfluxes.empty() || step.cflux_op_new) {
+    out << (step.kind == StepKind::ElectricConduction ? "*CECUR" : "*CFLUX")
+        << (step.cflux_op_new ? ", OP=NEW" : "") << '\n';
+    for (const ConcentratedLoad& c : step.cfluxes)
+      out << model.node_ids[c.node] << ", " << c.dof << ", " << num(c.value) << '\n';
+  }
+  if (!step.dfluxes.empty() || step.dflux_op_new) {
+    out << "*DFLUX" << (step.dflux_op_new ? ", OP=NEW" : "") << '\n';
+    for (const DistributedLoad& d : step.dfluxes)
+      out << model.elements[d.element].id << ", S" << d.face << ", " << num(d.magnitude) << '\n';
+  }
   for (const OutputRequest& o : step.outputs) {
     const bool nodal =
         o.kind == OutputRequest::Kind::NodePrint || o.kind == OutputRequest::Kind::NodeFile;

@@ -10,6 +10,7 @@
 #include <vector>
 
 #include "dat_contact.hpp"
+#include "dat_scalar.hpp"
 #include "fortran_format.hpp"
 #include "styk/io/dat_writer.hpp"
 
@@ -33,7 +34,11 @@ class DatPrinter {
                                std::to_string(inc.step) + " but the model has " +
                                std::to_string(model_.steps.size()) + " steps");
     for (const OutputRequest& request : model_.steps[inc.step - 1].outputs) {
-      if (request.kind == OutputRequest::Kind::NodePrint)
+      const bool printed = request.kind == OutputRequest::Kind::NodePrint ||
+                           request.kind == OutputRequest::Kind::ElementPrint;
+      if (printed && inc.scalar.kind != ScalarFieldResult::Kind::None)
+        io::print_scalar(out_, model_, request, inc);  // heat / electric steps
+      else if (request.kind == OutputRequest::Kind::NodePrint)
         print_nodes(request, inc);
       else if (request.kind == OutputRequest::Kind::ElementPrint)
         print_elements(request, inc);

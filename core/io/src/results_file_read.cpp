@@ -10,6 +10,7 @@
 
 #include "h5_util.hpp"
 #include "results_contact.hpp"
+#include "results_scalar.hpp"
 #include "results_schema.hpp"
 #include "styk/io/results_file.hpp"
 
@@ -146,6 +147,7 @@ IncrementResult read_increment(hid_t group, const std::string& label, const Mode
     inc.*field.member = to_rows<Tensor6>(flat);
   }
   io::read_contact(group, label, model, inc);
+  io::read_scalar(group, label, model, inc);
   return inc;
 }
 

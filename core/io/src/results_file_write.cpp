@@ -6,6 +6,7 @@
 
 #include "h5_util.hpp"
 #include "results_contact.hpp"
+#include "results_scalar.hpp"
 #include "results_schema.hpp"
 #include "styk/io/results_file.hpp"
 #include "temp_file.hpp"
@@ -46,6 +47,13 @@ void check_sizes(const Model& model, const IncrementResult& inc) {
       complain(std::string(field.name) + " has " + std::to_string(rows) + " rows, expected " +
                std::to_string(expected));
   }
+  for (const auto* field : {&inc.scalar.value, &inc.scalar.reaction})
+    if (!field->empty() && field->size() != nodes)
+      complain(std::to_string(field->size()) + " nodal scalar values for " + std::to_string(nodes) +
+               " nodes");
+  if (!inc.scalar.flux_nodal.empty() && inc.scalar.flux_nodal.size() != nodes)
+    complain(std::to_string(inc.scalar.flux_nodal.size()) + " nodal fluxes for " +
+             std::to_string(nodes) + " nodes");
   if (inc.ip_offset.empty()) {
     if (!inc.S.empty() || !inc.E.empty()) complain("integration-point values without ip_offset");
     return;
@@ -60,6 +68,10 @@ void check_sizes(const Model& model, const IncrementResult& inc) {
   if (!inc.S.empty() && inc.S.size() != points)
     complain(std::to_string(inc.S.size()) + " stresses for " + std::to_string(points) +
              " integration points");
+  for (const auto* field : {&inc.scalar.gradient, &inc.scalar.flux})
+    if (!field->empty() && field->size() != points)
+      complain(std::to_string(field->size()) + " scalar-field gradients or fluxes for " +
+               std::to_string(points) + " integration points");
   if (!inc.E.empty() && inc.E.size() != points)
     complain(std::to_string(inc.E.size()) + " strains for " + std::to_string(points) +
              " integration points");
@@ -137,6 +149,7 @@ void write_increment(hid_t steps, const IncrementResult& inc) {
                6);
   }
   io::write_contact(group.get(), inc);
+  io::write_scalar(group.get(), inc);
 }
 
 }  // namespace

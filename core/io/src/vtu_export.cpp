@@ -98,6 +98,15 @@ void check_sizes(const Model& model, const IncrementResult& inc) {
       throw std::runtime_error("results of " + increment_label(inc) + " hold " +
                                std::to_string(field->size()) + " nodal stresses for " +
                                std::to_string(nodes) + " nodes");
+  for (const auto* field : {&inc.scalar.value, &inc.scalar.reaction})
+    if (!field->empty() && field->size() != nodes)
+      throw std::runtime_error("results of " + increment_label(inc) + " hold " +
+                               std::to_string(field->size()) + " nodal scalars for " +
+                               std::to_string(nodes) + " nodes");
+  if (!inc.scalar.flux_nodal.empty() && inc.scalar.flux_nodal.size() != nodes)
+    throw std::runtime_error("results of " + increment_label(inc) + " hold " +
+                             std::to_string(inc.scalar.flux_nodal.size()) + " nodal fluxes for " +
+                             std::to_string(nodes) + " nodes");
   for (const ContactNodeResult& c : inc.contact)
     if (c.node < 0 || static_cast<std::size_t>(c.node) >= nodes)
       throw std::runtime_error("results of " + increment_label(inc) +
@@ -208,6 +217,15 @@ VtuExportSummary write_vtu(const std::string& path, const Model& model,
     if (inc != nullptr && !inc->S_nodal_II.empty())
       write_tensor_array(writer, "S_nodal_II", inc->S_nodal_II);
     if (inc != nullptr && !inc->contact.empty()) write_contact_arrays(writer, model, *inc);
+    if (inc != nullptr && inc->scalar.kind != ScalarFieldResult::Kind::None) {
+      // Steady heat / electric potential: the field, its reaction flows and the nodal flux.
+      const bool heat = inc->scalar.kind == ScalarFieldResult::Kind::Temperature;
+      if (!inc->scalar.value.empty()) writer.array(heat ? "NT" : "EPOT", 1, inc->scalar.value);
+      if (!inc->scalar.reaction.empty())
+        writer.array(heat ? "RFL" : "RECUR", 1, inc->scalar.reaction);
+      if (!inc->scalar.flux_nodal.empty())
+        writer.array(heat ? "HFL" : "ECD", 3, flatten(inc->scalar.flux_nodal));
+    }
     out << "      </PointData>\n";
 
     out << "      <CellData>\n";

@@ -152,7 +152,54 @@ std::string drawable_data(const Model& model, const IncrementResult& inc) {
   tensors("S", {&inc.S_element_nodes, &inc.S_nodal_I, &inc.S_nodal_II, &inc.S_centroid, &inc.S});
   tensors("E", {&inc.E_element_nodes, &inc.E_nodal_I, &inc.E_nodal_II, &inc.E_centroid, &inc.E});
   if (!inc.contact.empty()) held.push_back("contact (" + join(contact_field_names(), ", ") + ")");
+  if (inc.scalar.kind == ScalarFieldResult::Kind::Temperature) held.push_back("NT, RFL, HFL.*");
+  if (inc.scalar.kind == ScalarFieldResult::Kind::Potential) held.push_back("EPOT, RECUR, ECD.*");
   return held.empty() ? std::string("nothing drawable") : join(held, ", ");
+}
+
+// NT / EPOT, RFL / RECUR (nodal scalars) and HFL / ECD (nodal flux vectors) of a scalar-field
+// increment; the heat names need a temperature field, the electric ones a potential.
+template <class Unknown>
+ScalarField scalar_field_quantity(const Model& model, const IncrementResult& inc,
+                                  const std::string& quantity, const std::string& suffix,
+                                  const Unknown& unknown) {
+  const ScalarFieldResult& s = inc.scalar;
+  const bool heat_name = quantity == "NT" || quantity == "RFL" || quantity == "HFL";
+  const bool matches = s.kind == (heat_name ? ScalarFieldResult::Kind::Temperature
+                                            : ScalarFieldResult::Kind::Potential);
+  if (!matches)
+    throw InputError({}, "step " + std::to_string(inc.step) + " increment " +
+                             std::to_string(inc.increment) + " holds no " + quantity +
+                             "; it holds: " + drawable_data(model, inc));
+  ScalarField field;
+  field.location = FieldLocation::Node;
+  if (quantity == "HFL" || quantity == "ECD") {
+    const int component = vector_component(suffix);
+    if (component < 0) throw unknown();
+    if (s.flux_nodal.size() != model.coords.size())
+      throw InputError({}, quantity + " holds " + std::to_string(s.flux_nodal.size()) +
+                               " nodal values for " + std::to_string(model.coords.size()) +
+                               " nodes");
+    field.name = quantity + "." + (component == 3 ? "mag" : std::string(1, "xyz"[component]));
+    field.values.resize(s.flux_nodal.size());
+    for (std::size_t i = 0; i < s.flux_nodal.size(); ++i) {
+      const Vec3& v = s.flux_nodal[i];
+      field.values[i] =
+          component == 3 ? std::sqrt(v[0] * v[0] + v[1] * v[1] + v[2] * v[2]) : v[component];
+    }
+  } else {
+    if (!suffix.empty()) throw unknown();
+    const bool value = quantity == "NT" || quantity == "EPOT";
+    const std::vector<double>& data = value ? s.value : s.reaction;
+    if (data.size() != model.coords.size())
+      throw InputError({}, quantity + " holds " + std::to_string(data.size()) +
+                               " nodal values for " + std::to_string(model.coords.size()) +
+                               " nodes");
+    field.name = quantity;
+    field.values = data;
+  }
+  field.description = field.name;
+  return field;
 }
 
 }  // namespace
@@ -193,6 +240,9 @@ std::vector<std::string> field_names() {
     }
   }
   for (const std::string& name : contact_field_names()) names.push_back(name);
+  for (const char* v : {"NT", "RFL", "EPOT", "RECUR"}) names.push_back(v);
+  for (const char* v : {"HFL", "ECD"})
+    for (const char* s : {"mag", "x", "y", "z"}) names.push_back(std::string(v) + "." + s);
   return names;
 }
 
@@ -231,6 +281,11 @@ ScalarField evaluate_field(const Model& model, const IncrementResult& inc, const
     }
     return field;
   }
+  // Steady heat / electric potential (docs/solver.md): the nodal field, its reaction flows, and
+  // the nodal-averaged flux (magnitude or component).
+  if (quantity == "NT" || quantity == "EPOT" || quantity == "RFL" || quantity == "RECUR" ||
+      quantity == "HFL" || quantity == "ECD")
+    return scalar_field_quantity(model, inc, quantity, suffix, unknown);
   if (quantity == "S" || quantity == "E") {
     const bool stress = quantity == "S";
     const TensorFunction f = tensor_function(suffix, stress);

@@ -124,7 +124,12 @@ RenderJob::RenderJob(const Model& model, const ElementRegistry& registry,
     colors_ = color_scale_for(*field_, range, options_.bands, options_.smooth);
   }
 
-  if (options_.deform.kind != DeformSpec::Kind::None) {
+  // A steady heat / electric-potential increment has no displacements: the automatic default
+  // draws it undeformed (an explicit factor still asks for U and is refused below).
+  const bool scalar_only = increment_ && increment_->U.empty() &&
+                           increment_->scalar.kind != ScalarFieldResult::Kind::None;
+  if (options_.deform.kind != DeformSpec::Kind::None &&
+      !(scalar_only && options_.deform.kind == DeformSpec::Kind::Auto)) {
     if (!increment_)
       throw InputError({}, "a deformed shape needs a results file; this input is a mesh only");
     if (increment_->U.size() != model.coords.size())

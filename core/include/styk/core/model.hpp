@@ -55,6 +55,10 @@ struct Material {
   // *EXPANSION: mean coefficient and the reference temperature (ZERO=)
   std::optional<double> expansion;
   double expansion_reference = 0.0;
+  // *CONDUCTIVITY / *ELECTRICAL CONDUCTIVITY: diagonal k11, k22, k33 in global axes (isotropic:
+  // three equal values); what steady heat / electric-conduction steps need (docs/solver.md).
+  std::optional<std::array<double, 3>> conductivity;
+  std::optional<std::array<double, 3>> electrical_conductivity;
   SourceLoc where;
 };
 
@@ -69,7 +73,8 @@ struct Section {
   SourceLoc where;
 };
 
-// Prescribed value of one degree of freedom (1-based dof as in the deck: 1..3 = ux, uy, uz).
+// Prescribed value of one degree of freedom (1-based dof as in the deck: 1..3 = ux, uy, uz;
+// 11 = temperature, 9 = electric potential in scalar-field steps).
 struct Boundary {
   int node = 0;               // node index
   int dof = 1;
@@ -79,7 +84,7 @@ struct Boundary {
 
 struct ConcentratedLoad {
   int node = 0;               // node index
-  int dof = 1;                // 1..3
+  int dof = 1;                // 1..3; *CFLUX 11 (heat flow), *CECUR 9 (current)
   double value = 0.0;
   SourceLoc where;
 };
@@ -129,9 +134,15 @@ struct NodalTemperature {
   SourceLoc where;
 };
 
+// What a step solves: the mechanical static problem or a steady scalar field (docs/solver.md,
+// "Steady heat and electric potential"): *HEAT TRANSFER, STEADY STATE (temperature, dof 11) or
+// the electric part of *COUPLED THERMAL-ELECTRICAL, STEADY STATE (potential, dof 9).
+enum class StepKind { Static, HeatTransfer, ElectricConduction };
+
 struct Step {
   std::string name;
-  StaticProcedure procedure;
+  StepKind kind = StepKind::Static;
+  StaticProcedure procedure;  // scalar steps use its times, solver choice and `where`
   bool has_procedure = false;
   // Boundary conditions and loads given inside this step. What an analysis step sees is the
   // accumulation over the steps up to it (OP=MOD semantics); OP=NEW resets (flags below).
@@ -145,6 +156,12 @@ struct Step {
   // OP=NEW returns every node to its initial temperature first.
   std::vector<NodalTemperature> temperatures;
   bool temperature_op_new = false;
+  // Scalar steps: *CFLUX / *CECUR nodal flows and *DFLUX uniform face fluxes S1..S6 (into the
+  // body positive), accumulated over the steps like the loads.
+  std::vector<ConcentratedLoad> cfluxes;
+  std::vector<DistributedLoad> dfluxes;
+  bool cflux_op_new = false;
+  bool dflux_op_new = false;
   std::vector<OutputRequest> outputs;
   SourceLoc where;
 };

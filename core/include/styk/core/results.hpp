@@ -42,6 +42,20 @@ struct ContactEquilibrium {
   double relative_residual = 0.0;  // |applied + reactions| / max(|applied|, |reactions|, |contact|)
 };
 
+// A steady scalar field (heat or electric-conduction steps, docs/solver.md): nodal values, the
+// reaction flows at prescribed nodes, and gradient and flux at the integration points (the layout
+// of IncrementResult::ip_offset) with the flux averaged at the nodes (method I of SPEC §5).
+// Flux = -k grad(phi): heat flux HFL, or current density ECD with the electric field -grad(phi).
+struct ScalarFieldResult {
+  enum class Kind { None, Temperature, Potential };
+  Kind kind = Kind::None;        // None: a mechanical increment, every vector below empty
+  std::vector<double> value;     // per node: NT (temperature) or EPOT (potential)
+  std::vector<double> reaction;  // per node: RFL (heat flow) / RECUR (current), 0 where free
+  std::vector<Vec3> gradient;    // per integration point: grad(phi)
+  std::vector<Vec3> flux;        // per integration point: -k grad(phi)
+  std::vector<Vec3> flux_nodal;  // per node: mean of the element-node (extrapolated) fluxes
+};
+
 struct IncrementResult {
   int step = 1;                 // 1-based step number
   int increment = 1;            // 1-based increment within the step
@@ -70,6 +84,9 @@ struct IncrementResult {
   std::vector<ContactNodeResult> contact;
   std::vector<ContactPairResult> contact_pairs;
   ContactEquilibrium contact_equilibrium;
+
+  // Scalar-field steps (*HEAT TRANSFER, *COUPLED THERMAL-ELECTRICAL): U, RF, S and E stay empty.
+  ScalarFieldResult scalar;
 };
 
 struct Results {
