@@ -17,6 +17,14 @@ void add_contact_builders(std::vector<BuilderInfo>& all);
 void add_shrink_fit_builder(std::vector<BuilderInfo>& all);
 // SPEC §4.3: the conical fit.
 void add_conical_fit_builder(std::vector<BuilderInfo>& all);
+// SPEC §4.4: the spline joint.
+void add_spline_joint_builder(std::vector<BuilderInfo>& all);
+// SPEC §4.5: the P3G polygon joint.
+void add_p3g_joint_builder(std::vector<BuilderInfo>& all);
+// SPEC §4.6: the bolted flange with gasket.
+void add_bolted_flange_builder(std::vector<BuilderInfo>& all);
+// SPEC §2.4: two stacked elements with a contact interface.
+void add_stacked_elements_builder(std::vector<BuilderInfo>& all);
 // SPEC §6.1: the electric plate with and without slit.
 void add_electric_plate_builder(std::vector<BuilderInfo>& all);
 

@@ -65,6 +65,10 @@ std::vector<BuilderInfo> builder_catalogue() {
   detail::add_contact_builders(all);
   detail::add_shrink_fit_builder(all);
   detail::add_conical_fit_builder(all);
+  detail::add_spline_joint_builder(all);
+  detail::add_p3g_joint_builder(all);
+  detail::add_bolted_flange_builder(all);
+  detail::add_stacked_elements_builder(all);
   detail::add_electric_plate_builder(all);
   // SPEC order: compare the section numbers field by field ("§3.1.10" after "§3.1.9").
   auto numbers = [](const std::string& section) {

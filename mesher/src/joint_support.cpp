@@ -1,0 +1,129 @@
+#include "joint_support.hpp"
+
+#include <cmath>
+#include <map>
+
+#include <Eigen/Core>
+
+#include "builder_support.hpp"
+#include "contact_support.hpp"
+#include "styk/mesher/block_mesh.hpp"
+
+namespace styk::mesher::detail {
+namespace {
+
+double axial(const AxialSegment& s, double zeta) { return s.z0 + (s.z1 - s.z0) * 0.5 * (zeta + 1); }
+
+}  // namespace
+
+Vec3 hexagon_vertex(double a, int i) {
+  const double angle = (-30.0 + 60.0 * i) * kPi / 180.0;
+  return {a * std::cos(angle), a * std::sin(angle), 0.0};
+}
+
+void mesh_hexagon_core(Mesh& mesh, const std::string& type, double a, int n,
+                       const AxialSegment& segment, const std::string& elset) {
+  // Rhombus j spans O, V(2j), V(2j + 1) = V(2j) + V(2j + 2), V(2j + 2): the parallelogram
+  // s V(2j) + t V(2j + 2), right-handed because V(2j + 2) lies 120 degrees further on.
+  for (int j = 0; j < 3; ++j) {
+    const Vec3 A = hexagon_vertex(a, 2 * j), B = hexagon_vertex(a, 2 * j + 2);
+    const BlockMap map = [A, B, segment](const Vec3& xi) {
+      const double s = 0.5 * (xi[0] + 1), t = 0.5 * (xi[1] + 1);
+      return Vec3{s * A[0] + t * B[0], s * A[1] + t * B[1], axial(segment, xi[2])};
+    };
+    mesh_block(mesh, map, {type, {n, n, segment.rows}, {1, 1, segment.grading}, elset});
+  }
+}
+
+SectionCurve hexagon_side(double a, int side) {
+  const Vec3 v0 = hexagon_vertex(a, side), v1 = hexagon_vertex(a, side + 1);
+  return [v0, v1](double u) {
+    return Vec3{v0[0] + u * (v1[0] - v0[0]), v0[1] + u * (v1[1] - v0[1]), 0.0};
+  };
+}
+
+BlockMap curve_ring(const SectionCurve& inner, const SectionCurve& outer,
+                    const AxialSegment& segment) {
+  return [inner, outer, segment](const Vec3& xi) {
+    const double s = 0.5 * (xi[0] + 1), u = 0.5 * (xi[1] + 1);
+    const Vec3 a = inner(u), b = outer(u);
+    return Vec3{a[0] + s * (b[0] - a[0]), a[1] + s * (b[1] - a[1]), axial(segment, xi[2])};
+  };
+}
+
+BlockMap polar_block(double rho0, double rho1, const std::function<double(double)>& lo,
+                     const std::function<double(double)>& hi, const AxialSegment& segment) {
+  return [=](const Vec3& xi) {
+    const double rho = rho0 + (rho1 - rho0) * 0.5 * (xi[0] + 1);
+    const double a0 = lo(rho), a1 = hi(rho);
+    const double angle = a0 + (a1 - a0) * 0.5 * (xi[1] + 1);
+    return Vec3{rho * std::cos(angle), rho * std::sin(angle), axial(segment, xi[2])};
+  };
+}
+
+std::vector<ConcentratedLoad> rim_torque_loads(const Model& model, const ElementRegistry& registry,
+                                               const std::vector<FaceRef>& faces, double torque) {
+  std::map<int, double> area;  // node -> equivalent nodal area (C3D20 corners: negative)
+  for (const FaceRef& f : faces) {
+    const Element& element = model.elements[f.element];
+    const TElement* formulation = registry.find(element.type);
+    if (!formulation)
+      throw InputError({model.source, 0}, "element type " + element.type +
+                                              " is not registered (are the plug-ins loaded?)");
+    ElementGeometry g;
+    g.X.resize(element.node_count, 3);
+    g.id = element.id;
+    const int* nodes = model.element_nodes(f.element);
+    for (int i = 0; i < element.node_count; ++i)
+      for (int d = 0; d < 3; ++d) g.X(i, d) = model.coords[nodes[i]][d];
+    Eigen::VectorXd a;
+    formulation->nodal_areas(g, f.face, a);
+    for (int i = 0; i < element.node_count; ++i)
+      if (a(i) != 0.0) area[nodes[i]] += a(i);
+  }
+  double lever = 0.0;  // sum A_i r_i
+  for (const auto& [node, a] : area)
+    lever += a * std::hypot(model.coords[node][0], model.coords[node][1]);
+  const double k = torque / lever;
+  std::vector<ConcentratedLoad> loads;
+  for (const auto& [node, a] : area) {
+    const Vec3& x = model.coords[node];
+    const double r = std::hypot(x[0], x[1]);
+    // F = k A (-y, x) / r: moment x F_y - y F_x = k A r.
+    const double fx = -k * a * x[1] / r, fy = k * a * x[0] / r;
+    if (fx != 0.0) loads.push_back({node, 1, fx, {}});
+    if (fy != 0.0) loads.push_back({node, 2, fy, {}});
+  }
+  return loads;
+}
+
+void add_joint_torque_step(BuildResult& result, const ElementRegistry& registry,
+                           const std::string& family, double torque_nm, double hold_z) {
+  const Mesh& mesh = result.mesh;
+  Model& model = result.model;
+  const double tol = 1e-7 * mesh.size();
+  const auto end = nodes_where(mesh, [&](const Vec3& x) { return x[2] < tol; });
+  add_node_set(model, "SHAFT_END", end);
+  fix(model, end, {1, 2, 3});
+  const std::vector<int> rim = mesh.surface_nodes("FLANGE_RIM");
+  add_node_set(model, "FLANGE_RIM", rim);
+  const auto off = [&](int node) {
+    const Vec3& x = mesh.nodes[node];
+    return std::abs(x[1]) + std::abs(x[2] - hold_z) + (x[0] > 0 ? 0.0 : 2 * mesh.size());
+  };
+  int hold = rim.at(0);
+  for (int node : rim)
+    if (off(node) < off(hold)) hold = node;
+  add_node_set(model, "HUB_HOLD", {hold});
+  fix(model, {hold}, {3});
+
+  Step step = static_step();
+  step.name = "TORQUE";
+  step.cloads = rim_torque_loads(model, registry, mesh.surfaces.at("FLANGE_RIM"), torque_nm * 1e3);
+  step.outputs = {contact_print(family),
+                  print_request(OutputRequest::Kind::NodePrint, "FLANGE_RIM", {"U"}),
+                  print_request(OutputRequest::Kind::NodePrint, "SHAFT_END", {"RF"}, true)};
+  model.steps.push_back(step);
+}
+
+}  // namespace styk::mesher::detail
