@@ -5,6 +5,10 @@ add_library(styk_gui_widgets STATIC
   src/gl_view.cpp
   src/form_dialog.cpp
   src/model_dialogs.cpp
+  src/dialog_fields.cpp
+  src/revolve_dialog.cpp
+  src/interaction_dialogs.cpp
+  src/entry_dialogs.cpp
   src/model_tree.cpp
   src/results_panel.cpp
   src/path_chart.cpp

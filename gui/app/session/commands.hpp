@@ -4,6 +4,7 @@
 // mesh edits store the model before and after, because Model's id maps cannot shrink.
 #pragma once
 
+#include <functional>
 #include <memory>
 #include <string>
 #include <vector>
@@ -18,6 +19,9 @@ class Command {
   virtual std::string text() const = 0;  // "Add material STEEL", for the Edit menu
   virtual void redo(Model& model) = 0;
   virtual void undo(Model& model) = 0;
+  // Whether results of the model stay valid across this edit (defining a set changes neither the
+  // mesh nor the analysis); most edits make them stale.
+  virtual bool keeps_results() const { return false; }
 };
 
 class UndoStack {
@@ -30,6 +34,9 @@ class UndoStack {
   void redo(Model& model);
   std::string undo_text() const;  // empty when nothing to undo
   std::string redo_text() const;
+  // keeps_results() of the command undo() / redo() would apply next (false when there is none).
+  bool undo_keeps_results() const { return can_undo() && commands_[index_ - 1]->keeps_results(); }
+  bool redo_keeps_results() const { return can_redo() && commands_[index_]->keeps_results(); }
   void clear();
   void set_clean() { clean_ = index_; }
   bool is_clean() const { return clean_ == index_; }
@@ -57,5 +64,10 @@ std::unique_ptr<Command> make_add_cloads(int step, std::vector<ConcentratedLoad>
 std::unique_ptr<Command> make_add_dloads(int step, std::vector<DistributedLoad> loads,
                                          std::string text);
 std::unique_ptr<Command> make_add_node_set(NodeSet set);
+
+// Any other small edit: `redo` applies it, `undo` reverts it exactly (each captures the values it
+// needs, e.g. the entry it removes and where it was).
+using ModelChange = std::function<void(Model&)>;
+std::unique_ptr<Command> make_model_edit(std::string text, ModelChange redo, ModelChange undo);
 
 }  // namespace styk::gui

@@ -69,20 +69,23 @@ void Document::attach_results(Results results, std::string results_path) {
 }
 
 void Document::apply(std::unique_ptr<Command> command) {
+  const bool keep_results = command->keeps_results();
   history_.push(model_, std::move(command));
-  changed(false);
+  changed(keep_results);
 }
 
 void Document::undo() {
   if (!history_.can_undo()) return;
+  const bool keep_results = history_.undo_keeps_results();
   history_.undo(model_);
-  changed(false);
+  changed(keep_results);
 }
 
 void Document::redo() {
   if (!history_.can_redo()) return;
+  const bool keep_results = history_.redo_keeps_results();
   history_.redo(model_);
-  changed(false);
+  changed(keep_results);
 }
 
 void Document::changed(bool keep_results) {

@@ -33,7 +33,7 @@ class Document {
   void attach_results(Results results, std::string results_path);
 
   // Every edit goes through here (undoable). Stale results are dropped: they belong to the
-  // model before the edit.
+  // model before the edit (unless the command keeps_results(), e.g. a new set).
   void apply(std::unique_ptr<Command> command);
   void undo();
   void redo();

@@ -10,6 +10,7 @@
 #include <vector>
 
 #include "session/document.hpp"
+#include "session/selection.hpp"
 #include "styk/render/frame.hpp"
 #include "styk/render/geometry.hpp"
 #include "styk/render/render_job.hpp"
@@ -23,10 +24,14 @@ struct DisplaySettings {
   render::Averaging averaging = render::Averaging::MethodII;
   int bands = render::kDefaultBands;
   bool smooth = false;
-  bool deformed = true;     // with results
-  bool auto_scale = true;   // largest displacement = 0.1 of the model size
-  double scale = 1.0;       // when !auto_scale
-  bool outline = true;      // the undeformed outline under a deformed shape
+  bool deformed = true;    // with results
+  bool auto_scale = true;  // largest displacement = 0.1 of the model size
+  double scale = 1.0;      // when !auto_scale
+  bool outline = true;     // the undeformed outline under a deformed shape
+  // Animation over the increments: one colour range and one camera box for every frame, so the
+  // pictures compare. Empty: the field's range over the visible elements; the shape's bounds.
+  std::optional<std::array<double, 2>> range;
+  std::optional<std::array<std::array<float, 3>, 2>> camera_box;  // lower, upper (frame origin)
 };
 
 // The camera as the mouse moves it: a named view turned by azimuth/elevation, zoomed, and panned
@@ -38,9 +43,9 @@ struct ViewState {
 };
 
 struct ProbeResult {
-  int node = -1;            // node index
+  int node = -1;  // node index
   Id node_id = 0;
-  Vec3 position{};          // undeformed coordinates
+  Vec3 position{};              // undeformed coordinates
   std::optional<double> value;  // the contour field at the node, when a field is shown
   std::string field;
 };
@@ -56,7 +61,32 @@ class Scene {
   // Camera and overlay for a viewport of width x height pixels. Cheap: call per paint.
   const render::Frame& frame(int width, int height, const ViewState& view);
 
+  // The scale of the results' deformation, and the one drawn now (an animation frame draws a
+  // fraction of it, set_deformation_fraction()).
   double deformation_scale() const { return scale_; }
+  double drawn_scale() const { return fraction_ * scale_; }
+  // Redraws the deformed shape at `fraction` (0..1) of deformation_scale() without rebuilding the
+  // skin or the field; the camera box stays the one of the whole deformation.
+  void set_deformation_fraction(double fraction);
+  // The box the camera fits: the undeformed and the fully deformed shape, relative to the origin.
+  const std::array<std::array<float, 3>, 2>& camera_box() const { return camera_box_; }
+
+  // What is selected, drawn as markers over the model (overlay triangles, see highlight.hpp).
+  void set_selection(Selection selection) { selection_ = std::move(selection); }
+  const Selection& selection() const { return selection_; }
+
+  // For picking and highlighting: the drawn skin, the model, where a node is drawn.
+  const render::SkinModel* skin() const { return skin_.get(); }
+  const Model* model() const { return model_; }
+  const render::Frame& last_frame() const { return frame_; }
+  // Increases whenever the vertex arrays change (rebuild, deformation fraction): a view that
+  // keeps the geometry in GL buffers uploads it again when this moves.
+  long geometry_revision() const { return geometry_revision_; }
+  // Deformed position relative to the geometry origin, at the drawn scale.
+  Vec3 placed(int node) const;
+  // Pixel position (top-left origin, continuous: pixel (i, j) spans [i, i+1) x [j, j+1)) and
+  // normalised depth (-1 near .. 1 far) of a node in the last frame().
+  std::array<double, 3> screen_position(int node) const;
   const render::ScalarField* field() const { return field_ ? &*field_ : nullptr; }
   const render::ColorScale& colors() const { return colors_; }
   const IncrementResult* increment() const { return increment_; }
@@ -71,7 +101,7 @@ class Scene {
   std::optional<double> value_at_node(int node) const;
 
  private:
-  Vec3 placed(int node) const;  // deformed position relative to the geometry origin
+  void build_geometry();
 
   const Model* model_ = nullptr;
   const IncrementResult* increment_ = nullptr;
@@ -79,6 +109,11 @@ class Scene {
   std::optional<render::ScalarField> field_;
   render::ColorScale colors_;
   double scale_ = 0.0;
+  double fraction_ = 1.0;
+  long geometry_revision_ = 0;
+  render::GeometryRequest request_;  // without displacement and scale (set per build)
+  std::array<std::array<float, 3>, 2> camera_box_{};
+  Selection selection_;
   std::vector<std::string> title_lines_;
   std::string legend_heading_;
   std::vector<int> visible_nodes_;

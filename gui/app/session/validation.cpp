@@ -7,6 +7,7 @@
 #include <cstdlib>
 #include <stdexcept>
 
+#include "session/input_checks.hpp"
 #include "styk/mesher/block_mesh.hpp"
 #include "styk/mesher/convert.hpp"
 #include "styk/mesher/geometry_maps.hpp"
@@ -14,44 +15,7 @@
 namespace styk::gui {
 namespace {
 
-[[noreturn]] void refuse(const std::string& message) { throw InputError({}, message); }
-
 const std::array<std::string, 6> kSides{"XMIN", "XMAX", "YMIN", "YMAX", "ZMIN", "ZMAX"};
-
-// Set and material names go into the deck unquoted: a letter, then letters, digits, _ - .
-void check_name(const std::string& name, const std::string& what) {
-  if (name.empty()) refuse(what + " needs a name");
-  if (!std::isalpha(static_cast<unsigned char>(name[0])))
-    refuse(what + " name '" + name + "' must start with a letter");
-  for (char c : name)
-    if (!std::isalnum(static_cast<unsigned char>(c)) && c != '_' && c != '-' && c != '.')
-      refuse(what + " name '" + name + "' may hold only letters, digits, _ - and .");
-  if (name.size() > 80) refuse(what + " name '" + name + "' is longer than 80 characters");
-}
-
-const NodeSet& existing_nset(const Model& model, const std::string& name) {
-  if (name.empty()) refuse("choose a node set");
-  const NodeSet* set = model.find_nset(name);
-  if (!set) refuse("no node set " + to_upper(name) + " in the model");
-  if (set->nodes.empty()) refuse("node set " + set->name + " is empty");
-  return *set;
-}
-
-void check_step(const Model& model, int step, bool model_level_allowed) {
-  if (step < 0 && model_level_allowed) return;
-  if (model.steps.empty()) refuse("the model has no step: add a step first");
-  if (step < 0 || step >= static_cast<int>(model.steps.size()))
-    refuse("no step " + std::to_string(step + 1) + "; the model has " +
-           std::to_string(model.steps.size()));
-}
-
-void check_dof(int dof, const std::string& label) {
-  if (dof < 1 || dof > 3) refuse(label + " must be 1, 2 or 3 (x, y, z), not " + std::to_string(dof));
-}
-
-void check_finite(double value, const std::string& label) {
-  if (!std::isfinite(value)) refuse(label + " must be a finite number");
-}
 
 std::vector<Vec3> block_corners(const BlockInput& in) {
   if (in.use_corners) return {in.corners.begin(), in.corners.end()};
@@ -59,33 +23,6 @@ std::vector<Vec3> block_corners(const BlockInput& in) {
   const Vec3 e{o[0] + in.size[0], o[1] + in.size[1], o[2] + in.size[2]};
   return {{o[0], o[1], o[2]}, {e[0], o[1], o[2]}, {e[0], e[1], o[2]}, {o[0], e[1], o[2]},
           {o[0], o[1], e[2]}, {e[0], o[1], e[2]}, {e[0], e[1], e[2]}, {o[0], e[1], e[2]}};
-}
-
-// Appends `part` (ids 1..n from to_model) to `model` with ids after the largest existing ones.
-void append_part(Model& model, const Model& part) {
-  Id node_offset = 0, element_offset = 0;
-  for (Id id : model.node_ids) node_offset = std::max(node_offset, id);
-  for (const Element& e : model.elements) element_offset = std::max(element_offset, e.id);
-  const int first_node = model.node_count();
-  const int first_element = model.element_count();
-  for (int n = 0; n < part.node_count(); ++n)
-    model.add_node(node_offset + part.node_ids[n], part.coords[n], {});
-  for (int e = 0; e < part.element_count(); ++e) {
-    const Element& el = part.elements[e];
-    std::vector<int> nodes(part.element_nodes(e), part.element_nodes(e) + el.node_count);
-    for (int& n : nodes) n += first_node;
-    model.add_element(element_offset + el.id, el.type, nodes, {});
-  }
-  for (const auto& [name, set] : part.nsets) {
-    NodeSet copy = set;
-    for (int& n : copy.nodes) n += first_node;
-    model.nsets[name] = std::move(copy);
-  }
-  for (const auto& [name, set] : part.elsets) {
-    ElementSet copy = set;
-    for (int& e : copy.elements) e += first_element;
-    model.elsets[name] = std::move(copy);
-  }
 }
 
 }  // namespace
@@ -206,23 +143,34 @@ std::unique_ptr<Command> block_command(const Model& model, const BlockInput& inp
   return make_replace_model("Mesh block " + to_upper(input.name), model, std::move(after));
 }
 
-std::unique_ptr<Command> material_command(const Model& model, const MaterialInput& in) {
+Material checked_material(const Model& model, const MaterialInput& in, int replacing) {
   check_name(in.name, "the material");
   const std::string name = to_upper(in.name);
-  if (model.material_index(name) >= 0) refuse("material " + name + " exists already");
+  const int existing = model.material_index(name);
+  if (existing >= 0 && existing != replacing) refuse("material " + name + " exists already");
   check_finite(in.young, "Young's modulus");
   check_finite(in.poisson, "Poisson's ratio");
   check_finite(in.density, "density");
+  check_finite(in.expansion, "expansion coefficient");
   if (!(in.young > 0)) refuse("Young's modulus must be > 0");
   if (!(in.poisson > -1.0 && in.poisson < 0.5))
     refuse("Poisson's ratio must lie between -1 and 0.5 (exclusive)");
   if (in.density < 0) refuse("density must be >= 0 (0: not given)");
+  if (in.expansion < 0) refuse("expansion coefficient must be >= 0 (0: not given)");
+  if (in.expansion > 1e-2)
+    refuse("expansion coefficient " + std::to_string(in.expansion) +
+           " is not a thermal expansion (1/K); steel is about 1.2e-5");
   Material m;
   m.name = name;
   m.young = in.young;
   m.poisson = in.poisson;
   if (in.density > 0) m.density = in.density;
-  return make_add_material(std::move(m));
+  if (in.expansion > 0) m.expansion = in.expansion;
+  return m;
+}
+
+std::unique_ptr<Command> material_command(const Model& model, const MaterialInput& in) {
+  return make_add_material(checked_material(model, in));
 }
 
 std::unique_ptr<Command> section_command(const Model& model, const SectionInput& in) {

@@ -48,8 +48,12 @@ struct MaterialInput {
   double young = 210000.0;
   double poisson = 0.3;
   double density = 0.0;  // 0: not given
+  double expansion = 0.0;  // *EXPANSION mean coefficient (reference 0); 0: not given
 };
 std::unique_ptr<Command> material_command(const Model& model, const MaterialInput& input);
+// The material as the dialog asks for it (checks name clashes against `model` except with the
+// material at index `replacing`, -1 for a new one).
+Material checked_material(const Model& model, const MaterialInput& input, int replacing = -1);
 
 struct SectionInput {
   std::string elset;

@@ -9,6 +9,7 @@
 #include <QFileInfo>
 #include <QInputDialog>
 #include <QLabel>
+#include <QLineEdit>
 #include <QMenuBar>
 #include <QMessageBox>
 #include <QPlainTextEdit>
@@ -19,10 +20,16 @@
 #include <QTextBrowser>
 
 #include "gl_view.hpp"
+#include "entry_dialogs.hpp"
+#include "interaction_dialogs.hpp"
 #include "model_dialogs.hpp"
+#include "revolve_dialog.hpp"
 #include "model_tree.hpp"
 #include "path_chart.hpp"
 #include "results_panel.hpp"
+#include "session/results_navigation.hpp"
+#include "session/selection_info.hpp"
+#include "session/selection_sets.hpp"
 #include "solve_runner.hpp"
 #include "styk/io/results_file.hpp"
 #include "styk/mesher/builders.hpp"
@@ -70,7 +77,35 @@ MainWindow::MainWindow(const ElementRegistry& registry, QWidget* parent)
   });
   connect(solver_.get(), &SolveRunner::finished, this, &MainWindow::on_solve_finished);
   connect(view_, &GlView::probed, probe_, &QLabel::setText);
+  connect(view_, &GlView::selection_changed, this, &MainWindow::show_selection);
+  connect(view_, &GlView::animation_frame, probe_, &QLabel::setText);
+  connect(results_, &ResultsPanel::history_requested, this, &MainWindow::show_node_history);
+  connect(results_, &ResultsPanel::animate_toggled, this, [this](bool on) {
+    view_->stop_animation();
+    if (on) try {
+        view_->play_animation(std::make_unique<SceneAnimation>(document_, results_->settings(mode_),
+                                                               results_->animation_kind(),
+                                                               results_->animation_frames()),
+                              100);
+      } catch (const InputError& e) {
+        results_->set_animating(false);
+        show_error("Animate", QString::fromStdString(e.message()));
+      }
+    if (!on) refresh_scene();
+  });
   connect(tree_, &ModelTree::properties, properties_, &QTextBrowser::setHtml);
+  connect(tree_, &ModelTree::edit_requested, this, [this](const Entry& entry) {
+    run_dialog(make_entry_dialog(document_, entry, this));
+  });
+  connect(tree_, &ModelTree::delete_requested, this, [this](const Entry& entry) {
+    try {
+      document_.apply(delete_command(document_.model(), entry));
+    } catch (const InputError& e) {
+      show_error("Delete", QString::fromStdString(e.message()));
+      return;
+    }
+    refresh_model();
+  });
   connect(tree_, &ModelTree::layer_toggled, this, [this](const QString& name, bool visible) {
     document_.layers().set_visible(name.toStdString(), visible);
     refresh_scene();
@@ -132,6 +167,12 @@ void MainWindow::build_menus() {
     const QString chosen = QFileDialog::getSaveFileName(this, "Export PNG", "view.png", "PNG (*.png)");
     if (!chosen.isEmpty()) export_png(chosen);
   });
+  file->addAction("Export &animation...", this, [this] {
+    const QString chosen = QFileDialog::getSaveFileName(
+        this, "Export animation (frames NAME_0000.png ..., NAME.apng)", "anim", "PNG frames (*)");
+    if (!chosen.isEmpty())
+      export_animation(QFileInfo(chosen).absolutePath(), QFileInfo(chosen).completeBaseName());
+  })->setObjectName("action_export_animation");
   file->addSeparator();
   file->addAction("&Quit", QKeySequence::Quit, this, &QWidget::close);
   update_recent_menu();
@@ -164,6 +205,36 @@ void MainWindow::build_menus() {
   dialog_action("&Boundary condition...", "action_boundary", &make_boundary_dialog);
   dialog_action("&Concentrated load...", "action_cload", &make_cload_dialog);
   dialog_action("&Pressure...", "action_pressure", &make_pressure_dialog);
+  dialog_action("&Revolve...", "action_revolve", &make_revolve_dialog);
+  model->addSeparator();
+  dialog_action("C&ontact pair...", "action_contact", &make_new_contact_dialog);
+  dialog_action("&Initial temperature...", "action_initial_temperature",
+                &make_initial_temperature_dialog);
+  dialog_action("&Temperature...", "action_temperature", &make_temperature_dialog);
+  dialog_action("&Equation...", "action_equation", &make_equation_dialog);
+  dialog_action("Trans&form...", "action_transform", &make_transform_dialog);
+  dialog_action("&Node set from two sets...", "action_common_nodes", &make_common_nodes_dialog);
+
+  QMenu* select = menuBar()->addMenu("Se&lect");
+  auto* kinds = new QActionGroup(this);
+  const std::pair<const char*, PickKind> kind_list[] = {
+      {"Pick &nodes", PickKind::Node}, {"Pick &elements", PickKind::Element},
+      {"Pick element &faces", PickKind::Face}};
+  for (const auto& [text, kind] : kind_list) {
+    QAction* a = select->addAction(text, this, [this, k = kind] { view_->set_pick_kind(k); });
+    a->setCheckable(true);
+    a->setChecked(kind == view_->pick_kind());
+    a->setObjectName(QString("action_pick_") + QString::fromStdString(pick_kind_name(kind)));
+    kinds->addAction(a);
+  }
+  select->addAction("&Clear selection", QKeySequence(Qt::Key_Escape), this,
+                    [this] { view_->clear_selection(); });
+  select->addAction("&Make set from selection...", QKeySequence(Qt::CTRL | Qt::Key_M), this, [this] {
+    bool ok = false;
+    const QString name = QInputDialog::getText(this, "Make set from selection", "Name", QLineEdit::Normal,
+                                               QString(), &ok);
+    if (ok) make_set_from_selection(name);
+  })->setObjectName("action_make_set");
 
   QMenu* analysis = menuBar()->addMenu("&Analysis");
   analysis->addAction("&Solve", QKeySequence(Qt::Key_F5), this, &MainWindow::start_solve);
@@ -295,7 +366,80 @@ void MainWindow::set_field(const QString& field) {
   refresh_scene();
 }
 
+bool MainWindow::make_set_from_selection(const QString& name) {
+  try {
+    document_.apply(set_from_selection_command(document_.model(), view_->scene().selection(),
+                                               name.toStdString()));
+  } catch (const InputError& e) {
+    show_error("Make set", QString::fromStdString(e.message()));
+    return false;
+  }
+  log(QString::fromStdString(document_.history().undo_text()));
+  refresh_model();
+  return true;
+}
+
+bool MainWindow::export_animation(const QString& directory, const QString& stem) {
+  const bool playing = view_->animating();
+  view_->stop_animation();
+  try {
+    SceneAnimation animation(document_, results_->settings(mode_), results_->animation_kind(),
+                             results_->animation_frames());
+    const QStringList files = view_->export_animation(animation, directory, stem, 100);
+    log(QString("animation: %1 frames %2 ... and %3/%4.apng")
+            .arg(files.size()).arg(files.value(0)).arg(directory, stem));
+  } catch (const std::exception& e) {
+    const auto* input = dynamic_cast<const InputError*>(&e);
+    show_error("Export animation", input ? QString::fromStdString(input->message()) : QString(e.what()));
+    refresh_scene();
+    return false;
+  }
+  results_->set_animating(false);
+  if (playing) log("animation stopped for the export");
+  refresh_scene();
+  return true;
+}
+
+void MainWindow::show_node_history() {
+  const Results* results = document_.results();
+  const Selection& selection = view_->scene().selection();
+  const DisplaySettings settings = results_->settings(mode_);
+  if (!results || selection.kind() != PickKind::Node || selection.nodes().empty() ||
+      settings.field.empty()) {
+    show_error("Value vs increment", "pick a node (Select > Pick nodes, click it) and choose a field");
+    return;
+  }
+  const int node = selection.nodes().front();
+  try {
+    const auto points = node_history(document_.model(), *results, node, settings.field,
+                                     settings.averaging);
+    QStringList labels;
+    for (const HistoryPoint& p : points)
+      labels << QString::fromStdString(increment_label(results->increments[p.increment]));
+    make_history_chart(points, labels, QString::fromStdString(settings.field),
+                       QString("node %1").arg(document_.model().node_ids[node]), this)
+        ->show();
+  } catch (const InputError& e) {
+    show_error("Value vs increment", QString::fromStdString(e.message()));
+  }
+}
+
+void MainWindow::show_selection() {
+  const Selection& selection = view_->scene().selection();
+  probe_->setText(QString::fromStdString(selection_summary(view_->scene(), selection)));
+  if (selection.empty()) return;
+  QString html = QString("<b>Selection</b> (%1 %2s)<br>")
+                     .arg(selection.size())
+                     .arg(QString::fromStdString(pick_kind_name(selection.kind())));
+  for (const std::string& line : describe_selection(view_->scene(), selection))
+    html += QString::fromStdString(line).toHtmlEscaped() + "<br>";
+  properties_->setHtml(html);
+}
+
 void MainWindow::refresh_model() {
+  view_->stop_animation();
+  results_->set_animating(false);
+  view_->clear_selection();
   tree_->populate(document_);
   results_->set_document(document_);
   undo_->setEnabled(document_.history().can_undo());

@@ -39,6 +39,13 @@ class MainWindow : public QMainWindow {
   bool solving() const;
   void set_display_mode(render::DisplayMode mode);
   void set_field(const QString& field);  // selects it in the results panel and redraws
+  // The selection in the view as a node set / element set / surface (undoable); errors go to
+  // a message box. Returns success.
+  bool make_set_from_selection(const QString& name);
+  // Writes the animation the results panel describes as DIR/STEM_0000.png ... and DIR/STEM.apng.
+  bool export_animation(const QString& directory, const QString& stem);
+  // The value-vs-increment chart of the first selected node and the field shown.
+  void show_node_history();
 
   Document& document() { return document_; }
   GlView* view() const { return view_; }
@@ -63,6 +70,7 @@ class MainWindow : public QMainWindow {
   void add_recent(const QString& path);
   void update_recent_menu();
   void update_title();
+  void show_selection();  // status bar and properties panel
   void on_solve_finished(bool ok, const QString& results, const QString& error, int line,
                          const QString& text);
 

@@ -5,37 +5,18 @@
 #include <cstdlib>
 #include <map>
 
+#include "dialog_fields.hpp"
+#include "session/entry_edits.hpp"
 #include "session/validation.hpp"
 #include "styk/mesher/builders.hpp"
 
 namespace styk::gui {
 namespace {
 
-QStringList node_sets(const Model& m) {
-  QStringList names;
-  for (const auto& [name, set] : m.nsets) names << QString::fromStdString(name);
-  return names;
-}
-QStringList element_sets(const Model& m) {
-  QStringList names;
-  for (const auto& [name, set] : m.elsets) names << QString::fromStdString(name);
-  return names;
-}
-QStringList materials(const Model& m) {
-  QStringList names;
-  for (const Material& mat : m.materials) names << QString::fromStdString(mat.name);
-  return names;
-}
-// "1 LOAD", "2 PUSH", ...; with `model_level` first "0 (all steps)".
-QStringList steps(const Model& m, bool model_level) {
-  QStringList names;
-  if (model_level) names << "0 (all steps)";
-  for (std::size_t i = 0; i < m.steps.size(); ++i)
-    names << QString("%1 %2").arg(i + 1).arg(QString::fromStdString(m.steps[i].name));
-  return names;
-}
-// The 0-based step of a steps() entry, -1 for "0 (all steps)".
-int step_index(const std::string& entry) { return std::atoi(entry.c_str()) - 1; }
+QStringList node_sets(const Model& m) { return node_set_names(m); }
+QStringList element_sets(const Model& m) { return element_set_names(m); }
+QStringList materials(const Model& m) { return material_names(m); }
+QStringList steps(const Model& m, bool model_level) { return step_names(m, model_level); }
 
 }  // namespace
 
@@ -120,37 +101,75 @@ FormDialog* make_builder_dialog(Document& doc, const std::string& builder, QWidg
 }
 
 FormDialog* make_material_dialog(Document& doc, QWidget* parent) {
-  auto* d = new FormDialog("Material", "Isotropic linear elastic material.", parent);
-  d->add_text("name", "Name", "STEEL");
-  d->add_text("young", "Young's modulus E", "210000");
-  d->add_text("poisson", "Poisson's ratio", "0.3");
-  d->add_text("density", "Density (0: none)", "0");
-  d->set_accept([&doc](const FormDialog& f) {
-    doc.apply(material_command(doc.model(), {f.text("name"), f.real("young", "Young's modulus"),
-                                             f.real("poisson", "Poisson's ratio"),
-                                             f.real("density", "Density")}));
+  return make_material_dialog(doc, parent, -1);
+}
+
+FormDialog* make_material_dialog(Document& doc, QWidget* parent, int material) {
+  const MaterialInput in = material >= 0 ? material_input_of(doc.model(), material)
+                                         : MaterialInput{"STEEL", 210000.0, 0.3, 0.0, 0.0};
+  auto* d = new FormDialog(material >= 0 ? "Edit material" : "Material",
+                           "Isotropic linear elastic material, optionally with thermal expansion "
+                           "(*EXPANSION: mean coefficient from temperature 0). Renaming updates "
+                           "the sections that use it.",
+                           parent);
+  d->add_text("name", "Name", QString::fromStdString(in.name));
+  d->add_text("young", "Young's modulus E", QString::number(in.young));
+  d->add_text("poisson", "Poisson's ratio", QString::number(in.poisson));
+  d->add_text("density", "Density (0: none)", QString::number(in.density));
+  d->add_text("expansion", "Expansion coefficient (0: none)", QString::number(in.expansion));
+  d->set_accept([&doc, material](const FormDialog& f) {
+    const MaterialInput edited{f.text("name"), f.real("young", "Young's modulus"),
+                               f.real("poisson", "Poisson's ratio"), f.real("density", "Density"),
+                               f.real("expansion", "Expansion coefficient")};
+    doc.apply(material >= 0 ? material_edit_command(doc.model(), material, edited)
+                            : material_command(doc.model(), edited));
   });
   return d;
 }
 
 FormDialog* make_section_dialog(Document& doc, QWidget* parent) {
-  auto* d = new FormDialog("Solid section", "Assigns a material to an element set.", parent);
-  d->add_choice("elset", "Element set", element_sets(doc.model()));
-  d->add_choice("material", "Material", materials(doc.model()));
-  d->set_accept([&doc](const FormDialog& f) {
-    doc.apply(section_command(doc.model(), {f.text("elset"), f.text("material")}));
+  return make_section_dialog(doc, parent, -1);
+}
+
+FormDialog* make_section_dialog(Document& doc, QWidget* parent, int section) {
+  const Model& m = doc.model();
+  auto* d = new FormDialog(section >= 0 ? "Edit solid section" : "Solid section",
+                           "Assigns a material to an element set.", parent);
+  if (section >= 0)
+    d->add_choice("elset", "Element set", {QString::fromStdString(m.sections.at(section).elset)});
+  else
+    d->add_choice("elset", "Element set", element_sets(m));
+  d->add_choice("material", "Material", materials(m),
+                section >= 0 ? QString::fromStdString(m.sections[section].material) : QString());
+  d->set_accept([&doc, section](const FormDialog& f) {
+    doc.apply(section >= 0 ? section_edit_command(doc.model(), section, f.text("material"))
+                           : section_command(doc.model(), {f.text("elset"), f.text("material")}));
   });
   return d;
 }
 
 FormDialog* make_step_dialog(Document& doc, QWidget* parent) {
-  auto* d = new FormDialog("Static step", "A linear static step (*STEP, *STATIC).", parent);
-  d->add_text("name", "Name", QString("STEP-%1").arg(doc.model().steps.size() + 1));
-  d->add_text("initial", "Initial increment", "1");
-  d->add_text("total", "Total time", "1");
-  d->set_accept([&doc](const FormDialog& f) {
-    doc.apply(step_command(doc.model(), {f.text("name"), f.real("initial", "Initial increment"),
-                                         f.real("total", "Total time")}));
+  return make_step_dialog(doc, parent, -1);
+}
+
+FormDialog* make_step_dialog(Document& doc, QWidget* parent, int step) {
+  const Model& m = doc.model();
+  auto* d = new FormDialog(step >= 0 ? "Edit static step" : "Static step",
+                           "A linear static step (*STEP, *STATIC).", parent);
+  if (step >= 0) {
+    const Step& s = m.steps.at(step);
+    d->add_text("name", "Name", QString::fromStdString(s.name));
+    d->add_text("initial", "Initial increment", QString::number(s.procedure.initial_increment));
+    d->add_text("total", "Total time", QString::number(s.procedure.total_time));
+  } else {
+    d->add_text("name", "Name", QString("STEP-%1").arg(m.steps.size() + 1));
+    d->add_text("initial", "Initial increment", "1");
+    d->add_text("total", "Total time", "1");
+  }
+  d->set_accept([&doc, step](const FormDialog& f) {
+    const StepInput in{f.text("name"), f.real("initial", "Initial increment"),
+                       f.real("total", "Total time")};
+    doc.apply(step >= 0 ? step_edit_command(doc.model(), step, in) : step_command(doc.model(), in));
   });
   return d;
 }

@@ -16,6 +16,11 @@ FormDialog* make_builder_dialog(Document& document, const std::string& builder, 
 FormDialog* make_material_dialog(Document& document, QWidget* parent);
 FormDialog* make_section_dialog(Document& document, QWidget* parent);
 FormDialog* make_step_dialog(Document& document, QWidget* parent);
+// The same dialogs editing an existing entry (index into materials / sections / steps), filled
+// with its values; -1 adds a new one.
+FormDialog* make_material_dialog(Document& document, QWidget* parent, int material);
+FormDialog* make_section_dialog(Document& document, QWidget* parent, int section);
+FormDialog* make_step_dialog(Document& document, QWidget* parent, int step);
 FormDialog* make_boundary_dialog(Document& document, QWidget* parent);
 FormDialog* make_cload_dialog(Document& document, QWidget* parent);
 FormDialog* make_pressure_dialog(Document& document, QWidget* parent);

@@ -1,11 +1,16 @@
 // The model tree: layers (element groups with show/hide check boxes and colour swatches; double
-// click changes the colour), node sets, surfaces, materials, sections, steps with their boundary
-// conditions and loads, and the results' increments. Selecting an item shows its properties.
+// click changes the colour), node sets, element sets, surfaces, materials, sections, steps with
+// their boundary conditions, loads and temperatures, contact pairs, equations, transforms, and
+// the results' increments. Selecting an item shows its properties. Model entries can be edited
+// (double-click or context menu "Edit...": materials, sections, steps, contact pairs) and deleted
+// (Delete key or context menu); the window does it through session/entry_edits.hpp.
 #pragma once
 
 #include <QTreeWidget>
+#include <optional>
 
 #include "session/document.hpp"
+#include "session/entry_edits.hpp"
 
 namespace styk::gui {
 
@@ -14,13 +19,23 @@ class ModelTree : public QTreeWidget {
  public:
   explicit ModelTree(QWidget* parent = nullptr);
   void populate(const Document& document);
+  // The model entry an item stands for (none for group headings, layers, results).
+  static std::optional<Entry> entry_of(const QTreeWidgetItem* item);
+  // The first item whose text starts with `text` (tests, scripted walk-throughs).
+  QTreeWidgetItem* find_item(const QString& text) const;
 
  signals:
   void layer_toggled(const QString& name, bool visible);
   void layer_color_requested(const QString& name);
   void properties(const QString& html);
+  void edit_requested(const styk::gui::Entry& entry);
+  void delete_requested(const styk::gui::Entry& entry);
+
+ protected:
+  void keyPressEvent(QKeyEvent* event) override;
 
  private:
+  void show_menu(const QPoint& at);
   bool filling_ = false;
 };
 

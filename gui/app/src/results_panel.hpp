@@ -1,9 +1,12 @@
-// The results controls (issue priority 5): increment, field, averaging, bands or smooth colours,
-// deformed shape with an editable scale, and the path chart. Emits changed() on every edit.
+// The results controls (issue priority 5, issue 7): increment ("step 2, increment 3, time 0.6"),
+// the fields that increment holds, averaging, bands or smooth colours, deformed shape with an
+// editable scale, the path chart, the value-vs-increment chart of the picked node, and the
+// animation (kind, frames, play). Emits changed() on every display edit.
 #pragma once
 
 #include <QWidget>
 
+#include "session/animation.hpp"
 #include "session/scene.hpp"
 
 class QComboBox;
@@ -18,16 +21,28 @@ class ResultsPanel : public QWidget {
   Q_OBJECT
  public:
   explicit ResultsPanel(QWidget* parent = nullptr);
-  // Fills the increment list ("step 1 inc 1 (t = 1)") and the node sets for the chart.
+  // Fills the increment list and the node sets for the chart, and the fields of the increment.
   void set_document(const Document& document);
   DisplaySettings settings(render::DisplayMode mode) const;
-  void set_field(const QString& field);  // e.g. "S.mises"; "" = none
+  // e.g. "S.mises"; "" = none. Remembered: when the increment shown lacks it (CPRESS before
+  // contact), "(none)" is shown until an increment that holds it is chosen again.
+  void set_field(const QString& field);
+  void set_increment(int index);  // index into Results::increments
+  AnimationKind animation_kind() const;
+  int animation_frames() const;
+  void set_animating(bool on);  // the Animate button's state, without signals
 
  signals:
   void changed();
   void chart_requested(const QString& nset);
+  void history_requested();
+  void animate_toggled(bool on);
 
  private:
+  void fill_fields();
+
+  const Document* document_ = nullptr;
+  QString wanted_field_;
   QComboBox* increment_ = nullptr;
   QComboBox* field_ = nullptr;
   QComboBox* averaging_ = nullptr;
@@ -38,6 +53,10 @@ class ResultsPanel : public QWidget {
   QLineEdit* scale_ = nullptr;
   QComboBox* path_ = nullptr;
   QPushButton* chart_ = nullptr;
+  QPushButton* history_ = nullptr;
+  QComboBox* animation_kind_ = nullptr;
+  QSpinBox* animation_frames_ = nullptr;
+  QPushButton* animate_ = nullptr;
 };
 
 }  // namespace styk::gui

@@ -1,0 +1,137 @@
+#include "session/constraint_input.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <iterator>
+#include <set>
+#include <sstream>
+
+#include "session/input_checks.hpp"
+#include "session/validation.hpp"
+
+namespace styk::gui {
+namespace {
+
+double norm(const Vec3& v) { return std::sqrt(v[0] * v[0] + v[1] * v[1] + v[2] * v[2]); }
+Vec3 minus(const Vec3& a, const Vec3& b) { return {a[0] - b[0], a[1] - b[1], a[2] - b[2]}; }
+Vec3 cross(const Vec3& a, const Vec3& b) {
+  return {a[1] * b[2] - a[2] * b[1], a[2] * b[0] - a[0] * b[2], a[0] * b[1] - a[1] * b[0]};
+}
+
+bool prescribed(const Model& model, int node, int dof) {
+  const auto hits = [&](const std::vector<Boundary>& list) {
+    return std::any_of(list.begin(), list.end(),
+                       [&](const Boundary& b) { return b.node == node && b.dof == dof; });
+  };
+  if (hits(model.boundaries)) return true;
+  return std::any_of(model.steps.begin(), model.steps.end(),
+                     [&](const Step& s) { return hits(s.boundaries); });
+}
+
+}  // namespace
+
+std::vector<EquationTermInput> parse_equation_terms(const std::string& text) {
+  std::vector<EquationTermInput> terms;
+  std::istringstream lines(text);
+  std::string line;
+  int number = 0;
+  while (std::getline(lines, line)) {
+    ++number;
+    std::replace(line.begin(), line.end(), ',', ' ');
+    std::istringstream fields(line);
+    std::vector<std::string> f{std::istream_iterator<std::string>(fields), {}};
+    if (f.empty()) continue;
+    const std::string where = "term line " + std::to_string(number);
+    if (f.size() != 3) refuse(where + ": give node, dof, coefficient");
+    terms.push_back({parse_integer(f[0], where + " node"), parse_integer(f[1], where + " dof"),
+                     parse_real(f[2], where + " coefficient")});
+  }
+  return terms;
+}
+
+std::unique_ptr<Command> equation_command(const Model& model,
+                                          const std::vector<EquationTermInput>& terms) {
+  if (terms.size() < 2)
+    refuse("an equation needs at least 2 terms (one term is a boundary condition)");
+  Equation eq;
+  std::set<std::pair<int, int>> seen;
+  for (const EquationTermInput& t : terms) {
+    const int node = model.node_index(t.node);
+    if (node < 0) refuse("no node " + std::to_string(t.node) + " in the model");
+    check_dof(t.dof, "dof");
+    check_finite(t.coefficient, "coefficient");
+    if (!seen.insert({node, t.dof}).second)
+      refuse("node " + std::to_string(t.node) + " dof " + std::to_string(t.dof) +
+             " appears twice in the equation");
+    eq.terms.push_back({node, t.dof, t.coefficient});
+  }
+  const EquationTerm& first = eq.terms.front();
+  const std::string dependent =
+      "node " + std::to_string(terms.front().node) + " dof " + std::to_string(first.dof);
+  if (first.coefficient == 0.0)
+    refuse("the first term's coefficient must not be 0 (it is the dof the equation eliminates)");
+  for (const Equation& other : model.equations)
+    if (other.terms.front().node == first.node && other.terms.front().dof == first.dof)
+      refuse(dependent + " is eliminated by another equation already");
+  if (prescribed(model, first.node, first.dof))
+    refuse(dependent + " is prescribed by a boundary condition; it cannot be the first term");
+  return make_model_edit(
+      "Add equation on " + dependent, [eq](Model& m) { m.equations.push_back(eq); },
+      [](Model& m) { m.equations.pop_back(); });
+}
+
+std::unique_ptr<Command> transform_command(const Model& model, const TransformInput& in) {
+  const NodeSet& set = existing_nset(model, in.nset);
+  for (int k = 0; k < 3; ++k) {
+    check_finite(in.a[k], "point a");
+    check_finite(in.b[k], "point b");
+  }
+  const double scale = std::max({norm(in.a), norm(in.b), 1e-300});
+  if (!in.cylindrical) {
+    if (norm(in.a) < 1e-12 * scale) refuse("point a must not be the origin (it gives local x)");
+    if (norm(cross(in.a, in.b)) < 1e-9 * norm(in.a) * norm(in.b) || norm(in.b) == 0.0)
+      refuse("point b must not lie on the line of a (it gives the local x-y plane)");
+  } else {
+    const Vec3 axis = minus(in.b, in.a);
+    if (norm(axis) < 1e-12 * scale) refuse("the two axis points a and b must differ");
+    for (int n : set.nodes) {
+      const double distance = norm(cross(minus(model.coords[n], in.a), axis)) / norm(axis);
+      if (distance < 1e-9 * std::max(scale, 1.0))
+        refuse("node " + std::to_string(model.node_ids[n]) +
+               " lies on the axis: it has no radial direction");
+    }
+  }
+  for (const Transform& t : model.transforms) {
+    const NodeSet* other = model.find_nset(t.nset);
+    if (!other) continue;
+    for (int n : set.nodes)
+      if (std::binary_search(other->nodes.begin(), other->nodes.end(), n))
+        refuse("node " + std::to_string(model.node_ids[n]) + " has a transform already (set " +
+               t.nset + "); a node may have one");
+  }
+  Transform t;
+  t.nset = set.name;
+  t.axes.system = in.cylindrical ? CoordinateSystem::Cylindrical : CoordinateSystem::Rectangular;
+  t.axes.a = in.a;
+  t.axes.b = in.b;
+  return make_model_edit(
+      std::string("Add ") + (in.cylindrical ? "cylindrical" : "rectangular") + " transform on " +
+          set.name,
+      [t](Model& m) { m.transforms.push_back(t); }, [](Model& m) { m.transforms.pop_back(); });
+}
+
+std::unique_ptr<Command> common_nodes_command(const Model& model, const CommonNodesInput& in) {
+  check_name(in.name, "the node set");
+  const std::string name = to_upper(in.name);
+  if (model.find_nset(name)) refuse("node set " + name + " exists already");
+  const NodeSet& a = existing_nset(model, in.first);
+  const NodeSet& b = existing_nset(model, in.second);
+  NodeSet set;
+  set.name = name;
+  std::set_intersection(a.nodes.begin(), a.nodes.end(), b.nodes.begin(), b.nodes.end(),
+                        std::back_inserter(set.nodes));
+  if (set.nodes.empty()) refuse("node sets " + a.name + " and " + b.name + " share no node");
+  return make_add_node_set(std::move(set));
+}
+
+}  // namespace styk::gui

@@ -1,0 +1,52 @@
+// Editing and deleting what the model tree lists: an Entry names one item (a material, a step's
+// loads, a contact pair, a set, ...); delete_command() removes it undoably or refuses with the
+// reason when something still uses it (a material a section names, an element set with a
+// section, a surface of a contact pair, a node set a *TRANSFORM names); the *_edit_command()s
+// replace an entry with what its dialog now says.
+#pragma once
+
+#include <memory>
+#include <string>
+
+#include "session/commands.hpp"
+#include "session/validation.hpp"
+#include "styk/core/model.hpp"
+
+namespace styk::gui {
+
+enum class EntryKind {
+  Material,         // index into materials
+  Section,          // index into sections
+  Step,             // index into steps (with everything in it)
+  ModelBoundaries,  // boundary conditions held in every step
+  StepBoundaries,   // index = the step
+  StepCloads,
+  StepDloads,
+  StepTemperatures,
+  InitialTemperatures,
+  ContactPair,  // index into contact_pairs (its interaction goes too when no other pair uses it)
+  Equation,     // index into equations
+  Transform,    // index into transforms
+  NodeSet,      // name
+  ElementSet,   // name
+  Surface,      // name
+};
+
+struct Entry {
+  EntryKind kind = EntryKind::Material;
+  int index = -1;
+  std::string name;
+};
+
+// Throws InputError with the reason when the entry cannot go (or does not exist).
+std::unique_ptr<Command> delete_command(const Model& model, const Entry& entry);
+
+std::unique_ptr<Command> material_edit_command(const Model& model, int material,
+                                               const MaterialInput& input);
+MaterialInput material_input_of(const Model& model, int material);
+// A section keeps its element set; the material changes.
+std::unique_ptr<Command> section_edit_command(const Model& model, int section,
+                                              const std::string& material);
+std::unique_ptr<Command> step_edit_command(const Model& model, int step, const StepInput& input);
+
+}  // namespace styk::gui

@@ -1,0 +1,23 @@
+// Dialogs for contact, thermal loads, constraints and derived node sets (session/
+// contact_input.hpp, thermal_input.hpp, constraint_input.hpp): each checks in the dialog and
+// applies one undoable edit on OK.
+#pragma once
+
+#include <QWidget>
+
+#include "form_dialog.hpp"
+#include "session/document.hpp"
+
+namespace styk::gui {
+
+// `pair` >= 0 edits that contact pair (fields filled from it).
+FormDialog* make_contact_dialog(Document& document, QWidget* parent, int pair = -1);
+FormDialog* make_new_contact_dialog(Document& document, QWidget* parent);
+// *INITIAL CONDITIONS, TYPE=TEMPERATURE or a step's *TEMPERATURE on a node set.
+FormDialog* make_initial_temperature_dialog(Document& document, QWidget* parent);
+FormDialog* make_temperature_dialog(Document& document, QWidget* parent);
+FormDialog* make_equation_dialog(Document& document, QWidget* parent);
+FormDialog* make_transform_dialog(Document& document, QWidget* parent);
+FormDialog* make_common_nodes_dialog(Document& document, QWidget* parent);
+
+}  // namespace styk::gui
