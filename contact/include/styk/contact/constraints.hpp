@@ -63,9 +63,10 @@ struct ContactConstraint {
 };
 
 // Builds the constraints of every pair of `model` (elements resolved through `registry`). Throws
-// InputError at the pair's line for an unknown element type on a surface, a slave node that no
-// master face reaches, or a degenerate face normal. A slave node of two pairs is constrained by
-// the first only. `notes` (may be null) receives one line per such decision worth telling.
+// InputError at the pair's line for an unknown element type on a surface or a degenerate face
+// normal. A slave node that no master face reaches (projection outside every face by more than
+// 1e-3 in face coordinates) is left unconstrained, and a slave node of two pairs is constrained
+// by the first only; `notes` (may be null) receives one line per such decision.
 std::vector<ContactConstraint> build_contact_constraints(const Model& model,
                                                          const ElementRegistry& registry,
                                                          std::vector<std::string>* notes);
