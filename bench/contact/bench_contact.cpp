@@ -9,6 +9,7 @@
 
 #include "contact_spec_models.hpp"
 #include "hex_model_builder.hpp"
+#include "styk/mesher/builders.hpp"
 #include "styk/solver/analysis.hpp"
 
 namespace {
@@ -80,5 +81,9 @@ int main() {
   run("punch_mu0.04", test::punch_model(test::coulomb(0.04)), full->registry);
   run("punch_mu0.75", test::punch_model(test::coulomb(0.75)), full->registry);
   run("shrink_fit_2steps", test::shrink_fit_model(52.5), full->registry);
+  // `styk mesh shrink-fit` model A at its default density (625 node pairs): heating with
+  // mu = 0.2, then 52.5 and 72 MPa; the sleeve held axially by friction alone.
+  run("shrink_fit_A_3steps", mesher::run_builder("shrink-fit", {}, full->registry).model,
+      full->registry);
   return 0;
 }

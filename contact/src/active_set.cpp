@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdio>
 #include <set>
 
 #include <Eigen/Cholesky>
@@ -9,6 +10,11 @@
 
 namespace styk::contact {
 namespace {
+
+// Proximal weight of the slip rows when a body is held by slipping nodes alone
+// (LocalPoint::proximal): springs as stiff as the nodes' own contact stiffness c_t. 0.1 and 1 gave
+// the same iteration counts on the SPEC 4.2 models (bench/contact/README.md).
+constexpr double kSlipSpring = 1.0;
 
 // Per-constraint constants of one linear system: which components can carry force and the
 // complementarity parameters (the inverse self-compliance, so c d has force units and the
@@ -93,8 +99,9 @@ Setup set_up(const std::vector<ContactConstraint>& constraints, const LinearCont
 
 LocalPoint point_of(const ContactConstraint& constraint, const Setup& setup, int k,
                     const Eigen::Vector3d& lambda, const Eigen::Vector3d& d,
-                    const Eigen::Vector3d& d_ref, double eps) {
+                    const Eigen::Vector3d& d_ref, double eps, double proximal = 0.0) {
   LocalPoint p;
+  p.proximal = proximal;
   p.lambda = lambda;
   p.d = d;
   p.d_ref = d_ref;
@@ -119,12 +126,14 @@ Eigen::VectorXd displacements(const LinearContactSystem& system, const Iterate& 
   return d;
 }
 
-// Solves the linearised conditions of `status` at `at`. Returns false when the system is singular
-// (a body held only by contact is not held by the closed constraints).
+// Solves the linearised conditions of `status` at `at` (slip rows with the proximal weight, see
+// LocalPoint::proximal). Returns false when the system is singular (a body held only by contact is
+// not held by the closed constraints).
 bool solve_linearised(const std::vector<ContactConstraint>& constraints,
                       const LinearContactSystem& system, const Setup& setup,
                       const std::vector<NodeStatus>& status, const Iterate& at,
-                      const std::vector<ConstraintState>& previous, double eps, Iterate& out) {
+                      const std::vector<ConstraintState>& previous, double eps, double proximal,
+                      Iterate& out) {
   const int m = static_cast<int>(constraints.size());
   const int k = static_cast<int>(system.G.cols());
   std::vector<int> unknowns;  // global rows 3 node + component
@@ -141,7 +150,7 @@ bool solve_linearised(const std::vector<ContactConstraint>& constraints,
     int end = i;
     while (end < n && unknowns[end] / 3 == node) ++end;
     const LocalPoint p = point_of(constraints[node], setup, node, at.lambda.segment<3>(3 * node),
-                                  at.d.segment<3>(3 * node), previous[node].d_ref, eps);
+                                  at.d.segment<3>(3 * node), previous[node].d_ref, eps, proximal);
     const LocalRows rows = linearise(p, status[node]);
     for (int j = 0; j < n; ++j) S_rows.col(j) = system.S.block<3, 1>(3 * node, unknowns[j]);
     const Eigen::MatrixXd QS = rows.Q * S_rows;
@@ -184,6 +193,79 @@ bool solve_linearised(const std::vector<ContactConstraint>& constraints,
   return true;
 }
 
+// How the bodies held only by contact are held at `at` under `status`. Along a free rigid motion a
+// (column of G) the closed constraints can carry, with the normal forces of `at` and tangential
+// forces anywhere in their cones, the range sum_j G_nj lambda_nj +- sum_j lambda_nj |G_tj|
+// (scaled variables: the cone is the unit disk).
+// - slip_only: for some motion every closed constraint that could resist it slips. The exact
+//   tangent has no stiffness along the slip there, so the linearised system is singular or
+//   nearly so (slip directions a little off the motion) and its step is meaningless.
+// - loss: for such a motion the load h_a lies outside that range: no friction force distribution
+//   balances it, the body slides (a genuine loss of equilibrium).
+struct BodyHold {
+  bool slip_only = false;
+  EquilibriumLoss loss;
+};
+
+// Checks one motion v (k, unit): the range of G_v^T lambda the closed constraints can carry.
+void check_motion(const LinearContactSystem& system, const Setup& setup,
+                  const std::vector<NodeStatus>& status, const Iterate& at,
+                  const Eigen::VectorXd& v, BodyHold& out) {
+  const Eigen::VectorXd gv = system.G * v;
+  const double g_max = gv.cwiseAbs().maxCoeff();
+  double carried = 0.0, capacity = 0.0;
+  int slipping = 0;
+  for (std::size_t j = 0; j < status.size(); ++j) {
+    if (status[j] == NodeStatus::Open) continue;
+    const double ln = std::max(at.lambda[3 * j], 0.0);
+    carried += gv[3 * j] * ln;
+    Eigen::Vector2d gt = Eigen::Vector2d::Zero();
+    for (int c = 1; c < 3; ++c)
+      if (setup.live[j][c]) gt[c - 1] = gv[3 * j + c];
+    if (!(gt.norm() > 1e-12 * g_max)) continue;
+    if (status[j] == NodeStatus::Stick) return;  // a sticking node holds the motion
+    ++slipping;
+    capacity += ln * gt.norm();
+  }
+  if (slipping == 0) return;
+  out.slip_only = true;
+  const double applied = std::abs(system.h.dot(v) - carried);
+  const double excess = applied - capacity;
+  EquilibriumLoss& worst = out.loss;
+  if (!(excess > 1e-9 * std::max(applied, 1e-300))) return;
+  if (!worst.lost || excess > worst.applied - worst.capacity) {
+    worst.lost = true;
+    worst.motion = v;
+    worst.slipping = slipping;
+    worst.applied = applied;
+    worst.capacity = capacity;
+  }
+}
+
+// Every free motion on its own, and with several the direction of the unbalanced load
+// h - (what the normal forces carry), which separates h from the reachable set when no single
+// motion does (e.g. a sleeve free to turn and slide, pushed and twisted at once).
+BodyHold body_hold(const LinearContactSystem& system, const Setup& setup,
+                   const std::vector<NodeStatus>& status, const Iterate& at) {
+  BodyHold out;
+  const int k = static_cast<int>(system.G.cols());
+  for (int a = 0; a < k; ++a)
+    check_motion(system, setup, status, at, Eigen::VectorXd::Unit(k, a), out);
+  if (k > 1) {
+    Eigen::VectorXd unbalanced = system.h;
+    for (std::size_t j = 0; j < status.size(); ++j)
+      if (status[j] != NodeStatus::Open)
+        unbalanced -= std::max(at.lambda[3 * j], 0.0) * system.G.row(3 * j).transpose();
+    if (unbalanced.norm() > 0.0)
+      check_motion(system, setup, status, at, unbalanced.normalized(), out);
+  }
+  return out;
+}
+
+bool any_slipping(const std::vector<NodeStatus>& status) {
+  return std::find(status.begin(), status.end(), NodeStatus::Slip) != status.end();
+}
+
 }  // namespace
 
 IncrementOutcome solve_increment(const std::vector<ContactConstraint>& constraints,
@@ -195,13 +277,17 @@ IncrementOutcome solve_increment(const std::vector<ContactConstraint>& constrain
   IncrementOutcome outcome;
   if (static_cast<int>(state.nodes.size()) != m) state.nodes.assign(m, ConstraintState{});
   if (state.alpha.size() != k) state.alpha = Eigen::VectorXd::Zero(k);
+  if (state.dalpha.size() != k) state.dalpha = Eigen::VectorXd::Zero(k);
   const Setup setup = set_up(constraints, system);
 
-  // The predictor: last converged multipliers against the new loads.
+  // The predictor: last converged multipliers (plus the extrapolated change of the last
+  // increment) against the new loads.
+  const double extrapolation = state.started ? options.extrapolation : 0.0;
   Iterate at;
   at.lambda.resize(3 * m);
-  for (int j = 0; j < m; ++j) at.lambda.segment<3>(3 * j) = state.nodes[j].lambda;
-  at.alpha = state.alpha;
+  for (int j = 0; j < m; ++j)
+    at.lambda.segment<3>(3 * j) = state.nodes[j].lambda + extrapolation * state.nodes[j].dlambda;
+  at.alpha = state.alpha + extrapolation * state.dalpha;
   at.d = displacements(system, at);
   auto force_scale = [&](const Iterate& x) {
     return std::max(
@@ -214,6 +300,15 @@ IncrementOutcome solve_increment(const std::vector<ContactConstraint>& constrain
       status[j] =
           classify(point_of(constraints[j], setup, j, at.lambda.segment<3>(3 * j),
                             at.d.segment<3>(3 * j), state.nodes[j].d_ref, 1e-12 * force_scale(at)));
+      // Without an extrapolated change (a step's start, or the first increment) the first solve
+      // is the elastic trial: every closed frictional node sticks, which fixes the bodies held
+      // by contact and gives each node the tangential force a stuck state would need; the
+      // classification then returns the nodes beyond the cone to slip, with that force's
+      // direction (return mapping). Trial slip directions from frozen multipliers instead are
+      // arbitrary where a body held by friction moves under a new load.
+      if (extrapolation == 0.0 && status[j] == NodeStatus::Slip &&
+          constraints[j].law.has_tangential())
+        status[j] = NodeStatus::Stick;
     } else {
       // A body held only by contact has no meaningful displacement before some contact closes:
       // start from every touching node closed and sticking.
@@ -228,7 +323,27 @@ IncrementOutcome solve_increment(const std::vector<ContactConstraint>& constrain
   for (int iteration = 1; iteration <= options.max_iterations; ++iteration) {
     const double eps = 1e-12 * force_scale(at);
     Iterate next;
-    if (!solve_linearised(constraints, system, setup, status, at, state.nodes, eps, next)) {
+    // A body held by slipping nodes alone: either the load exceeds what friction can carry (a
+    // genuine loss of equilibrium: stop here, the driver reports it) or the iterate is merely far
+    // from the stick zone the solution has: take the step with the slip springs
+    // (LocalPoint::proximal), which give the body a stiffness along the slip.
+    const BodyHold hold = body_hold(system, setup, status, at);
+    if (hold.loss.lost) {
+      outcome.loss = hold.loss;
+      outcome.reason = "friction capacity exceeded";
+      outcome.iterations = iteration;
+      return outcome;
+    }
+    bool regularised = hold.slip_only;
+    bool solved = solve_linearised(constraints, system, setup, status, at, state.nodes, eps,
+                                   regularised ? kSlipSpring : 0.0, next);
+    if (!solved && !regularised && any_slipping(status)) {
+      // Singular for another reason (e.g. slip directions that leave a rotation free).
+      regularised = true;
+      solved = solve_linearised(constraints, system, setup, status, at, state.nodes, eps,
+                                kSlipSpring, next);
+    }
+    if (!solved) {
       if (!closed_touching) {
         // Close every touching node once and try again before giving up.
         closed_touching = true;
@@ -255,6 +370,7 @@ IncrementOutcome solve_increment(const std::vector<ContactConstraint>& constrain
     IterationRecord record;
     record.iteration = iteration;
     record.damping = damping;
+    record.regularised = regularised;
     for (int j = 0; j < m; ++j) {
       const LocalPoint p = point_of(constraints[j], setup, j, next.lambda.segment<3>(3 * j),
                                     next.d.segment<3>(3 * j), state.nodes[j].d_ref, 1e-12 * scale);
@@ -299,6 +415,7 @@ IncrementOutcome solve_increment(const std::vector<ContactConstraint>& constrain
       for (int j = 0; j < m; ++j) {
         ConstraintState& s = state.nodes[j];
         s.status = status[j];
+        s.dlambda = at.lambda.segment<3>(3 * j) - s.lambda;
         s.lambda = at.lambda.segment<3>(3 * j);
         s.d = at.d.segment<3>(3 * j);
         if (s.status != NodeStatus::Open)
@@ -306,15 +423,17 @@ IncrementOutcome solve_increment(const std::vector<ContactConstraint>& constrain
             if (setup.live[j][c]) s.slip[c - 1] += (s.d[c] - s.d_ref[c]) / constraints[j].scale(c);
         s.d_ref = s.d;
       }
+      state.dalpha = at.alpha - state.alpha;
       state.alpha = at.alpha;
       state.started = true;
       return outcome;
     }
   }
+  char residual[32];
+  std::snprintf(residual, sizeof residual, "%.2e",
+                outcome.history.empty() ? 0.0 : outcome.history.back().residual);
   outcome.reason = "no convergence in " + std::to_string(options.max_iterations) +
-                   " iterations (last residual " +
-                   std::to_string(outcome.history.empty() ? 0.0 : outcome.history.back().residual) +
-                   ")";
+                   " iterations (last residual " + residual + ")";
   std::set<int> offending;
   const std::size_t last = changed_history.size();
   for (std::size_t i = last > 4 ? last - 4 : 0; i < last; ++i)

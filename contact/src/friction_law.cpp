@@ -75,6 +75,11 @@ LocalRows linearise(const LocalPoint& p, NodeStatus status) {
     rows.Q.block<2, 1>(1, 0) = -p.c_n * e;
     rows.Q.block<2, 2>(1, 1) = -beta * p.c_t * P;
     rows.r.tail<2>() = -p.c_n * p.gap0 * e - beta * p.c_t * P * dref;
+    if (p.proximal > 0.0) {
+      const Eigen::Matrix2d spring = p.proximal * p.c_t * e * e.transpose();
+      rows.Q.block<2, 2>(1, 1) -= spring;
+      rows.r.tail<2>() -= spring * masked(p, p.d);
+    }
   }
   for (int k = 1; k < 3; ++k)
     if (!p.live[k]) {

@@ -4,7 +4,10 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdio>
+#include <string>
 
+#include <Eigen/Cholesky>
 #include <Eigen/Eigenvalues>
 #include <Eigen/Geometry>
 #include <Eigen/QR>
@@ -18,6 +21,13 @@ using Vector6 = Eigen::Matrix<double, 6, 1>;
 // Rigid-body mode `mode` = (translation, rotation) evaluated at scaled position p.
 Eigen::Vector3d rigid_motion(const Vector6& mode, const Eigen::Vector3d& p) {
   return mode.head<3>() + mode.tail<3>().cross(p);
+}
+
+// printf-style formatting of up to three numbers (the report's pieces).
+std::string text(const char* pattern, double a, double b = 0.0, double c = 0.0) {
+  char buffer[200];
+  std::snprintf(buffer, sizeof buffer, pattern, a, b, c);
+  return buffer;
 }
 
 }  // namespace
@@ -127,6 +137,68 @@ FloatingBodies find_floating_bodies(const Model& model, const PreparedModel& pre
   std::sort(fixing.begin(), fixing.end());
   out.fixing_dofs = fixing;
   return out;
+}
+
+// The report of a body held only by contact that slides: its free motion u = R v, fitted as
+// u = t + w x (x - c) over the nodes it moves, named as a translation along t or a rotation about
+// w (through a point of the axis), with the load along the motion and the capacity turned into a
+// force or a moment about the axis (G_v^T lambda = |t| F_t or |w| M_w); how many contact nodes
+// slip; a node of the body.
+std::string sliding_report(const Model& model, const PreparedModel& prepared,
+                           const FloatingBodies& floating, const contact::EquilibriumLoss& loss) {
+  const Eigen::VectorXd u = floating.modes * loss.motion;
+  std::vector<int> moved;
+  Eigen::Vector3d centre = Eigen::Vector3d::Zero();
+  for (int a = 0; a < prepared.active_nodes(); ++a)
+    if (u.segment<3>(3 * a).norm() > 1e-12 * u.cwiseAbs().maxCoeff()) {
+      moved.push_back(a);
+      const Vec3& x = model.coords[prepared.node_of_active[a]];
+      centre += Eigen::Vector3d(x[0], x[1], x[2]);
+    }
+  if (moved.empty()) return "a body held only by contact slides: friction capacity exceeded";
+  centre /= static_cast<double>(moved.size());
+  Eigen::Matrix<double, 6, 6> normal = Eigen::Matrix<double, 6, 6>::Zero();
+  Eigen::Matrix<double, 6, 1> rhs = Eigen::Matrix<double, 6, 1>::Zero();
+  double size = 0.0;
+  for (int a : moved) {
+    const Vec3& x = model.coords[prepared.node_of_active[a]];
+    const Eigen::Vector3d r = Eigen::Vector3d(x[0], x[1], x[2]) - centre;
+    size = std::max(size, r.norm());
+    Eigen::Matrix3d cross;  // [r]x, so that w x r = -[r]x w
+    cross << 0, -r[2], r[1], r[2], 0, -r[0], -r[1], r[0], 0;
+    Eigen::Matrix<double, 3, 6> A;
+    A << Eigen::Matrix3d::Identity(), -cross;  // u = t + w x r
+    normal += A.transpose() * A;
+    rhs += A.transpose() * u.segment<3>(3 * a);
+  }
+  const Eigen::Matrix<double, 6, 1> tw = normal.ldlt().solve(rhs);
+  // Components below 1e-9 of the motion are round-off of an exact axis: shown as 0.
+  Eigen::Vector3d t = tw.head<3>(), w = tw.tail<3>();
+  for (Eigen::Vector3d* v : {&t, &w}) {
+    const double largest = v->cwiseAbs().maxCoeff();
+    for (int d = 0; d < 3; ++d)
+      if (std::abs((*v)[d]) <= 1e-9 * largest) (*v)[d] = 0.0;
+  }
+  std::string motion, units;
+  double scale = 1.0;
+  if (w.norm() * std::max(size, 1e-300) <= 1e-6 * t.norm()) {
+    const Eigen::Vector3d e = t.normalized();
+    motion = text("translation along (%.3g, %.3g, %.3g)", e[0], e[1], e[2]);
+    scale = t.norm();
+    units = "force";
+  } else {
+    const Eigen::Vector3d e = w.normalized(), p = centre + w.cross(t) / w.squaredNorm();
+    motion = text("rotation about (%.3g, %.3g, %.3g)", e[0], e[1], e[2]) +
+             text(" through (%.4g, %.4g, %.4g)", p[0], p[1], p[2]);
+    scale = w.norm();
+    units = "moment";
+  }
+  return "the body held only by contact (the part of node " +
+         std::to_string(model.node_ids[prepared.node_of_active[moved.front()]]) +
+         ") slides: friction capacity exceeded (" + std::to_string(loss.slipping) +
+         " nodes slipping, " + units +
+         text(" applied %.6g, capacity %.6g", loss.applied / scale, loss.capacity / scale) +
+         ", along its free " + motion + ")";
 }
 
 }  // namespace styk::solver_detail

@@ -7,6 +7,7 @@
 // mechanism check.
 #pragma once
 
+#include <string>
 #include <vector>
 
 #include <Eigen/Core>
@@ -15,6 +16,7 @@
 #include "node_rotations.hpp"
 #include "prepared_model.hpp"
 #include "stiffness_matrix.hpp"
+#include "styk/contact/active_set.hpp"
 
 namespace styk::solver_detail {
 
@@ -35,5 +37,12 @@ FloatingBodies find_floating_bodies(const Model& model, const PreparedModel& pre
                                     const std::vector<int>& prescribed,
                                     const std::vector<int>& known, const NodeRotations& rotations,
                                     const std::vector<char>& touches_contact);
+
+// The report of a body held only by contact that slides (contact::EquilibriumLoss found by the
+// active set): its free motion R v fitted as a translation or a rotation (axis and a point on it),
+// the load along it and the friction capacity as a force or a moment about the axis, the number
+// of slipping contact nodes and a node of the body.
+std::string sliding_report(const Model& model, const PreparedModel& prepared,
+                           const FloatingBodies& floating, const contact::EquilibriumLoss& loss);
 
 }  // namespace styk::solver_detail

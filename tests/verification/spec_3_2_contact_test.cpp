@@ -254,7 +254,13 @@ TEST_F(ContactSpec32, PunchOnHalfSpaceAnisotropicFriction) {
   EXPECT_GT(checked, 0);
 }
 
-// mu = 0.04, 0.4, 0.6, 0.7, 0.75: progressively fewer slipping nodes (SPEC: only three at 0.75).
+// mu = 0.04, 0.4, 0.6, 0.7, 0.75: progressively fewer slipping nodes (SPEC: only three at 0.75;
+// measured 80, 78, 66, 44, 24). The thesis' three is not a target: the exact Coulomb law slips a
+// mesh-converged share of the area (C3D21 n = 4: 23 of 81, n = 8: 90 of 289; C3D28 similar), the
+// tied solution already has |tau|/p > 0.75 at 25 nodes, and CalculiX's penalty friction gives 2
+// slipping nodes with its default stick slope but 12 / 15 with stick slopes 1e6 / 1e8: a few
+// slipping nodes is what a soft (elastic) stick gives (docs/contact.md, "SPEC §3.2.4 at
+// mu = 0.75").
 TEST_F(ContactSpec32, PunchSlipZoneShrinksWithFriction) {
   int previous = 1 << 30;
   for (double mu : {0.04, 0.4, 0.6, 0.7, 0.75}) {

@@ -30,31 +30,50 @@ struct LinearContactSystem {
 
 struct ConstraintState {
   NodeStatus status = NodeStatus::Open;
-  Eigen::Vector3d lambda = Eigen::Vector3d::Zero();  // generalised multipliers
-  Eigen::Vector3d d = Eigen::Vector3d::Zero();       // generalised displacement
-  Eigen::Vector3d d_ref = Eigen::Vector3d::Zero();   // at the last converged increment
-  Eigen::Vector2d slip = Eigen::Vector2d::Zero();    // accumulated slip along t1, t2 (length)
+  Eigen::Vector3d lambda = Eigen::Vector3d::Zero();   // generalised multipliers
+  Eigen::Vector3d d = Eigen::Vector3d::Zero();        // generalised displacement
+  Eigen::Vector3d d_ref = Eigen::Vector3d::Zero();    // at the last converged increment
+  Eigen::Vector2d slip = Eigen::Vector2d::Zero();     // accumulated slip along t1, t2 (length)
+  Eigen::Vector3d dlambda = Eigen::Vector3d::Zero();  // change of lambda over that increment
 };
 
 // What carries over from increment to increment and from step to step.
 struct ContactState {
   std::vector<ConstraintState> nodes;
-  Eigen::VectorXd alpha;  // rigid motions of the bodies held by contact (k)
-  bool started = false;   // an increment has converged
+  Eigen::VectorXd alpha;   // rigid motions of the bodies held by contact (k)
+  Eigen::VectorXd dalpha;  // their change over the last converged increment
+  bool started = false;    // an increment has converged
 };
 
 struct IterationRecord {
   int iteration = 0;
   int open = 0, stick = 0, slip = 0;
-  int changes = 0;        // status changes against the status set the iteration solved with
-  double residual = 0.0;  // max complementarity residual / largest multiplier
-  double damping = 1.0;   // step length taken (< 1 after a cycle was detected)
-  bool cycle = false;     // this status set was seen before in the increment
+  int changes = 0;           // status changes against the status set the iteration solved with
+  double residual = 0.0;     // max complementarity residual / largest multiplier
+  double damping = 1.0;      // step length taken (< 1 after a cycle was detected)
+  bool cycle = false;        // this status set was seen before in the increment
+  bool regularised = false;  // a body was held by slipping nodes alone: solved with slip springs
 };
 
 struct ActiveSetOptions {
   int max_iterations = 50;
   double tolerance = 1e-9;  // on IterationRecord::residual
+  // Predictor: the multipliers and rigid motions of the last converged increment plus this
+  // multiple of their change over it (the driver passes dt_new / dt_last within a step, 0 at a
+  // step's start): exact for proportional loading, a secant guess otherwise.
+  double extrapolation = 0.0;
+};
+
+// A body held only by contact whose contacts cannot balance the load along one of its free rigid
+// motions (one mode, or the direction of the unbalanced load when there are several): every
+// closed node resisting it slips and the load exceeds what the friction cones (at the current
+// normal forces) can carry. A genuine loss of equilibrium, not a numerical failure.
+struct EquilibriumLoss {
+  bool lost = false;
+  Eigen::VectorXd motion;  // the rigid motion (unit combination of the columns of G, k)
+  int slipping = 0;        // closed constraints resisting it, all slipping
+  double applied = 0.0;    // |load along the motion - what the normal forces carry along it|
+  double capacity = 0.0;   // the most the friction forces can carry along it
 };
 
 struct IncrementOutcome {
@@ -63,6 +82,7 @@ struct IncrementOutcome {
   std::vector<IterationRecord> history;
   std::string reason;          // why it stopped unconverged
   std::vector<int> offending;  // constraints that changed status in the last iterations
+  EquilibriumLoss loss;        // set when the increment failed because equilibrium is lost
 };
 
 // Runs the iteration from `state` (the last converged increment). On convergence `state` holds

@@ -34,6 +34,13 @@ struct LocalPoint {
   bool tied = false;                             // no slip
   bool frictional = false;  // the law has friction (a closed node whose tangential components
                             // are all held by supports then sticks; frictionless ones slide)
+  // Proximal weight gamma >= 0 of the slip rows (0: the exact tangent). The exact tangent of a
+  // slipping node does not depend on the displacement along the slip direction e, so a body held
+  // only by slipping nodes has no stiffness along it and the linearised system is singular. With
+  // gamma > 0 the rows get -gamma c_t e e^T (d_t_new - d_t) on the left: a spring of stiffness
+  // gamma c_t along e, relative to the current iterate. Only the Jacobian changes, not the
+  // residual, so a converged iterate still satisfies the law exactly.
+  double proximal = 0.0;
 };
 
 NodeStatus classify(const LocalPoint& point);
