@@ -8,6 +8,7 @@ add_library(styk_gui_widgets STATIC
   src/dialog_fields.cpp
   src/revolve_dialog.cpp
   src/interaction_dialogs.cpp
+  src/load_dialogs.cpp
   src/entry_dialogs.cpp
   src/model_tree.cpp
   src/results_panel.cpp

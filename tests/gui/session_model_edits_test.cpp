@@ -10,6 +10,7 @@
 #include "session/constraint_input.hpp"
 #include "session/contact_input.hpp"
 #include "session/entry_edits.hpp"
+#include "session/load_groups.hpp"
 #include "session/revolve.hpp"
 #include "session/thermal_input.hpp"
 #include "styk/core/plugin_loader.hpp"
@@ -286,6 +287,13 @@ TEST_F(ModelEditTest, TheWalkThroughModelIsAValidDeck) {
   for (const char* cut : {"SHAFT_CUT1", "SLEEVE_CUT1"})
     apply(boundary_command(model, {cut, 1, 1, 0.0, -1}));
   apply(pressure_command(model, {"SLEEVE_TOP", "", 1, 52.5, 1}));
+  // The model tree finds every dialog's entry again, also where two in a row share dof and value.
+  EXPECT_EQ(group_labels(model, {EntryKind::ModelBoundaries, -1, {}, -1}),
+            (std::vector<std::string>{"SHAFT_BOTTOM: dof 3 = 0", "SHAFT_CUT0: dof 2 = 0",
+                                      "SLEEVE_CUT0: dof 2 = 0", "SHAFT_CUT1: dof 1 = 0",
+                                      "SLEEVE_CUT1: dof 1 = 0"}));
+  EXPECT_EQ(group_labels(model, {EntryKind::StepDloads, 1, {}, -1}),
+            (std::vector<std::string>{"SLEEVE_TOP: pressure 52.5"}));
   const std::string path = ::testing::TempDir() + "/styk_gui_walkthrough.inp";
   {
     std::ofstream out(path);

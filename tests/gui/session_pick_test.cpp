@@ -255,14 +255,56 @@ TEST_F(PickTest, TheSelectionIsDrawnAsMagentaMarkers) {
   const auto p = scene.screen_position(n.node);
   EXPECT_LT(std::abs(last.x - p[0]), 10.0);
   EXPECT_LT(std::abs(last.y - p[1]), 10.0);
-  // A selected element is outlined along its 5 skin faces: 4 edges, 2 triangles each.
+  // A selected element is outlined along the seen stretches of its 5 skin faces' edges (2
+  // triangles = 6 vertices per stretch). Seen from iso (1, -1, 1) the corner (0, 1, 0) is hidden:
+  // face x = 0 shows 2 edges (the 2 at the hidden corner are behind), y = 0 and z = 1 all 4,
+  // y = 1 and z = 0 one each: 12, not the 5 x 4 = 20 drawn before markers were depth tested.
   Selection e(PickKind::Element);
   PickedItem item;
   item.kind = PickKind::Element;
-  item.element = 0;
+  item.element = element_between(0, 1);
   e.apply(SelectOp::Replace, {item});
   scene.set_selection(e);
-  EXPECT_EQ(scene.frame(400, 300, {}).overlay.triangles.size(), plain + 5 * 4 * 6);
+  EXPECT_EQ(scene.frame(400, 300, {}).overlay.triangles.size(), plain + 12 * 6);
+}
+
+// Issue 7: markers are depth tested with the picker's face-id buffer, so a selected node or face
+// behind the front surface does not show through.
+TEST_F(PickTest, MarkersOfHiddenNodesAndEdgesAreNotDrawn) {
+  Scene scene;
+  scene.rebuild(doc, {});
+  const std::size_t plain = scene.frame(400, 300, {}).overlay.triangles.size();
+  // The corner (0, 1, 0) is behind the box seen from iso (1, -1, 1); (2, 0, 1) is in front.
+  Selection hidden(PickKind::Node);
+  PickedItem n;
+  n.node = node_at(0, 1, 0);
+  hidden.apply(SelectOp::Replace, {n});
+  scene.set_selection(hidden);
+  EXPECT_EQ(scene.frame(400, 300, {}).overlay.triangles.size(), plain);
+  n.node = node_at(2, 0, 1);
+  hidden.apply(SelectOp::Add, {n});
+  scene.set_selection(hidden);
+  EXPECT_EQ(scene.frame(400, 300, {}).overlay.triangles.size(), plain + 2 * 6);  // rim + fill
+  // The front face x = 2: its 4 edges, one stretch each. The back face x = 0: only the 2 edges
+  // it shares with the front faces y = 0 and z = 1.
+  const auto face_selection = [&](int element, int face) {
+    Selection s(PickKind::Face);
+    PickedItem f;
+    f.kind = PickKind::Face;
+    f.element = element;
+    f.face = face;
+    s.apply(SelectOp::Replace, {f});
+    return s;
+  };
+  const int right = element_between(1, 2), left = element_between(0, 1);
+  scene.set_selection(face_selection(right, face_on(scene, right, 0, 2.0)));
+  EXPECT_EQ(scene.frame(400, 300, {}).overlay.triangles.size(), plain + 4 * 6);
+  scene.set_selection(face_selection(left, face_on(scene, left, 0, 0.0)));
+  EXPECT_EQ(scene.frame(400, 300, {}).overlay.triangles.size(), plain + 2 * 6);
+  // Turned to look from -x, the same face is in front: all 4 edges.
+  ViewState from_minus_x;
+  from_minus_x.spec.name = "-x";
+  EXPECT_EQ(scene.frame(400, 300, from_minus_x).overlay.triangles.size(), plain + 4 * 6);
 }
 
 TEST_F(PickTest, TheSelectionIsDescribedWithIdsCoordinatesAndValues) {

@@ -146,21 +146,28 @@ class AddNodeSet : public Command {
 
 class ModelEdit : public Command {
  public:
-  ModelEdit(std::string text, ModelChange redo, ModelChange undo)
-      : text_(std::move(text)), redo_(std::move(redo)), undo_(std::move(undo)) {}
+  ModelEdit(std::string text, ModelChange redo, ModelChange undo, bool keeps_results)
+      : text_(std::move(text)),
+        redo_(std::move(redo)),
+        undo_(std::move(undo)),
+        keeps_results_(keeps_results) {}
   std::string text() const override { return text_; }
+  bool keeps_results() const override { return keeps_results_; }
   void redo(Model& model) override { redo_(model); }
   void undo(Model& model) override { undo_(model); }
 
  private:
   std::string text_;
   ModelChange redo_, undo_;
+  bool keeps_results_;
 };
 
 }  // namespace
 
-std::unique_ptr<Command> make_model_edit(std::string text, ModelChange redo, ModelChange undo) {
-  return std::make_unique<ModelEdit>(std::move(text), std::move(redo), std::move(undo));
+std::unique_ptr<Command> make_model_edit(std::string text, ModelChange redo, ModelChange undo,
+                                         bool keeps_results) {
+  return std::make_unique<ModelEdit>(std::move(text), std::move(redo), std::move(undo),
+                                     keeps_results);
 }
 std::unique_ptr<Command> make_replace_model(std::string text, Model before, Model after) {
   return std::make_unique<ReplaceModel>(std::move(text), std::move(before), std::move(after));

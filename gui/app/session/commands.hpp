@@ -66,8 +66,9 @@ std::unique_ptr<Command> make_add_dloads(int step, std::vector<DistributedLoad> 
 std::unique_ptr<Command> make_add_node_set(NodeSet set);
 
 // Any other small edit: `redo` applies it, `undo` reverts it exactly (each captures the values it
-// needs, e.g. the entry it removes and where it was).
+// needs, e.g. the entry it removes and where it was). `keeps_results`: see Command (set edits).
 using ModelChange = std::function<void(Model&)>;
-std::unique_ptr<Command> make_model_edit(std::string text, ModelChange redo, ModelChange undo);
+std::unique_ptr<Command> make_model_edit(std::string text, ModelChange redo, ModelChange undo,
+                                         bool keeps_results = false);
 
 }  // namespace styk::gui

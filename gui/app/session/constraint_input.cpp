@@ -49,8 +49,8 @@ std::vector<EquationTermInput> parse_equation_terms(const std::string& text) {
   return terms;
 }
 
-std::unique_ptr<Command> equation_command(const Model& model,
-                                          const std::vector<EquationTermInput>& terms) {
+Equation checked_equation(const Model& model, const std::vector<EquationTermInput>& terms,
+                          int replacing) {
   if (terms.size() < 2)
     refuse("an equation needs at least 2 terms (one term is a boundary condition)");
   Equation eq;
@@ -70,17 +70,28 @@ std::unique_ptr<Command> equation_command(const Model& model,
       "node " + std::to_string(terms.front().node) + " dof " + std::to_string(first.dof);
   if (first.coefficient == 0.0)
     refuse("the first term's coefficient must not be 0 (it is the dof the equation eliminates)");
-  for (const Equation& other : model.equations)
-    if (other.terms.front().node == first.node && other.terms.front().dof == first.dof)
+  for (int i = 0; i < static_cast<int>(model.equations.size()); ++i) {
+    const Equation& other = model.equations[i];
+    if (i != replacing && other.terms.front().node == first.node &&
+        other.terms.front().dof == first.dof)
       refuse(dependent + " is eliminated by another equation already");
+  }
   if (prescribed(model, first.node, first.dof))
     refuse(dependent + " is prescribed by a boundary condition; it cannot be the first term");
+  return eq;
+}
+
+std::unique_ptr<Command> equation_command(const Model& model,
+                                          const std::vector<EquationTermInput>& terms) {
+  const Equation eq = checked_equation(model, terms, -1);
+  const std::string dependent =
+      "node " + std::to_string(terms.front().node) + " dof " + std::to_string(eq.terms.front().dof);
   return make_model_edit(
       "Add equation on " + dependent, [eq](Model& m) { m.equations.push_back(eq); },
       [](Model& m) { m.equations.pop_back(); });
 }
 
-std::unique_ptr<Command> transform_command(const Model& model, const TransformInput& in) {
+Transform checked_transform(const Model& model, const TransformInput& in, int replacing) {
   const NodeSet& set = existing_nset(model, in.nset);
   for (int k = 0; k < 3; ++k) {
     check_finite(in.a[k], "point a");
@@ -101,7 +112,9 @@ std::unique_ptr<Command> transform_command(const Model& model, const TransformIn
                " lies on the axis: it has no radial direction");
     }
   }
-  for (const Transform& t : model.transforms) {
+  for (int i = 0; i < static_cast<int>(model.transforms.size()); ++i) {
+    if (i == replacing) continue;
+    const Transform& t = model.transforms[i];
     const NodeSet* other = model.find_nset(t.nset);
     if (!other) continue;
     for (int n : set.nodes)
@@ -114,10 +127,54 @@ std::unique_ptr<Command> transform_command(const Model& model, const TransformIn
   t.axes.system = in.cylindrical ? CoordinateSystem::Cylindrical : CoordinateSystem::Rectangular;
   t.axes.a = in.a;
   t.axes.b = in.b;
+  return t;
+}
+
+std::unique_ptr<Command> transform_command(const Model& model, const TransformInput& in) {
+  const Transform t = checked_transform(model, in, -1);
   return make_model_edit(
       std::string("Add ") + (in.cylindrical ? "cylindrical" : "rectangular") + " transform on " +
-          set.name,
+          t.nset,
       [t](Model& m) { m.transforms.push_back(t); }, [](Model& m) { m.transforms.pop_back(); });
+}
+
+std::string equation_text(const Model& model, int equation) {
+  if (equation < 0 || equation >= static_cast<int>(model.equations.size()))
+    refuse("no equation " + std::to_string(equation + 1) + " in the model");
+  std::ostringstream text;
+  for (const EquationTerm& t : model.equations[equation].terms)
+    text << (text.tellp() > 0 ? "; " : "") << model.node_ids[t.node] << " " << t.dof << " "
+         << t.coefficient;
+  return text.str();
+}
+
+TransformInput transform_input_of(const Model& model, int transform) {
+  if (transform < 0 || transform >= static_cast<int>(model.transforms.size()))
+    refuse("no transform " + std::to_string(transform + 1) + " in the model");
+  const Transform& t = model.transforms[transform];
+  return {t.nset, t.axes.system == CoordinateSystem::Cylindrical, t.axes.a, t.axes.b};
+}
+
+std::unique_ptr<Command> equation_edit_command(const Model& model, int equation,
+                                               const std::vector<EquationTermInput>& terms) {
+  equation_text(model, equation);  // checks the index
+  const Equation after = checked_equation(model, terms, equation);
+  const Equation before = model.equations[equation];
+  return make_model_edit(
+      "Edit equation " + std::to_string(equation + 1),
+      [equation, after](Model& m) { m.equations[equation] = after; },
+      [equation, before](Model& m) { m.equations[equation] = before; });
+}
+
+std::unique_ptr<Command> transform_edit_command(const Model& model, int transform,
+                                                const TransformInput& input) {
+  transform_input_of(model, transform);  // checks the index
+  const Transform after = checked_transform(model, input, transform);
+  const Transform before = model.transforms[transform];
+  return make_model_edit(
+      "Edit transform on " + before.nset,
+      [transform, after](Model& m) { m.transforms[transform] = after; },
+      [transform, before](Model& m) { m.transforms[transform] = before; });
 }
 
 std::unique_ptr<Command> common_nodes_command(const Model& model, const CommonNodesInput& in) {

@@ -34,6 +34,18 @@ struct TransformInput {
 // lies on the axis.
 std::unique_ptr<Command> transform_command(const Model& model, const TransformInput& input);
 
+// Editing: the checks above, except against the equation / transform being replaced (index).
+// equation_text() gives the dialog's text ("node dof coefficient; ...", node ids).
+Equation checked_equation(const Model& model, const std::vector<EquationTermInput>& terms,
+                          int replacing);
+Transform checked_transform(const Model& model, const TransformInput& input, int replacing);
+std::string equation_text(const Model& model, int equation);
+TransformInput transform_input_of(const Model& model, int transform);
+std::unique_ptr<Command> equation_edit_command(const Model& model, int equation,
+                                               const std::vector<EquationTermInput>& terms);
+std::unique_ptr<Command> transform_edit_command(const Model& model, int transform,
+                                                const TransformInput& input);
+
 struct CommonNodesInput {
   std::string name;
   std::string first;

@@ -59,10 +59,14 @@ void Document::save_inp(const std::string& path) {
 }
 
 void Document::attach_results(Results results, std::string results_path) {
-  for (const IncrementResult& inc : results.increments)
-    if (inc.U.size() != model_.coords.size())
-      throw std::runtime_error("the results hold " + std::to_string(inc.U.size()) +
-                               " nodes, the model " + std::to_string(model_.coords.size()));
+  for (const IncrementResult& inc : results.increments) {
+    // A scalar-field increment (steady heat, electric potential) holds no displacements.
+    const bool scalar = inc.scalar.kind != ScalarFieldResult::Kind::None;
+    const std::size_t held = scalar && inc.U.empty() ? inc.scalar.value.size() : inc.U.size();
+    if (held != model_.coords.size())
+      throw std::runtime_error("the results hold " + std::to_string(held) + " nodes, the model " +
+                               std::to_string(model_.coords.size()));
+  }
   results_ = std::move(results);
   results_path_ = std::move(results_path);
   changed(true);

@@ -4,6 +4,7 @@
 #include <utility>
 
 #include "session/input_checks.hpp"
+#include "session/load_groups.hpp"
 
 namespace styk::gui {
 namespace {
@@ -92,6 +93,7 @@ std::unique_ptr<Command> erase_named(const Model& model, const std::string& name
 std::unique_ptr<Command> delete_command(const Model& model, const Entry& entry) {
   const int i = entry.index;
   const std::string& name = entry.name;
+  if (entry.item >= 0 && is_load_list(entry.kind)) return group_delete_command(model, entry);
   switch (entry.kind) {
     case EntryKind::Material: {
       check_index(model.materials, i, "material");
@@ -141,6 +143,12 @@ std::unique_ptr<Command> delete_command(const Model& model, const Entry& entry) 
       return clear_list<NodalTemperature>(
           model, "Delete the initial temperatures",
           [](auto& m) -> auto& { return m.initial_temperatures; });
+    case EntryKind::StepFluxes:
+      check_index(model.steps, i, "step");
+      return clear_list<ConcentratedLoad>(
+          model, "Delete the nodal fluxes of " + model.steps[i].name, [i](auto& m) -> auto& {
+            return m.steps.at(i).cfluxes;
+          });
     case EntryKind::ContactPair:
       return delete_contact_pair(model, i);
     case EntryKind::Equation:
@@ -177,8 +185,21 @@ std::unique_ptr<Command> delete_command(const Model& model, const Entry& entry) 
 MaterialInput material_input_of(const Model& model, int material) {
   check_index(model.materials, material, "material");
   const Material& m = model.materials[material];
-  return {m.name, m.young.value_or(0.0), m.poisson.value_or(0.0), m.density.value_or(0.0),
-          m.expansion.value_or(0.0)};
+  MaterialInput in{m.name,
+                   m.young.value_or(0.0),
+                   m.poisson.value_or(0.0),
+                   m.density.value_or(0.0),
+                   m.expansion.value_or(0.0),
+                   {},
+                   {}};
+  const auto values = [](const std::optional<std::array<double, 3>>& k) {
+    if (!k) return std::vector<double>{};
+    if ((*k)[0] == (*k)[1] && (*k)[1] == (*k)[2]) return std::vector<double>{(*k)[0]};
+    return std::vector<double>{k->begin(), k->end()};
+  };
+  in.conductivity = values(m.conductivity);
+  in.electrical_conductivity = values(m.electrical_conductivity);
+  return in;
 }
 
 std::unique_ptr<Command> material_edit_command(const Model& model, int material,
@@ -222,7 +243,27 @@ std::unique_ptr<Command> step_edit_command(const Model& model, int step, const S
     if (s != step) others.steps.push_back(model.steps[s]);
   const std::unique_ptr<Command> checked = step_command(others, input);
   const Step before = model.steps[step];
+  if (input.kind != before.kind) {
+    // What the step holds must fit its new kind (the dialogs refuse it for a new entry too).
+    const bool loads_fit =
+        std::all_of(before.boundaries.begin(), before.boundaries.end(),
+                    [&](const Boundary& b) { return dof_fits_step(b.dof, input.kind); }) &&
+        std::all_of(before.cfluxes.begin(), before.cfluxes.end(),
+                    [&](const ConcentratedLoad& c) { return dof_fits_step(c.dof, input.kind); }) &&
+        std::all_of(model.boundaries.begin(), model.boundaries.end(),
+                    [&](const Boundary& b) { return dof_fits_step(b.dof, input.kind); });
+    const bool mechanical_loads =
+        !before.cloads.empty() || !before.dloads.empty() || !before.temperatures.empty();
+    const bool flux_loads = !before.dfluxes.empty() && input.kind != StepKind::HeatTransfer;
+    if (!loads_fit || (input.kind != StepKind::Static && mechanical_loads) || flux_loads)
+      refuse("step " + before.name + " holds boundary conditions or loads of a " +
+             step_kind_name(before.kind) +
+             " step (or every step's boundary conditions do not "
+             "fit a " +
+             step_kind_name(input.kind) + " step); delete them first");
+  }
   Step after = before;
+  after.kind = input.kind;
   after.name = input.name;
   after.procedure.initial_increment = input.initial_increment;
   after.procedure.total_time = input.total_time;

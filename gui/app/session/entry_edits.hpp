@@ -24,6 +24,7 @@ enum class EntryKind {
   StepDloads,
   StepTemperatures,
   InitialTemperatures,
+  StepFluxes,   // index = the step: its *CFLUX / *CECUR nodal heat flows or currents
   ContactPair,  // index into contact_pairs (its interaction goes too when no other pair uses it)
   Equation,     // index into equations
   Transform,    // index into transforms
@@ -36,6 +37,9 @@ struct Entry {
   EntryKind kind = EntryKind::Material;
   int index = -1;
   std::string name;
+  // For the per-node lists (boundary conditions, loads, pressures, temperatures, fluxes): -1 the
+  // whole list, otherwise one group of it (session/load_groups.hpp: what one dialog made).
+  int item = -1;
 };
 
 // Throws InputError with the reason when the entry cannot go (or does not exist).

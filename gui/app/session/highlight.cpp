@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 
+#include "session/picking.hpp"
 #include "session/scene.hpp"
 #include "styk/render/skin.hpp"
 
@@ -33,12 +34,34 @@ void add_line(std::vector<render::OverlayVertex>& out, const std::array<double, 
            {float(a[1] + ny), float(b[1] + ny), float(b[1] - ny), float(a[1] - ny)}, c);
 }
 
-void outline_face(const Scene& scene, int element, int face, double width,
+// The visible stretches of the edge a-b: sampled every pixel, each sample tested against the
+// picker's face-id buffer, consecutive visible samples joined into one line.
+void outline_edge(const Scene& scene, const Picker& picker, int a, int b, double width,
+                  std::vector<render::OverlayVertex>& out) {
+  const std::array<double, 3> pa = scene.screen_position(a), pb = scene.screen_position(b);
+  const int samples = std::max(1, int(std::ceil(std::hypot(pb[0] - pa[0], pb[1] - pa[1]))));
+  const auto at = [&](int i) {
+    const double t = double(i) / samples;
+    return std::array<double, 3>{pa[0] + t * (pb[0] - pa[0]), pa[1] + t * (pb[1] - pa[1]), 0.0};
+  };
+  int start = -1;  // first sample of the visible stretch being collected
+  for (int i = 0; i <= samples; ++i) {
+    const std::array<double, 3> p = at(i);
+    const bool visible = picker.edge_point_visible(p[0], p[1], a, b);
+    if (visible && start < 0) start = i;
+    if ((!visible || i == samples) && start >= 0) {
+      const int end = visible ? i : i - 1;
+      if (end > start) add_line(out, at(start), at(end), width, kHighlight);
+      start = -1;
+    }
+  }
+}
+
+void outline_face(const Scene& scene, const Picker& picker, int element, int face, double width,
                   std::vector<render::OverlayVertex>& out) {
   const std::vector<int> corners = face_corner_nodes(scene, element, face);
   for (std::size_t i = 0; i < corners.size(); ++i)
-    add_line(out, scene.screen_position(corners[i]),
-             scene.screen_position(corners[(i + 1) % corners.size()]), width, kHighlight);
+    outline_edge(scene, picker, corners[i], corners[(i + 1) % corners.size()], width, out);
 }
 
 }  // namespace
@@ -61,8 +84,10 @@ void append_highlight(const Scene& scene, const Selection& selection,
   const render::PixelRect& area = scene.last_frame().overlay.model;
   const double unit = std::max(2.0, double(scene.last_frame().point_size) * 0.5);
   const double width = std::max(2.0, unit);
+  // Only what is seen from the camera is marked: the same face-id buffer as picking.
+  const Picker picker(scene);
   for (int n : selection.nodes()) {
-    if (n < 0 || n >= model.node_count()) continue;
+    if (n < 0 || n >= model.node_count() || !picker.node_visible(n)) continue;
     const std::array<double, 3> p = scene.screen_position(n);
     if (p[0] < area.x || p[0] > area.x + area.width || p[1] < area.y || p[1] > area.y + area.height)
       continue;
@@ -73,7 +98,7 @@ void append_highlight(const Scene& scene, const Selection& selection,
     if (f.element < 0 || f.element >= model.element_count()) continue;
     const int count = int(scene.skin()->formulations()[f.element]->faces().size());
     if (f.face >= 1 && f.face <= count)
-      outline_face(scene, f.element, f.face - 1, width, triangles);
+      outline_face(scene, picker, f.element, f.face - 1, width, triangles);
   }
   if (selection.elements().empty()) return;
   // An element is outlined along its faces on the skin (the only ones that can be seen).
@@ -81,7 +106,7 @@ void append_highlight(const Scene& scene, const Selection& selection,
   for (const render::SkinModel::LayerSkin& layer : scene.skin()->layers())
     for (const render::SkinFace& face : layer.faces)
       if (std::binary_search(elements.begin(), elements.end(), face.element))
-        outline_face(scene, face.element, face.face, width, triangles);
+        outline_face(scene, picker, face.element, face.face, width, triangles);
 }
 
 }  // namespace styk::gui

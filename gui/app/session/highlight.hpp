@@ -1,7 +1,10 @@
 // How the selection is shown: markers drawn over the model as overlay triangles (the renderer's
 // 2D layer, drawn after the model without depth test), so the renderer needs no change and the
-// selection stays visible in every display mode. Nodes are squares with a dark rim; faces and
-// elements are outlined along the corners of their visible skin faces.
+// selection stays visible in every display mode. The depth test is done here instead, with the
+// picker's face-id buffer of the same frame: a node is marked only when it lies on a front-most
+// face, an outline only along the stretches of its edges that a front-most face holding the
+// edge covers, so nothing selected behind the front surface shows through. Nodes are squares with
+// a dark rim; faces and elements are outlined along the corners of their skin faces.
 #pragma once
 
 #include <vector>

@@ -50,6 +50,64 @@ void check_dof(int dof, const std::string& label) {
     refuse(label + " must be 1, 2 or 3 (x, y, z), not " + std::to_string(dof));
 }
 
+bool dof_fits_step(int dof, StepKind kind) {
+  switch (kind) {
+    case StepKind::Static:
+      return dof >= 1 && dof <= 3;
+    case StepKind::HeatTransfer:
+      return dof == 11;
+    case StepKind::ElectricConduction:
+      return dof == 9;
+  }
+  return false;
+}
+
+std::string step_kind_name(StepKind kind) {
+  switch (kind) {
+    case StepKind::Static:
+      return "static";
+    case StepKind::HeatTransfer:
+      return "heat transfer";
+    case StepKind::ElectricConduction:
+      return "electric conduction";
+  }
+  return "static";
+}
+
+StepKind step_kind_of(const std::string& name) {
+  for (StepKind kind : {StepKind::Static, StepKind::HeatTransfer, StepKind::ElectricConduction})
+    if (step_kind_name(kind) == name) return kind;
+  refuse("step kind '" + name + "' is not one of static, heat transfer, electric conduction");
+}
+
+namespace {
+std::string takes(StepKind kind) {
+  switch (kind) {
+    case StepKind::HeatTransfer:
+      return "dof 11 (temperature)";
+    case StepKind::ElectricConduction:
+      return "dof 9 (electric potential)";
+    case StepKind::Static:
+      break;
+  }
+  return "dofs 1, 2, 3 (x, y, z)";
+}
+}  // namespace
+
+void check_field_dof(const Model& model, int step, int dof, const std::string& label) {
+  if (dof != 9 && dof != 11 && (dof < 1 || dof > 3))
+    refuse(label + " must be 1, 2, 3 (x, y, z), 11 (temperature) or 9 (electric potential), not " +
+           std::to_string(dof));
+  for (int s = 0; s < static_cast<int>(model.steps.size()); ++s) {
+    if (step >= 0 && s != step) continue;
+    const Step& st = model.steps[s];
+    if (!dof_fits_step(dof, st.kind))
+      refuse(label + " " + std::to_string(dof) + " does not fit the " + step_kind_name(st.kind) +
+             " step " + st.name + (step < 0 ? " (held in every step)" : "") + ": it takes " +
+             takes(st.kind));
+  }
+}
+
 void check_finite(double value, const std::string& label) {
   if (!std::isfinite(value)) refuse(label + " must be a finite number");
 }

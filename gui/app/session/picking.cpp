@@ -93,6 +93,20 @@ bool Picker::node_visible(int node) const {
   return false;
 }
 
+bool Picker::edge_point_visible(double px, double py, int a, int b) const {
+  const int cx = int(std::floor(px)), cy = int(std::floor(py));
+  for (int y = cy - kVisibilityReach; y <= cy + kVisibilityReach; ++y)
+    for (int x = cx - kVisibilityReach; x <= cx + kVisibilityReach; ++x) {
+      const int id = id_at(x, y);
+      if (id < 0) continue;
+      const std::vector<int>& nodes = face_nodes_[id];
+      if (std::find(nodes.begin(), nodes.end(), a) != nodes.end() &&
+          std::find(nodes.begin(), nodes.end(), b) != nodes.end())
+        return true;
+    }
+  return false;
+}
+
 std::optional<PickedItem> Picker::pick(int x, int y, PickKind kind, int radius) const {
   if (kind != PickKind::Node) {
     const std::optional<render::SkinFace> face = face_at(x, y);

@@ -28,6 +28,9 @@ class Picker {
   std::optional<render::SkinFace> face_at(int x, int y) const;
   // Whether a node is drawn on a front-most face (a face holding it is visible within 2 pixels).
   bool node_visible(int node) const;
+  // Whether the point (x, y) of the edge between nodes a and b is drawn on a front-most face
+  // (one holding both nodes is seen within 2 pixels): the selection outlines' depth test.
+  bool edge_point_visible(double x, double y, int a, int b) const;
 
  private:
   int id_at(int x, int y) const;  // index into faces_, or -1

@@ -28,6 +28,11 @@ std::vector<NodalTemperature>& temperatures_of(Model& m, int step) {
 std::unique_ptr<Command> temperature_command(const Model& model, const TemperatureInput& in) {
   const NodeSet& set = existing_nset(model, in.nset);
   check_step(model, in.step, true);
+  if (in.step >= 0 && model.steps[in.step].kind != StepKind::Static)
+    refuse("step " + model.steps[in.step].name + " is a " +
+           step_kind_name(model.steps[in.step].kind) +
+           " step: *TEMPERATURE is a thermal load of a static step (in a heat step prescribe the "
+           "temperature as a boundary condition, dof 11)");
   check_finite(in.value, "temperature");
   const std::vector<NodalTemperature>& current =
       in.step < 0 ? model.initial_temperatures : model.steps[in.step].temperatures;

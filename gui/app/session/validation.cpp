@@ -5,6 +5,7 @@
 #include <cerrno>
 #include <cmath>
 #include <cstdlib>
+#include <optional>
 #include <stdexcept>
 
 #include "session/input_checks.hpp"
@@ -152,8 +153,26 @@ Material checked_material(const Model& model, const MaterialInput& in, int repla
   check_finite(in.poisson, "Poisson's ratio");
   check_finite(in.density, "density");
   check_finite(in.expansion, "expansion coefficient");
-  if (!(in.young > 0)) refuse("Young's modulus must be > 0");
-  if (!(in.poisson > -1.0 && in.poisson < 0.5))
+  const auto conductivity = [](const std::vector<double>& k,
+                               const std::string& what) -> std::optional<std::array<double, 3>> {
+    if (k.empty()) return std::nullopt;
+    if (k.size() != 1 && k.size() != 3)
+      refuse(what + ": give 1 value (isotropic) or 3 (k11 k22 k33), not " +
+             std::to_string(k.size()));
+    for (double v : k) {
+      check_finite(v, what);
+      if (!(v > 0)) refuse(what + " must be > 0 (leave it empty: not given)");
+    }
+    return k.size() == 1 ? std::array<double, 3>{k[0], k[0], k[0]}
+                         : std::array<double, 3>{k[0], k[1], k[2]};
+  };
+  const auto thermal = conductivity(in.conductivity, "conductivity");
+  const auto electrical = conductivity(in.electrical_conductivity, "electrical conductivity");
+  const bool elastic = in.young != 0.0 || (!thermal && !electrical);
+  if (elastic && !(in.young > 0))
+    refuse("Young's modulus must be > 0 (0 only for a heat or electric material with a "
+           "conductivity)");
+  if (elastic && !(in.poisson > -1.0 && in.poisson < 0.5))
     refuse("Poisson's ratio must lie between -1 and 0.5 (exclusive)");
   if (in.density < 0) refuse("density must be >= 0 (0: not given)");
   if (in.expansion < 0) refuse("expansion coefficient must be >= 0 (0: not given)");
@@ -162,10 +181,14 @@ Material checked_material(const Model& model, const MaterialInput& in, int repla
            " is not a thermal expansion (1/K); steel is about 1.2e-5");
   Material m;
   m.name = name;
-  m.young = in.young;
-  m.poisson = in.poisson;
+  if (elastic) {
+    m.young = in.young;
+    m.poisson = in.poisson;
+  }
   if (in.density > 0) m.density = in.density;
   if (in.expansion > 0) m.expansion = in.expansion;
+  m.conductivity = thermal;
+  m.electrical_conductivity = electrical;
   return m;
 }
 
@@ -203,6 +226,7 @@ std::unique_ptr<Command> step_command(const Model& model, const StepInput& in) {
     refuse("initial increment must be > 0 and not above the total time");
   Step step;
   step.name = in.name;
+  step.kind = in.kind;
   step.has_procedure = true;
   step.procedure.initial_increment = in.initial_increment;
   step.procedure.total_time = in.total_time;
@@ -211,11 +235,13 @@ std::unique_ptr<Command> step_command(const Model& model, const StepInput& in) {
 
 std::unique_ptr<Command> boundary_command(const Model& model, const BoundaryInput& in) {
   const NodeSet& set = existing_nset(model, in.nset);
-  check_dof(in.first_dof, "first dof");
-  check_dof(in.last_dof, "last dof");
-  if (in.last_dof < in.first_dof) refuse("last dof must not be below the first dof");
-  check_finite(in.value, "value");
   check_step(model, in.step, true);
+  check_field_dof(model, in.step, in.first_dof, "first dof");
+  check_field_dof(model, in.step, in.last_dof, "last dof");
+  if (in.last_dof < in.first_dof) refuse("last dof must not be below the first dof");
+  if (in.first_dof > 3 && in.last_dof != in.first_dof)
+    refuse("a temperature (11) or potential (9) is one dof: give it as first and last dof");
+  check_finite(in.value, "value");
   std::vector<Boundary> entries;
   for (int n : set.nodes)
     for (int dof = in.first_dof; dof <= in.last_dof; ++dof) entries.push_back({n, dof, in.value, {}});
@@ -226,18 +252,34 @@ std::unique_ptr<Command> boundary_command(const Model& model, const BoundaryInpu
 
 std::unique_ptr<Command> cload_command(const Model& model, const CloadInput& in) {
   const NodeSet& set = existing_nset(model, in.nset);
-  check_dof(in.dof, "direction");
+  check_step(model, in.step, false);
+  check_field_dof(model, in.step, in.dof, "direction");
   check_finite(in.value, "load");
   if (in.value == 0.0) refuse("a load of 0 does nothing; enter a value");
-  check_step(model, in.step, false);
   const double each = in.split ? in.value / static_cast<double>(set.nodes.size()) : in.value;
   std::vector<ConcentratedLoad> loads;
   for (int n : set.nodes) loads.push_back({n, in.dof, each, {}});
-  return make_add_cloads(in.step, std::move(loads), "Load " + set.name);
+  if (in.dof <= 3) return make_add_cloads(in.step, std::move(loads), "Load " + set.name);
+  const std::string what = in.dof == 11 ? "Heat flow" : "Current";
+  return make_model_edit(
+      what + " into " + set.name,
+      [step = in.step, loads](Model& m) {
+        auto& v = m.steps.at(step).cfluxes;
+        v.insert(v.end(), loads.begin(), loads.end());
+      },
+      [step = in.step, count = loads.size()](Model& m) {
+        auto& v = m.steps.at(step).cfluxes;
+        v.resize(v.size() - count);
+      });
 }
 
 std::unique_ptr<Command> pressure_command(const Model& model, const PressureInput& in) {
   check_step(model, in.step, false);
+  if (model.steps[in.step].kind != StepKind::Static)
+    refuse("step " + model.steps[in.step].name + " is a " +
+           step_kind_name(model.steps[in.step].kind) +
+           " step: a pressure belongs to a static step (face fluxes, *DFLUX, are not offered in "
+           "the GUI yet)");
   check_finite(in.magnitude, "pressure");
   if (in.magnitude == 0.0) refuse("a pressure of 0 does nothing; enter a value");
   std::vector<DistributedLoad> loads;

@@ -6,6 +6,7 @@
 #include <array>
 #include <memory>
 #include <string>
+#include <vector>
 
 #include "session/commands.hpp"
 #include "styk/core/element_registry.hpp"
@@ -45,10 +46,14 @@ std::unique_ptr<Command> block_command(const Model& model, const BlockInput& inp
 
 struct MaterialInput {
   std::string name;
-  double young = 210000.0;
+  double young = 210000.0;  // 0: no *ELASTIC (only with a conductivity: a heat/electric material)
   double poisson = 0.3;
   double density = 0.0;  // 0: not given
   double expansion = 0.0;  // *EXPANSION mean coefficient (reference 0); 0: not given
+  // *CONDUCTIVITY / *ELECTRICAL CONDUCTIVITY: empty = not given, 1 value = isotropic, 3 values =
+  // orthotropic k11 k22 k33 in global axes; each > 0.
+  std::vector<double> conductivity{};
+  std::vector<double> electrical_conductivity{};
 };
 std::unique_ptr<Command> material_command(const Model& model, const MaterialInput& input);
 // The material as the dialog asks for it (checks name clashes against `model` except with the
@@ -65,11 +70,15 @@ struct StepInput {
   std::string name = "STEP";
   double initial_increment = 1.0;
   double total_time = 1.0;
+  // Static (*STATIC), steady heat (*HEAT TRANSFER, STEADY STATE: temperature, dof 11) or electric
+  // conduction (*COUPLED THERMAL-ELECTRICAL, STEADY STATE: potential, dof 9).
+  StepKind kind = StepKind::Static;
 };
 std::unique_ptr<Command> step_command(const Model& model, const StepInput& input);
 
-// Prescribed displacement `value` of dofs first..last (1..3) on every node of a node set, either
-// for the whole analysis (step < 0) or inside step `step` (0-based).
+// Prescribed value of dofs first..last on every node of a node set, either for the whole analysis
+// (step < 0) or inside step `step` (0-based): displacements 1..3 in static steps, the temperature
+// (11) in heat and the potential (9) in electric steps (first = last then).
 struct BoundaryInput {
   std::string nset;
   int first_dof = 1;
@@ -81,6 +90,8 @@ std::unique_ptr<Command> boundary_command(const Model& model, const BoundaryInpu
 
 // *CLOAD: `value` in direction dof on every node of the set (total = value x nodes when
 // `split` is false; with `split` the value is the total, divided equally among the nodes).
+// In a heat step dof 11 is a nodal heat flow (*CFLUX), in an electric step dof 9 a nodal current
+// (*CECUR); both go to Step::cfluxes.
 struct CloadInput {
   std::string nset;
   int dof = 3;

@@ -1,10 +1,12 @@
 #include "interaction_dialogs.hpp"
 
 #include <algorithm>
+#include <optional>
 
 #include "dialog_fields.hpp"
 #include "session/constraint_input.hpp"
 #include "session/contact_input.hpp"
+#include "session/load_groups.hpp"
 #include "session/thermal_input.hpp"
 
 namespace styk::gui {
@@ -12,22 +14,38 @@ namespace {
 
 QString q(const std::string& s) { return QString::fromStdString(s); }
 
-FormDialog* temperature_dialog(Document& doc, QWidget* parent, bool initial) {
+FormDialog* temperature_dialog(Document& doc, QWidget* parent, bool initial, const Entry* group) {
+  const Model& m = doc.model();
+  TemperatureInput in{"", initial ? 0.0 : 100.0, initial ? -1 : 0};
+  QStringList sets = node_set_names(m);
+  if (group) {
+    in = temperature_input_of(m, *group);
+    if (in.nset.empty())
+      sets.prepend(
+          QString("(the same %1 nodes)").arg(node_groups(m, *group).at(group->item).nodes.size()));
+  }
   auto* d = new FormDialog(
-      initial ? "Initial temperature" : "Temperature",
+      QString(group ? "Edit " : "") + (initial ? "Initial temperature" : "Temperature"),
       initial ? "*INITIAL CONDITIONS, TYPE=TEMPERATURE: the temperature every node of the set "
                 "starts at (nodes not given start at 0)."
-              : "*TEMPERATURE in a step: the set's nodes reach this temperature at the step's "
-                "end (ramped with the step time; later steps keep it). The material's expansion "
-                "coefficient turns the change into a thermal load.",
+              : "*TEMPERATURE in a static step: the set's nodes reach this temperature at the "
+                "step's end (ramped with the step time; later steps keep it). The material's "
+                "expansion coefficient turns the change into a thermal load.",
       parent);
-  d->add_choice("nset", "Node set", node_set_names(doc.model()));
-  d->add_text("value", "Temperature", initial ? "0" : "100");
-  if (!initial) d->add_choice("step", "Step", step_names(doc.model(), false));
-  d->set_accept([&doc, initial](const FormDialog& f) {
-    doc.apply(
-        temperature_command(doc.model(), {f.text("nset"), f.real("value", "Temperature"),
-                                          initial ? -1 : std::max(0, step_index(f.text("step")))}));
+  d->add_choice("nset", "Node set", sets, q(in.nset));
+  d->add_text("value", "Temperature", QString::number(in.value));
+  if (!initial)
+    d->add_choice("step", "Step", step_names(m, false),
+                  in.step >= 0 && in.step < int(m.steps.size())
+                      ? QString("%1 %2").arg(in.step + 1).arg(q(m.steps[in.step].name))
+                      : QString());
+  const std::optional<Entry> edited = group ? std::optional<Entry>(*group) : std::nullopt;
+  d->set_accept([&doc, initial, edited](const FormDialog& f) {
+    const std::string nset = f.text("nset").rfind("(", 0) == 0 ? std::string() : f.text("nset");
+    const TemperatureInput t{nset, f.real("value", "Temperature"),
+                             initial ? -1 : std::max(0, step_index(f.text("step")))};
+    doc.apply(edited ? temperature_edit_command(doc.model(), *edited, t)
+                     : temperature_command(doc.model(), t));
   });
   return d;
 }
@@ -82,48 +100,68 @@ FormDialog* make_new_contact_dialog(Document& doc, QWidget* parent) {
 }
 
 FormDialog* make_initial_temperature_dialog(Document& doc, QWidget* parent) {
-  return temperature_dialog(doc, parent, true);
+  return temperature_dialog(doc, parent, true, nullptr);
 }
 
 FormDialog* make_temperature_dialog(Document& doc, QWidget* parent) {
-  return temperature_dialog(doc, parent, false);
+  return temperature_dialog(doc, parent, false, nullptr);
+}
+
+FormDialog* make_temperature_dialog(Document& doc, QWidget* parent, const Entry& group) {
+  return temperature_dialog(doc, parent, group.kind == EntryKind::InitialTemperatures, &group);
 }
 
 FormDialog* make_equation_dialog(Document& doc, QWidget* parent) {
+  return make_equation_dialog(doc, parent, -1);
+}
+
+FormDialog* make_equation_dialog(Document& doc, QWidget* parent, int equation) {
   auto* d = new FormDialog(
-      "Equation",
+      equation >= 0 ? "Edit equation" : "Equation",
       "*EQUATION: sum of coefficient x u(node, dof) = 0, enforced exactly. Terms as 'node dof "
       "coefficient', separated by ';'. The first term is the dof the equation eliminates (not "
       "prescribed, not eliminated by another equation).",
       parent);
-  d->add_text("terms", "Terms", "");
-  d->set_accept([&doc](const FormDialog& f) {
+  d->add_text("terms", "Terms", equation >= 0 ? q(equation_text(doc.model(), equation)) : "");
+  d->set_accept([&doc, equation](const FormDialog& f) {
     std::string text = f.text("terms");
     for (char& c : text)
       if (c == ';') c = '\n';
-    doc.apply(equation_command(doc.model(), parse_equation_terms(text)));
+    const std::vector<EquationTermInput> terms = parse_equation_terms(text);
+    doc.apply(equation >= 0 ? equation_edit_command(doc.model(), equation, terms)
+                            : equation_command(doc.model(), terms));
   });
   return d;
 }
 
 FormDialog* make_transform_dialog(Document& doc, QWidget* parent) {
+  return make_transform_dialog(doc, parent, -1);
+}
+
+FormDialog* make_transform_dialog(Document& doc, QWidget* parent, int transform) {
+  const TransformInput in =
+      transform >= 0 ? transform_input_of(doc.model(), transform) : TransformInput{};
+  const auto point = [](const Vec3& p) {
+    return QString("%1 %2 %3").arg(p[0]).arg(p[1]).arg(p[2]);
+  };
   auto* d = new FormDialog(
-      "Transform",
+      transform >= 0 ? "Edit transform" : "Transform",
       "*TRANSFORM: boundary conditions, loads and equation terms of the set's nodes act in a "
       "local system. Rectangular: local x along a, local y in the plane of a and b. Cylindrical: "
       "a and b on the axis; 1 radial, 2 tangential, 3 axial.",
       parent);
-  d->add_choice("nset", "Node set", node_set_names(doc.model()));
-  d->add_choice("system", "System", {"rectangular", "cylindrical"});
-  d->add_text("a", "Point a x y z", "1 0 0");
-  d->add_text("b", "Point b x y z", "0 1 0");
-  d->set_accept([&doc](const FormDialog& f) {
+  d->add_choice("nset", "Node set", node_set_names(doc.model()), q(in.nset));
+  d->add_choice("system", "System", {"rectangular", "cylindrical"},
+                in.cylindrical ? "cylindrical" : "rectangular");
+  d->add_text("a", "Point a x y z", point(in.a));
+  d->add_text("b", "Point b x y z", point(in.b));
+  d->set_accept([&doc, transform](const FormDialog& f) {
     const std::vector<double> a = numbers(f, "a", "Point a", 3);
     const std::vector<double> b = numbers(f, "b", "Point b", 3);
-    doc.apply(transform_command(doc.model(), {f.text("nset"),
-                                              f.text("system") == "cylindrical",
-                                              {a[0], a[1], a[2]},
-                                              {b[0], b[1], b[2]}}));
+    const TransformInput t{
+        f.text("nset"), f.text("system") == "cylindrical", {a[0], a[1], a[2]}, {b[0], b[1], b[2]}};
+    doc.apply(transform >= 0 ? transform_edit_command(doc.model(), transform, t)
+                             : transform_command(doc.model(), t));
   });
   return d;
 }

@@ -7,6 +7,7 @@
 
 #include "form_dialog.hpp"
 #include "session/document.hpp"
+#include "session/entry_edits.hpp"
 
 namespace styk::gui {
 
@@ -18,6 +19,11 @@ FormDialog* make_initial_temperature_dialog(Document& document, QWidget* parent)
 FormDialog* make_temperature_dialog(Document& document, QWidget* parent);
 FormDialog* make_equation_dialog(Document& document, QWidget* parent);
 FormDialog* make_transform_dialog(Document& document, QWidget* parent);
+// Editing: a group of initial or step temperatures (session/load_groups.hpp), equation /
+// transform `index` (filled with its values).
+FormDialog* make_temperature_dialog(Document& document, QWidget* parent, const Entry& group);
+FormDialog* make_equation_dialog(Document& document, QWidget* parent, int equation);
+FormDialog* make_transform_dialog(Document& document, QWidget* parent, int transform);
 FormDialog* make_common_nodes_dialog(Document& document, QWidget* parent);
 
 }  // namespace styk::gui

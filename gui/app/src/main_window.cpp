@@ -95,7 +95,7 @@ MainWindow::MainWindow(const ElementRegistry& registry, QWidget* parent)
   });
   connect(tree_, &ModelTree::properties, properties_, &QTextBrowser::setHtml);
   connect(tree_, &ModelTree::edit_requested, this, [this](const Entry& entry) {
-    run_dialog(make_entry_dialog(document_, entry, this));
+    run_dialog(make_entry_dialog(document_, entry, view_->scene().selection(), this));
   });
   connect(tree_, &ModelTree::delete_requested, this, [this](const Entry& entry) {
     try {
@@ -181,6 +181,7 @@ void MainWindow::build_menus() {
   undo_ = edit->addAction("&Undo", QKeySequence::Undo, this, [this] { document_.undo(); refresh_model(); });
   undo_->setObjectName("action_undo");
   redo_ = edit->addAction("&Redo", QKeySequence::Redo, this, [this] { document_.redo(); refresh_model(); });
+  redo_->setObjectName("action_redo");
 
   QMenu* model = menuBar()->addMenu("&Model");
   const auto dialog_action = [this, model](const QString& text, const QString& name,
@@ -441,6 +442,7 @@ void MainWindow::refresh_model() {
   results_->set_animating(false);
   view_->clear_selection();
   tree_->populate(document_);
+  properties_->clear();  // it described an item of the tree before the change
   results_->set_document(document_);
   undo_->setEnabled(document_.history().can_undo());
   undo_->setText("&Undo " + QString::fromStdString(document_.history().undo_text()));

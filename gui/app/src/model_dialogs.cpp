@@ -7,16 +7,15 @@
 
 #include "dialog_fields.hpp"
 #include "session/entry_edits.hpp"
+#include "session/input_checks.hpp"
 #include "session/validation.hpp"
 #include "styk/mesher/builders.hpp"
 
 namespace styk::gui {
 namespace {
 
-QStringList node_sets(const Model& m) { return node_set_names(m); }
 QStringList element_sets(const Model& m) { return element_set_names(m); }
 QStringList materials(const Model& m) { return material_names(m); }
-QStringList steps(const Model& m, bool model_level) { return step_names(m, model_level); }
 
 }  // namespace
 
@@ -106,21 +105,42 @@ FormDialog* make_material_dialog(Document& doc, QWidget* parent) {
 
 FormDialog* make_material_dialog(Document& doc, QWidget* parent, int material) {
   const MaterialInput in = material >= 0 ? material_input_of(doc.model(), material)
-                                         : MaterialInput{"STEEL", 210000.0, 0.3, 0.0, 0.0};
+                                         : MaterialInput{"STEEL", 210000.0, 0.3, 0.0, 0.0, {}, {}};
+  const auto values = [](const std::vector<double>& k) {
+    QStringList parts;
+    for (double v : k) parts << QString::number(v);
+    return parts.join(' ');
+  };
   auto* d = new FormDialog(material >= 0 ? "Edit material" : "Material",
                            "Isotropic linear elastic material, optionally with thermal expansion "
-                           "(*EXPANSION: mean coefficient from temperature 0). Renaming updates "
-                           "the sections that use it.",
+                           "(*EXPANSION: mean coefficient from temperature 0), and for heat "
+                           "transfer / electric conduction steps the conductivities (one value: "
+                           "isotropic; three: k11 k22 k33 in global axes; empty: none). E = 0: no "
+                           "elastic constants (a heat or electric material). Renaming updates the "
+                           "sections that use it.",
                            parent);
   d->add_text("name", "Name", QString::fromStdString(in.name));
   d->add_text("young", "Young's modulus E", QString::number(in.young));
   d->add_text("poisson", "Poisson's ratio", QString::number(in.poisson));
   d->add_text("density", "Density (0: none)", QString::number(in.density));
   d->add_text("expansion", "Expansion coefficient (0: none)", QString::number(in.expansion));
+  d->add_text("conductivity", "Conductivity k (*CONDUCTIVITY)", values(in.conductivity));
+  d->add_text("electrical", "Electrical conductivity", values(in.electrical_conductivity));
   d->set_accept([&doc, material](const FormDialog& f) {
-    const MaterialInput edited{f.text("name"), f.real("young", "Young's modulus"),
-                               f.real("poisson", "Poisson's ratio"), f.real("density", "Density"),
-                               f.real("expansion", "Expansion coefficient")};
+    const auto list = [&f](const QString& key, const QString& label) {
+      std::vector<double> v;
+      for (const QString& p : QString::fromStdString(f.text(key))
+                                  .split(QRegularExpression("[\\s,;]+"), Qt::SkipEmptyParts))
+        v.push_back(parse_real(p.toStdString(), label.toStdString()));
+      return v;
+    };
+    const MaterialInput edited{f.text("name"),
+                               f.real("young", "Young's modulus"),
+                               f.real("poisson", "Poisson's ratio"),
+                               f.real("density", "Density"),
+                               f.real("expansion", "Expansion coefficient"),
+                               list("conductivity", "Conductivity"),
+                               list("electrical", "Electrical conductivity")};
     doc.apply(material >= 0 ? material_edit_command(doc.model(), material, edited)
                             : material_command(doc.model(), edited));
   });
@@ -154,78 +174,28 @@ FormDialog* make_step_dialog(Document& doc, QWidget* parent) {
 
 FormDialog* make_step_dialog(Document& doc, QWidget* parent, int step) {
   const Model& m = doc.model();
-  auto* d = new FormDialog(step >= 0 ? "Edit static step" : "Static step",
-                           "A linear static step (*STEP, *STATIC).", parent);
+  auto* d = new FormDialog(step >= 0 ? "Edit step" : "Step",
+                           "A step: linear static (*STATIC), steady heat transfer (*HEAT "
+                           "TRANSFER, STEADY STATE: temperature, dof 11) or electric conduction "
+                           "(*COUPLED THERMAL-ELECTRICAL, STEADY STATE: potential, dof 9).",
+                           parent);
+  const QStringList kinds{"static", "heat transfer", "electric conduction"};
   if (step >= 0) {
     const Step& s = m.steps.at(step);
     d->add_text("name", "Name", QString::fromStdString(s.name));
+    d->add_choice("kind", "Kind", kinds, QString::fromStdString(step_kind_name(s.kind)));
     d->add_text("initial", "Initial increment", QString::number(s.procedure.initial_increment));
     d->add_text("total", "Total time", QString::number(s.procedure.total_time));
   } else {
     d->add_text("name", "Name", QString("STEP-%1").arg(m.steps.size() + 1));
+    d->add_choice("kind", "Kind", kinds);
     d->add_text("initial", "Initial increment", "1");
     d->add_text("total", "Total time", "1");
   }
   d->set_accept([&doc, step](const FormDialog& f) {
     const StepInput in{f.text("name"), f.real("initial", "Initial increment"),
-                       f.real("total", "Total time")};
+                       f.real("total", "Total time"), step_kind_of(f.text("kind"))};
     doc.apply(step >= 0 ? step_edit_command(doc.model(), step, in) : step_command(doc.model(), in));
-  });
-  return d;
-}
-
-FormDialog* make_boundary_dialog(Document& doc, QWidget* parent) {
-  auto* d = new FormDialog("Boundary condition",
-                           "Prescribes dofs first..last (1 = x, 2 = y, 3 = z) of every node of "
-                           "a node set.",
-                           parent);
-  d->add_choice("nset", "Node set", node_sets(doc.model()));
-  d->add_text("first", "First dof", "1");
-  d->add_text("last", "Last dof", "3");
-  d->add_text("value", "Value", "0");
-  d->add_choice("step", "Step", steps(doc.model(), true));
-  d->set_accept([&doc](const FormDialog& f) {
-    doc.apply(boundary_command(doc.model(),
-                               {f.text("nset"), f.integer("first", "First dof"),
-                                f.integer("last", "Last dof"), f.real("value", "Value"),
-                                step_index(f.text("step"))}));
-  });
-  return d;
-}
-
-FormDialog* make_cload_dialog(Document& doc, QWidget* parent) {
-  auto* d = new FormDialog("Concentrated load", "*CLOAD on every node of a node set.", parent);
-  d->add_choice("nset", "Node set", node_sets(doc.model()));
-  d->add_text("dof", "Direction (1, 2, 3)", "3");
-  d->add_text("value", "Value", "-100");
-  d->add_check("split", "Value is the total, divided among the nodes", true);
-  d->add_choice("step", "Step", steps(doc.model(), false));
-  d->set_accept([&doc](const FormDialog& f) {
-    doc.apply(cload_command(doc.model(), {f.text("nset"), f.integer("dof", "Direction"),
-                                          f.real("value", "Value"), f.checked("split"),
-                                          step_index(f.text("step"))}));
-  });
-  return d;
-}
-
-FormDialog* make_pressure_dialog(Document& doc, QWidget* parent) {
-  auto* d = new FormDialog("Pressure",
-                           "*DLOAD pressure (positive pushes into the element) on a surface, or "
-                           "on face S1..S6 of every element of an element set.",
-                           parent);
-  QStringList surfaces{"(element set below)"};
-  for (const auto& [name, s] : doc.model().surfaces) surfaces << QString::fromStdString(name);
-  d->add_choice("surface", "Surface", surfaces);
-  d->add_choice("elset", "Element set", element_sets(doc.model()));
-  d->add_text("face", "Face (1..6)", "1");
-  d->add_text("magnitude", "Pressure", "1");
-  d->add_choice("step", "Step", steps(doc.model(), false));
-  d->set_accept([&doc](const FormDialog& f) {
-    const std::string surface = f.text("surface");
-    doc.apply(pressure_command(
-        doc.model(), {surface.rfind("(", 0) == 0 ? std::string() : surface, f.text("elset"),
-                      f.integer("face", "Face"), f.real("magnitude", "Pressure"),
-                      step_index(f.text("step"))}));
   });
   return d;
 }

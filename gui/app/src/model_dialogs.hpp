@@ -6,6 +6,7 @@
 #include <string>
 
 #include "form_dialog.hpp"
+#include "load_dialogs.hpp"
 #include "session/document.hpp"
 
 namespace styk::gui {
@@ -21,8 +22,5 @@ FormDialog* make_step_dialog(Document& document, QWidget* parent);
 FormDialog* make_material_dialog(Document& document, QWidget* parent, int material);
 FormDialog* make_section_dialog(Document& document, QWidget* parent, int section);
 FormDialog* make_step_dialog(Document& document, QWidget* parent, int step);
-FormDialog* make_boundary_dialog(Document& document, QWidget* parent);
-FormDialog* make_cload_dialog(Document& document, QWidget* parent);
-FormDialog* make_pressure_dialog(Document& document, QWidget* parent);
 
 }  // namespace styk::gui

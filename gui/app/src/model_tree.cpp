@@ -5,6 +5,9 @@
 #include <QMenu>
 #include <QPixmap>
 
+#include "entry_dialogs.hpp"
+#include "session/load_groups.hpp"
+
 namespace styk::gui {
 namespace {
 
@@ -14,6 +17,7 @@ constexpr int kLayerRole = Qt::UserRole + 2;  // layer name
 constexpr int kEntryRole = Qt::UserRole + 3;  // EntryKind + 1 (0: not a model entry)
 constexpr int kIndexRole = Qt::UserRole + 4;
 constexpr int kNameRole = Qt::UserRole + 5;
+constexpr int kItemRole = Qt::UserRole + 6;  // the group of a per-node list, -1: the whole list
 
 QTreeWidgetItem* group(QTreeWidget* tree, const QString& name, int count) {
   auto* item = new QTreeWidgetItem(tree, {QString("%1 (%2)").arg(name).arg(count)});
@@ -30,16 +34,39 @@ QTreeWidgetItem* leaf(QTreeWidgetItem* parent, const QString& text, const QStrin
 QString q(const std::string& s) { return QString::fromStdString(s); }
 
 QTreeWidgetItem* entry(QTreeWidgetItem* item, EntryKind kind, int index,
-                       const std::string& name = {}) {
+                       const std::string& name = {}, int group = -1) {
   item->setData(0, kEntryRole, static_cast<int>(kind) + 1);
   item->setData(0, kIndexRole, index);
   item->setData(0, kNameRole, q(name));
+  item->setData(0, kItemRole, group);
   return item;
 }
 
-bool editable(EntryKind kind) {
-  return kind == EntryKind::Material || kind == EntryKind::Section || kind == EntryKind::Step ||
-         kind == EntryKind::ContactPair;
+// The groups of a per-node list (what one dialog made) as children of its item.
+void add_groups(const Model& m, QTreeWidgetItem* list, EntryKind kind, int index) {
+  const std::vector<std::string> labels = group_labels(m, Entry{kind, index, {}, -1});
+  for (int g = 0; g < static_cast<int>(labels.size()); ++g)
+    entry(leaf(list, q(labels[g]),
+               QString("%1<br>double-click: edit; Delete: remove").arg(q(labels[g]))),
+          kind, index, {}, g);
+}
+
+const char* step_kind_text(StepKind kind) {
+  switch (kind) {
+    case StepKind::HeatTransfer:
+      return "steady heat transfer";
+    case StepKind::ElectricConduction:
+      return "electric conduction";
+    case StepKind::Static:
+      break;
+  }
+  return "static";
+}
+
+QString conductivity_text(const std::optional<std::array<double, 3>>& k) {
+  if (!k) return "-";
+  if ((*k)[0] == (*k)[1] && (*k)[1] == (*k)[2]) return QString::number((*k)[0]);
+  return QString("%1 %2 %3").arg((*k)[0]).arg((*k)[1]).arg((*k)[2]);
 }
 
 QString friction_text(const Model& m, const ContactPair& p) {
@@ -51,38 +78,48 @@ QString friction_text(const Model& m, const ContactPair& p) {
   return QString("mu %1").arg(f.mu);
 }
 
-void add_step(QTreeWidgetItem* steps, const Step& s, int i) {
+void add_step(const Model& m, QTreeWidgetItem* steps, const Step& s, int i) {
   QTreeWidgetItem* item = entry(
       leaf(steps,
-           QString("%1 %2 — %3 BC, %4 CLOAD, %5 DLOAD")
+           QString("%1 %2 — %3%4 BC, %5 CLOAD, %6 DLOAD")
                .arg(i + 1)
                .arg(q(s.name))
+               .arg(s.kind == StepKind::Static ? QString() : QString(step_kind_text(s.kind)) + ", ")
                .arg(s.boundaries.size())
-               .arg(s.cloads.size())
+               .arg(s.cloads.size() + s.cfluxes.size())
                .arg(s.dloads.size()),
-           QString("<b>Step %1</b><br>static, initial increment %2, total time %3<br>%4 boundary "
-                   "dofs, %5 concentrated loads, %6 face loads, %7 nodal temperatures")
+           QString("<b>Step %1</b><br>%2, initial increment %3, total time %4<br>%5 boundary "
+                   "dofs, %6 concentrated loads, %7 face loads, %8 nodal temperatures, %9 nodal "
+                   "fluxes")
                .arg(q(s.name))
+               .arg(step_kind_text(s.kind))
                .arg(s.procedure.initial_increment)
                .arg(s.procedure.total_time)
                .arg(s.boundaries.size())
                .arg(s.cloads.size())
                .arg(s.dloads.size())
-               .arg(s.temperatures.size())),
+               .arg(s.temperatures.size())
+               .arg(s.cfluxes.size())),
       EntryKind::Step, i);
+  const char* fluxes =
+      s.kind == StepKind::ElectricConduction ? "nodal currents" : "nodal heat flows";
   const std::pair<EntryKind, std::pair<const char*, std::size_t>> lists[] = {
       {EntryKind::StepBoundaries, {"boundary conditions", s.boundaries.size()}},
       {EntryKind::StepCloads, {"concentrated loads", s.cloads.size()}},
+      {EntryKind::StepFluxes, {fluxes, s.cfluxes.size()}},
       {EntryKind::StepDloads, {"pressures", s.dloads.size()}},
       {EntryKind::StepTemperatures, {"temperatures", s.temperatures.size()}}};
   for (const auto& [kind, what] : lists)
     if (what.second > 0)
-      entry(leaf(item, QString("%1: %2").arg(what.first).arg(what.second),
-                 QString("%1 %2 of step %3 (Delete removes them all)")
-                     .arg(what.second)
-                     .arg(what.first)
-                     .arg(q(s.name))),
-            kind, i);
+      add_groups(m,
+                 entry(leaf(item, QString("%1: %2").arg(what.first).arg(what.second),
+                            QString("%1 %2 of step %3 (Delete removes them all; the entries "
+                                    "below are what each dialog made)")
+                                .arg(what.second)
+                                .arg(what.first)
+                                .arg(q(s.name))),
+                       kind, i),
+                 kind, i);
 }
 
 }  // namespace
@@ -98,7 +135,7 @@ ModelTree::ModelTree(QWidget* parent) : QTreeWidget(parent) {
   connect(this, &QTreeWidget::itemDoubleClicked, this, [this](QTreeWidgetItem* item, int) {
     if (item->data(0, kKindRole).toString() == "layer")
       emit layer_color_requested(item->data(0, kLayerRole).toString());
-    else if (const auto e = entry_of(item); e && editable(e->kind))
+    else if (const auto e = entry_of(item); e && has_entry_dialog(*e))
       emit edit_requested(*e);
   });
   connect(this, &QTreeWidget::currentItemChanged, this, [this](QTreeWidgetItem* item) {
@@ -111,7 +148,7 @@ std::optional<Entry> ModelTree::entry_of(const QTreeWidgetItem* item) {
   const int kind = item->data(0, kEntryRole).toInt();
   if (kind <= 0) return std::nullopt;
   return Entry{static_cast<EntryKind>(kind - 1), item->data(0, kIndexRole).toInt(),
-               item->data(0, kNameRole).toString().toStdString()};
+               item->data(0, kNameRole).toString().toStdString(), item->data(0, kItemRole).toInt()};
 }
 
 QTreeWidgetItem* ModelTree::find_item(const QString& text) const {
@@ -134,7 +171,7 @@ void ModelTree::show_menu(const QPoint& at) {
   const auto e = entry_of(itemAt(at));
   if (!e) return;
   QMenu menu(this);
-  if (editable(e->kind)) menu.addAction("Edit...", this, [this, e] { emit edit_requested(*e); });
+  if (has_entry_dialog(*e)) menu.addAction("Edit...", this, [this, e] { emit edit_requested(*e); });
   menu.addAction("Delete", this, [this, e] { emit delete_requested(*e); });
   menu.exec(viewport()->mapToGlobal(at));
 }
@@ -180,12 +217,15 @@ void ModelTree::populate(const Document& doc) {
   for (std::size_t i = 0; i < m.materials.size(); ++i) {
     const Material& mat = m.materials[i];
     entry(leaf(materials, q(mat.name),
-               QString("<b>Material %1</b><br>E = %2<br>nu = %3<br>density = %4<br>expansion = %5")
+               QString("<b>Material %1</b><br>E = %2<br>nu = %3<br>density = %4<br>expansion = "
+                       "%5<br>conductivity = %6<br>electrical conductivity = %7")
                    .arg(q(mat.name))
                    .arg(mat.young ? QString::number(*mat.young) : QString("-"))
                    .arg(mat.poisson ? QString::number(*mat.poisson) : QString("-"))
                    .arg(mat.density ? QString::number(*mat.density) : QString("-"))
-                   .arg(mat.expansion ? QString::number(*mat.expansion) : QString("-"))),
+                   .arg(mat.expansion ? QString::number(*mat.expansion) : QString("-"))
+                   .arg(conductivity_text(mat.conductivity))
+                   .arg(conductivity_text(mat.electrical_conductivity))),
           EntryKind::Material, int(i));
   }
   QTreeWidgetItem* sections = group(this, "Sections", int(m.sections.size()));
@@ -198,15 +238,21 @@ void ModelTree::populate(const Document& doc) {
   }
   QTreeWidgetItem* steps = group(this, "Steps", int(m.steps.size()));
   if (!m.boundaries.empty())
-    entry(leaf(steps, QString("boundary conditions (all steps): %1").arg(m.boundaries.size()),
-               QString("%1 prescribed dofs held in every step").arg(m.boundaries.size())),
-          EntryKind::ModelBoundaries, -1);
+    add_groups(
+        m,
+        entry(leaf(steps, QString("boundary conditions (all steps): %1").arg(m.boundaries.size()),
+                   QString("%1 prescribed dofs held in every step").arg(m.boundaries.size())),
+              EntryKind::ModelBoundaries, -1),
+        EntryKind::ModelBoundaries, -1);
   if (!m.initial_temperatures.empty())
-    entry(leaf(steps, QString("initial temperatures: %1").arg(m.initial_temperatures.size()),
-               QString("*INITIAL CONDITIONS, TYPE=TEMPERATURE at %1 nodes")
-                   .arg(m.initial_temperatures.size())),
-          EntryKind::InitialTemperatures, -1);
-  for (std::size_t i = 0; i < m.steps.size(); ++i) add_step(steps, m.steps[i], int(i));
+    add_groups(
+        m,
+        entry(leaf(steps, QString("initial temperatures: %1").arg(m.initial_temperatures.size()),
+                   QString("*INITIAL CONDITIONS, TYPE=TEMPERATURE at %1 nodes")
+                       .arg(m.initial_temperatures.size())),
+              EntryKind::InitialTemperatures, -1),
+        EntryKind::InitialTemperatures, -1);
+  for (std::size_t i = 0; i < m.steps.size(); ++i) add_step(m, steps, m.steps[i], int(i));
   QTreeWidgetItem* contact = group(this, "Contact pairs", int(m.contact_pairs.size()));
   for (std::size_t i = 0; i < m.contact_pairs.size(); ++i) {
     const ContactPair& p = m.contact_pairs[i];

@@ -1,9 +1,11 @@
 // The model tree: layers (element groups with show/hide check boxes and colour swatches; double
 // click changes the colour), node sets, element sets, surfaces, materials, sections, steps with
 // their boundary conditions, loads and temperatures, contact pairs, equations, transforms, and
-// the results' increments. Selecting an item shows its properties. Model entries can be edited
-// (double-click or context menu "Edit...": materials, sections, steps, contact pairs) and deleted
-// (Delete key or context menu); the window does it through session/entry_edits.hpp.
+// the results' increments. Each per-node list (boundary conditions, loads, fluxes, pressures,
+// temperatures) lists its groups, what each dialog made (session/load_groups.hpp). Selecting an
+// item shows its properties. Model entries can be edited (double-click or context menu
+// "Edit...": every entry but a whole list, see entry_dialogs.hpp) and deleted (Delete key or
+// context menu); the window does it through session/entry_edits.hpp.
 #pragma once
 
 #include <QTreeWidget>
