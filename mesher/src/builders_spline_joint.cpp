@@ -9,6 +9,17 @@
 // flank lines asin(w / 2 rho): the spline (a 0.1 strip where the hub's tooth tip leaves the
 // flank free, then the contact rows), the hub's tooth in the groove (contact rows, then the strip
 // beyond the spline tip), the hub ring to Ø80 and the flange to Ø155.
+//
+// C3D28 (docs/mesher.md, "Joints"): a C3D28 layer can only end on free faces or on C3D28 faces
+// that carry the same GLL nodes. The concave corner at a spline's root has three elements around
+// it (the strip, the element under the spline, the groove's), and the middle one has no free
+// face; so the C3D28 shaft section puts two elements there (a transition: the strip element and
+// the groove element meet along an edge slanting into the core), and its 0.1 root strip runs on to
+// the shaft's end (a 0.1 ridge on the round part), because the transition elements straddle the
+// root circle. The hub's corners (strip over the spline tip / ring) are closed by converting both
+// sides of every sector line of the hub ring and flange, which run to the free surfaces at Ø80
+// and Ø155.
+#include <algorithm>
 #include <cmath>
 
 #include "builder_catalogue.hpp"
@@ -16,6 +27,7 @@
 #include "contact_support.hpp"
 #include "joint_support.hpp"
 #include "styk/mesher/block_mesh.hpp"
+#include "styk/mesher/convert.hpp"
 #include "styk/mesher/merge.hpp"
 
 namespace styk::mesher::detail {
@@ -28,6 +40,8 @@ constexpr double kTipRadius = 33.5, kRootRadius = 30.59, kWidth = 12.48;
 constexpr double kShaftLength = 120, kHubStart = 80, kFlangeStart = 100;
 constexpr double kArmRadius = 40, kFlangeRadius = 77.5;
 constexpr double kPitch = 2 * kPi / kSplines;
+// Working surface: both sides of the hub's sector lines (C3D28 only).
+const char* const kHubSectors = "__HUB_SECTORS";
 
 struct SplineMesh {
   int tooth = 4;           // elements across a spline
@@ -65,8 +79,78 @@ SectionCurve root_arc(int k, const SplineMesh& m) {
   };
 }
 
+// The polar arc of radius r from angle a0 to a1, linear in angle.
+SectionCurve arc(double r, double a0, double a1) {
+  return [=](double u) { return polar(r, a0 + u * (a1 - a0)); };
+}
+
+SectionCurve line(const Vec3& a, const Vec3& b) { return polyline({a, b}); }
+
+// The C3D28 shaft section of pitch k from hexagon side k (around - 2 elements) to the root circle
+// and the 0.1 strip of spline k (to root + clearance), in every axial segment. The strip's first
+// and last elements reach down along a slanted edge to the points Y, Y' under the spline, so that
+// the concave corner A (root circle x flank) has two elements: the strip element (free flank face)
+// and the groove element (free groove bottom), and the C3D28 layer turns from the flank into the
+// groove bottom. Blocks: the strip (1 x tooth, bottom A -> Y -> arc -> Y' -> A'), the groove
+// rings left and right (core-rings + 1 radial x groove / 2, one side bent at Y), and the ring
+// under the spline (core-rings x tooth - 2, between the hexagon and the arc through Y, Y').
+void mesh_shaft_c3d28(Mesh& mesh, const std::string& type, const SplineMesh& m, int k,
+                      const AxialSegment& seg) {
+  const double centre = k * kPitch, half = 0.5 * kPitch, c = m.clearance;
+  const double root = kRootRadius, top = kRootRadius + c;
+  const int q = m.core_rings + 1, half_groove = m.groove / 2, inner = m.tooth - 2;
+  const SectionCurve side = hexagon_side(m.core, k);
+  const double u_d = static_cast<double>(half_groove) / (m.tooth + m.groove - 2);
+  const Vec3 V0 = side(0), D = side(u_d), D1 = side(1 - u_d), V1 = side(1);
+  const double a = centre - flank(root), a1 = centre + flank(root);
+  const double step = 2 * flank(top) / m.tooth;
+  const double y = centre - flank(top) + step, y1 = centre + flank(top) - step;
+  // Depth of Y below the root circle: the strip element tapers from its 0.1 flank to its side
+  // B2 Y, and the groove element's angle at A opens towards 180 degrees as Y rises. Three
+  // clearances balance the two (min det J ratio of the coarse test mesh 0.25 at the strip element,
+  // 0.09 at a depth of 1, 0.02 with a 45 degree diagonal). At most half-way to the hexagon.
+  const double hexagon_at_y = m.core * std::cos(kPi / 6) / std::cos(y - centre);
+  const double depth = std::min(3 * c, 0.5 * (root - hexagon_at_y));
+  const Vec3 A = polar(root, a), A1 = polar(root, a1);
+  const Vec3 Y = polar(root - depth, y), Y1 = polar(root - depth, y1);
+  const auto bent_side = [q](const Vec3& from, const Vec3& bend, const Vec3& to) {
+    std::vector<Vec3> points;
+    for (int i = 0; i < q; ++i) {
+      const double t = static_cast<double>(i) / (q - 1);
+      points.push_back({from[0] + t * (bend[0] - from[0]), from[1] + t * (bend[1] - from[1]), 0});
+    }
+    points.push_back(to);
+    return polyline(points);
+  };
+  const auto spec = [&](int radial, int across) {
+    return BlockSpec{type, {radial, across, seg.rows}, {1, 1, seg.grading}, "SHAFT"};
+  };
+  mesh_block(mesh,
+             coons_block([=](double u) { return side(u * u_d); }, arc(root, centre - half, a),
+                         line(V0, polar(root, centre - half)), bent_side(D, Y, A), seg),
+             spec(q, half_groove));
+  mesh_block(
+      mesh,
+      coons_block([=](double u) { return side(1 - u_d + u * u_d); }, arc(root, a1, centre + half),
+                  bent_side(D1, Y1, A1), line(V1, polar(root, centre + half)), seg),
+      spec(q, half_groove));
+  if (inner > 0)
+    mesh_block(mesh,
+               curve_ring([=](double u) { return side(u_d + u * (1 - 2 * u_d)); },
+                          arc(root - depth, y, y1), seg),
+               spec(q - 1, inner));
+  const double first = 1.0 / m.tooth;
+  const SectionCurve bottom = [=](double u) {
+    if (u <= first) return line(A, Y)(u / first);
+    if (u >= 1 - first) return line(Y1, A1)((u - (1 - first)) / first);
+    return arc(root - depth, y, y1)((u - first) / (1 - 2 * first));
+  };
+  mesh_block(mesh, curve_ring(bottom, arc(top, centre - flank(top), centre + flank(top)), seg),
+             spec(1, m.tooth));
+}
+
 void mesh_pitch(Mesh& mesh, const std::string& type, const SplineMesh& m, int k,
-                const AxialSegment& seg, bool flange) {
+                const AxialSegment& seg, bool flange, bool c3d28) {
   const double centre = k * kPitch, c = m.clearance;
   const double tip = kTipRadius, root = kRootRadius;
   const auto spline_lo = [centre](double rho) { return centre - flank(rho); };
@@ -76,8 +160,9 @@ void mesh_pitch(Mesh& mesh, const std::string& type, const SplineMesh& m, int k,
   const auto block = [&](const BlockMap& map, int radial, int across, const char* elset) {
     return mesh_block(mesh, map, {type, {radial, across, seg.rows}, {1, 1, 1}, elset});
   };
-  // The spline: the strip facing the gap under the hub's tooth tip, then the contact rows.
-  block(polar_block(root, root + c, spline_lo, spline_hi, seg), 1, m.tooth, "SHAFT");
+  // The spline: the strip facing the gap under the hub's tooth tip (C3D28: mesh_shaft_c3d28),
+  // then the contact rows.
+  if (!c3d28) block(polar_block(root, root + c, spline_lo, spline_hi, seg), 1, m.tooth, "SHAFT");
   block(polar_block(root + c, tip, spline_lo, spline_hi, seg), m.flank_rows, m.tooth, "SHAFT");
   // The hub's tooth in the groove: contact rows, then the strip beyond the spline tip.
   block(polar_block(root + c, tip, groove_lo, groove_hi, seg), m.flank_rows, m.groove, "HUB");
@@ -91,24 +176,30 @@ void mesh_pitch(Mesh& mesh, const std::string& type, const SplineMesh& m, int k,
   const auto ring_lo = [=](double rho) { return centre - sector(rho); };
   const auto ring_hi = [=](double rho) { return centre + sector(rho); };
   const auto ring_end = [=](double rho) { return centre + kPitch - sector(rho); };
-  block(polar_block(inner, kArmRadius, ring_lo, ring_hi, seg), m.hub_rings, m.tooth, "HUB");
-  block(polar_block(inner, kArmRadius, ring_hi, ring_end, seg), m.hub_rings, m.groove, "HUB");
+  // Both sides of every sector line (C3D28: the hub's layer closes through them).
+  const auto sectors = [&](const Block& over_spline, const Block& over_groove) {
+    if (!c3d28) return;
+    for (const Block* b : {&over_spline, &over_groove})
+      for (int end : {-1, +1}) mesh.add_to_surface(kHubSectors, b->side_faces(1, end));
+  };
+  const Block over_spline =
+      block(polar_block(inner, kArmRadius, ring_lo, ring_hi, seg), m.hub_rings, m.tooth, "HUB");
+  const Block over_groove =
+      block(polar_block(inner, kArmRadius, ring_hi, ring_end, seg), m.hub_rings, m.groove, "HUB");
+  sectors(over_spline, over_groove);
   if (!flange) return;
   const Block a = block(polar_block(kArmRadius, kFlangeRadius, ring_lo, ring_hi, seg),
                         m.flange_rings, m.tooth, "HUB");
   const Block b = block(polar_block(kArmRadius, kFlangeRadius, ring_hi, ring_end, seg),
                         m.flange_rings, m.groove, "HUB");
+  sectors(a, b);
   mesh.add_to_surface("FLANGE_RIM", a.side_faces(0, +1));
   mesh.add_to_surface("FLANGE_RIM", b.side_faces(0, +1));
 }
 
 BuildResult spline_joint(const BuilderParams& p, const ElementRegistry& registry) {
   const std::string fam = family(p, kFamilies);
-  if (fam == "C3D28")
-    p.fail(
-        "--element C3D28: a C3D28 flank layer cannot be closed (docs/mesher.md): the contact "
-        "flank ends at the 0.1 strip of the spline root, whose neighbour in the concave root "
-        "corner has no free face; use C3D21");
+  const bool c3d28 = fam == "C3D28";
   SplineMesh m;
   m.tooth = p.count("tooth", 2);
   m.groove = p.count("groove", 2);
@@ -138,18 +229,33 @@ BuildResult spline_joint(const BuilderParams& p, const ElementRegistry& registry
   const AxialSegment arm{kHubStart, kFlangeStart, m.arm_rows, 1.0};
   const AxialSegment flange{kFlangeStart, kShaftLength, m.flange_rows, 1.0};
   for (const AxialSegment& seg : {shaft_seg, arm, flange}) {
-    mesh_hexagon_core(mesh, type, m.core, around, seg, "SHAFT");
+    mesh_hexagon_core(mesh, type, m.core, c3d28 ? around - 2 : around, seg, "SHAFT");
     for (int k = 0; k < kSplines; ++k) {
-      mesh_block(mesh, curve_ring(hexagon_side(m.core, k), root_arc(k, m), seg),
-                 {type, {m.core_rings, around, seg.rows}, {1, 1, seg.grading}, "SHAFT"});
-      if (seg.z0 >= kHubStart) mesh_pitch(mesh, type, m, k, seg, seg.z0 >= kFlangeStart);
+      if (c3d28)
+        mesh_shaft_c3d28(mesh, type, m, k, seg);
+      else
+        mesh_block(mesh, curve_ring(hexagon_side(m.core, k), root_arc(k, m), seg),
+                   {type, {m.core_rings, around, seg.rows}, {1, 1, seg.grading}, "SHAFT"});
+      if (seg.z0 >= kHubStart) mesh_pitch(mesh, type, m, k, seg, seg.z0 >= kFlangeStart, c3d28);
     }
   }
   merge_coincident_nodes(mesh);
   split_bodies(mesh, "HUB", "HUB_FLANKS", "SHAFT_FLANKS");
   mesh.add_to_element_set("EALL", mesh.element_sets.at("SHAFT"));
   mesh.add_to_element_set("EALL", mesh.element_sets.at("HUB"));
-  convert_contact_layers(mesh, fam, {"HUB_FLANKS", "SHAFT_FLANKS"});
+  if (c3d28) {
+    // The shaft's layer closes by itself (flanks, root strips, groove bottoms); the hub's through
+    // the sector lines, converted on both sides with the shared face as S1.
+    convert_contact_layers(mesh, fam, {"SHAFT_FLANKS"});
+    const std::string work = "__HUB_LAYER";
+    mesh.surfaces[work] = mesh.surfaces.at("HUB_FLANKS");
+    mesh.add_to_surface(work, mesh.surfaces.at(kHubSectors));
+    mesh.surfaces.erase(kHubSectors);
+    convert_layer_to_c3d28(mesh, work);
+    mesh.surfaces.erase(work);
+  } else {
+    convert_contact_layers(mesh, fam, {"HUB_FLANKS", "SHAFT_FLANKS"});
+  }
 
   const double E = p.positive("young"), nu = p.number("poisson");
   r.model = contact_model(

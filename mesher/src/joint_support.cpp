@@ -1,5 +1,6 @@
 #include "joint_support.hpp"
 
+#include <algorithm>
 #include <cmath>
 #include <map>
 
@@ -58,6 +59,31 @@ BlockMap polar_block(double rho0, double rho1, const std::function<double(double
     const double a0 = lo(rho), a1 = hi(rho);
     const double angle = a0 + (a1 - a0) * 0.5 * (xi[1] + 1);
     return Vec3{rho * std::cos(angle), rho * std::sin(angle), axial(segment, xi[2])};
+  };
+}
+
+BlockMap coons_block(const SectionCurve& inner, const SectionCurve& outer, const SectionCurve& left,
+                     const SectionCurve& right, const AxialSegment& segment) {
+  const Vec3 i0 = inner(0), i1 = inner(1), o0 = outer(0), o1 = outer(1);
+  return [=](const Vec3& xi) {
+    const double s = 0.5 * (xi[0] + 1), u = 0.5 * (xi[1] + 1);
+    const Vec3 a = inner(u), b = outer(u), l = left(s), r = right(s);
+    Vec3 p{0, 0, axial(segment, xi[2])};
+    for (int d = 0; d < 2; ++d)
+      p[d] =
+          (1 - s) * a[d] + s * b[d] + (1 - u) * l[d] + u * r[d] -
+          ((1 - s) * (1 - u) * i0[d] + (1 - s) * u * i1[d] + s * (1 - u) * o0[d] + s * u * o1[d]);
+    return p;
+  };
+}
+
+SectionCurve polyline(std::vector<Vec3> points) {
+  return [points = std::move(points)](double u) {
+    const int n = static_cast<int>(points.size()) - 1;
+    const int i = std::min(n - 1, std::max(0, static_cast<int>(std::floor(u * n))));
+    const double t = u * n - i;
+    const Vec3 &a = points[i], &b = points[i + 1];
+    return Vec3{a[0] + t * (b[0] - a[0]), a[1] + t * (b[1] - a[1]), 0.0};
   };
 }
 

@@ -50,6 +50,16 @@ BlockMap curve_ring(const SectionCurve& inner, const SectionCurve& outer,
 BlockMap polar_block(double rho0, double rho1, const std::function<double(double)>& lo,
                      const std::function<double(double)>& hi, const AxialSegment& segment);
 
+// The block bounded by four section curves (transfinite / Coons interpolation): xi runs from
+// inner(u) to outer(u), eta is u, the sides u = 0 and u = 1 are left(s) and right(s) (s = 0 on
+// inner, 1 on outer); zeta along z. Unlike curve_ring, the sides may be bent (a polyline with a
+// corner at an element node), which the C3D28 spline-root transition needs.
+BlockMap coons_block(const SectionCurve& inner, const SectionCurve& outer, const SectionCurve& left,
+                     const SectionCurve& right, const AxialSegment& segment);
+
+// The polyline through `points` with point i at parameter i / (points - 1), linear in between.
+SectionCurve polyline(std::vector<Vec3> points);
+
 // Tangential nodal forces of a uniform shear traction on the faces of a rim (a cylinder about the
 // z axis): node i gets k A_i along e_theta (A_i = TElement::nodal_areas, summed over the faces),
 // with k chosen so that the moment about z, sum (x F_y - y F_x) = sum k A_i r_i, equals `torque`

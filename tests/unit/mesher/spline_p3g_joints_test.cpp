@@ -1,9 +1,10 @@
 // The shaft-hub joint builders spline-joint (SPEC §4.4) and p3g-joint (SPEC §4.5), every element
-// family on coarse meshes: positive Jacobians, conforming interior faces (C3D21/C3D28 layers and
-// their C3D20 neighbours included), no free nodes, the analytic volume of each body, non-empty
-// sets, the zero-thickness contact interface (one-to-one coincident nodes, none shared), the
-// contact face as S1, the torque of the rim forces and a deck that reads back; then the SPEC
-// element counts of the default meshes (counted, not written) and the parameter errors.
+// family on coarse meshes (the spline's C3D28 also on a finer one): positive Jacobians, conforming
+// interior faces (C3D21/C3D28 layers and their C3D20 neighbours included) and C3D28 GLL edges, no
+// free nodes, the analytic volume of each body, non-empty sets, the zero-thickness contact
+// interface (one-to-one coincident nodes, none shared), the contact face as S1, the torque of the
+// rim forces and a deck that reads back; then the SPEC element counts of the default meshes
+// (counted, not written), the default C3D28 spline and the parameter errors.
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
@@ -106,7 +107,9 @@ struct JointCase {
 };
 
 std::ostream& operator<<(std::ostream& os, const JointCase& c) {
-  return os << c.builder << " " << c.family;
+  os << c.builder << " " << c.family;
+  for (const auto& [k, v] : c.args) os << " --" << k << " " << v;
+  return os;
 }
 
 constexpr double kDeg = kPi / 180;
@@ -145,22 +148,70 @@ std::vector<JointCase> cases() {
   const double spline_shaft_volume = kPi * d * d / 4 * 80 + spline_area(D, d, w) * 40;
   const double spline_hub_volume =
       kPi * (40 * 40 + 77.5 * 77.5) * 20 - spline_area(D + 2 * c, d + 2 * c, w) * 40;
-  for (const char* fam : {"C3D8", "C3D20", "C3D14", "C3D21"})
+  // C3D28 (docs/mesher.md): the 0.1 root strip of each spline runs on over the round part to
+  // the shaft's end (a ridge of root + c between the flank lines), so the round part's outline is
+  // the groove bottoms (120 long) and the ridge tops (80 long).
+  std::vector<Boundary> ridged_shaft;
+  for (int k = 0; k < 6; ++k) {
+    const double m = 60 * k * kDeg;
+    std::vector<double> g, r, t;
+    add_equal(g, m + flank(d / 2), m + 60 * kDeg - flank(d / 2), groove);
+    add_equal(r, m - flank(d / 2 + c), m + flank(d / 2 + c), tooth);
+    add_equal(t, m - flank(D / 2), m + flank(D / 2), tooth);
+    ridged_shaft.push_back(arc(d / 2, g, 120));
+    ridged_shaft.push_back(arc(d / 2 + c, r, 80));
+    ridged_shaft.push_back(arc(D / 2, t, 40));
+  }
+  const double ridges = 6 * (band(d / 2 + c, w / 2) - band(d / 2, w / 2)) * 80;
+  const std::map<std::string, std::string> coarse_spline = {
+      {"tooth", "2"},       {"groove", "2"},     {"flank-rows", "1"}, {"arm-rows", "1"},
+      {"flange-rows", "1"}, {"shaft-rows", "2"}, {"hub-rings", "1"},  {"flange-rings", "2"}};
+  for (const char* fam : {"C3D8", "C3D20", "C3D14", "C3D21", "C3D28"}) {
+    const bool ridged = std::string(fam) == "C3D28";
+    out.push_back({"spline-joint", fam, coarse_spline,
+                   12 * 1 * 2,  // 12 flanks x 1 radial row x 2 axial rows
+                   spline_shaft_volume + (ridged ? ridges : 0.0), spline_hub_volume,
+                   ridged ? ridged_shaft : spline_shaft, spline_hub});
+  }
+  // A finer C3D28 spline: 4 elements across a spline (the ring under it between the two
+  // transitions), 2 core rings, 2 contact rows.
+  {
+    std::vector<Boundary> shaft4, hub4;
+    for (int k = 0; k < 6; ++k) {
+      const double m = 60 * k * kDeg;
+      std::vector<double> g, r, t, ht, hg;
+      add_equal(g, m + flank(d / 2), m + 60 * kDeg - flank(d / 2), 4);
+      add_equal(r, m - flank(d / 2 + c), m + flank(d / 2 + c), 4);
+      add_equal(t, m - flank(D / 2), m + flank(D / 2), 4);
+      add_equal(ht, m + flank(d / 2 + c), m + 60 * kDeg - flank(d / 2 + c), 4);
+      add_equal(hg, m - flank(D / 2 + c), m + flank(D / 2 + c), 4);
+      shaft4.push_back(arc(d / 2, g, 120));
+      shaft4.push_back(arc(d / 2 + c, r, 80));
+      shaft4.push_back(arc(D / 2, t, 40));
+      hub4.push_back(arc(d / 2 + c, ht, 40));
+      hub4.push_back(arc(D / 2 + c, hg, 40));
+    }
+    std::vector<double> even8;
+    add_equal(even8, 0, 2 * kPi, 6 * 8);
+    hub4.push_back(arc(40, even8, 20));
+    hub4.push_back(arc(77.5, even8, 20));
     out.push_back({"spline-joint",
-                   fam,
-                   {{"tooth", "2"},
-                    {"groove", "2"},
-                    {"flank-rows", "1"},
+                   "C3D28",
+                   {{"tooth", "4"},
+                    {"groove", "4"},
+                    {"flank-rows", "2"},
+                    {"core-rings", "2"},
                     {"arm-rows", "1"},
                     {"flange-rows", "1"},
                     {"shaft-rows", "2"},
                     {"hub-rings", "1"},
                     {"flange-rings", "2"}},
-                   12 * 1 * 2,  // 12 flanks x 1 radial row x 2 axial rows
-                   spline_shaft_volume,
+                   12 * 2 * 2,
+                   spline_shaft_volume + ridges,
                    spline_hub_volume,
-                   spline_shaft,
-                   spline_hub});
+                   shaft4,
+                   hub4});
+  }
 
   // P3G, 24 elements around at equal steps of v; the Ø65 nodes on the rays through the polygon
   // nodes, Ø80 half-way to equal angles, Ø155 at equal angles (docs/mesher.md).
@@ -222,6 +273,37 @@ std::set<int> surface_nodes(const Model& model, const ElementRegistry& registry,
   return nodes;
 }
 
+// Edge conformity of the C3D28 elements, which the face check does not see: an element that
+// shares only an edge with a C3D28 (no face) must carry that edge's two GLL nodes too when the
+// edge is a bottom edge (C3D28 nodes 17-24, 1-based, on the edges 1-2, 2-3, 3-4, 4-1). Returns the
+// number of element pairs that do not.
+int gll_edge_mismatches(const Model& model) {
+  std::map<std::pair<int, int>, std::vector<int>> by_edge;  // corner pair -> elements with it
+  for (int e = 0; e < model.element_count(); ++e) {
+    const int* n = model.element_nodes(e);
+    for (int i = 0; i < 8; ++i)
+      for (int j = i + 1; j < 8; ++j)
+        by_edge[{std::min(n[i], n[j]), std::max(n[i], n[j])}].push_back(e);
+  }
+  static constexpr int kEdge[4][2] = {{0, 1}, {1, 2}, {2, 3}, {3, 0}};
+  int bad = 0;
+  for (int e = 0; e < model.element_count(); ++e) {
+    if (model.elements[e].type != "C3D28") continue;
+    const int* n = model.element_nodes(e);
+    for (int k = 0; k < 4; ++k) {
+      const int a = n[kEdge[k][0]], b = n[kEdge[k][1]];
+      for (int other : by_edge[{std::min(a, b), std::max(a, b)}]) {
+        const int* o = model.element_nodes(other);
+        const int* end = o + model.elements[other].node_count;
+        const bool has =
+            std::find(o, end, n[16 + 2 * k]) != end && std::find(o, end, n[17 + 2 * k]) != end;
+        bad += has ? 0 : 1;
+      }
+    }
+  }
+  return bad;
+}
+
 double torque_about_z(const Model& model, const std::vector<ConcentratedLoad>& loads, Vec3* force) {
   double m = 0.0;
   *force = {0, 0, 0};
@@ -251,6 +333,7 @@ TEST_P(JointBuilderTest, MeshInterfaceTorqueAndDeck) {
   // Jacobians (assess_quality throws naming the element for det J <= 0 at a Gauss point).
   EXPECT_GT(mesher::assess_quality(model, registry).min_jacobian_ratio, 0.0);
   EXPECT_EQ(test::conformity_problem(model, registry), "");
+  EXPECT_EQ(gll_edge_mismatches(model), 0);
   EXPECT_EQ(test::free_nodes(model), 0);
   const double shaft = set_volume(model, registry, "SHAFT");
   const double hub = set_volume(model, registry, "HUB");
@@ -385,14 +468,28 @@ TEST_F(JointDefaults, BadParametersAreNamed) {
   EXPECT_NE(message("p3g-joint", {{"core", "28"}}).find("--core"), std::string::npos);
 }
 
-// The spline's C3D28 flank layer cannot be closed: a named refusal, not a crash.
-TEST_F(JointDefaults, SplineRefusesC3d28) {
-  try {
-    mesher::run_builder("spline-joint", {{"element", "C3D28"}}, elements_.registry);
-    FAIL() << "no error";
-  } catch (const InputError& e) {
-    EXPECT_NE(std::string(e.what()).find("C3D28 flank layer cannot be closed"), std::string::npos)
-        << e.what();
+// SPEC §4.4 with C3D28 at the default density: the layers close (conforming, no free nodes,
+// positive Jacobians) with SPEC's 384 contact faces, all C3D28 with the contact face as S1. The hub
+// keeps its 3504 elements; the shaft's C3D28 section (docs/mesher.md) has 2 elements fewer per
+// hexagon side (core 3 x 8 x 8) and per pitch the groove rings 2 x (2 x 3), the ring under the
+// spline 1 x 2 and the strip 4: 300 per axial row, plus 6 x 2 x 4 contact-row elements per hub row:
+// 22 x 300 + 8 x 48 = 6984 (the C3D21 shaft: 8496).
+TEST_F(JointDefaults, SplineC3d28LayersClose) {
+  const auto r = mesher::run_builder("spline-joint", {{"element", "C3D28"}}, elements_.registry);
+  const Model& model = r.model;
+  EXPECT_EQ(test::conformity_problem(model, elements_.registry), "");
+  EXPECT_EQ(gll_edge_mismatches(model), 0);
+  EXPECT_EQ(test::free_nodes(model), 0);
+  EXPECT_GT(mesher::assess_quality(model, elements_.registry).min_jacobian_ratio, 0.0);
+  EXPECT_EQ(model.elsets.at("HUB").elements.size(), 3504u);
+  EXPECT_EQ(model.elsets.at("SHAFT").elements.size(), 6984u);
+  for (const char* name : {"HUB_FLANKS", "SHAFT_FLANKS"}) {
+    const Surface& s = model.surfaces.at(name);
+    EXPECT_EQ(s.faces.size(), 192u) << name;
+    for (const SurfaceFace& f : s.faces) {
+      EXPECT_EQ(model.elements[f.element].type, "C3D28");
+      EXPECT_EQ(f.face, 1);
+    }
   }
 }
 
