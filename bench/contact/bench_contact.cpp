@@ -1,12 +1,14 @@
 // Contact benchmark: for each model, the contact iterations per increment and the wall time of the
 // whole analysis in units of one linear solve (assembly + ordering + factorisation + one
 // forward/back substitution of the same stiffness). Prints one CSV line per model.
+#include <algorithm>
 #include <chrono>
 #include <cstdio>
 #include <map>
 #include <string>
 #include <vector>
 
+#include "compliance_ab.hpp"
 #include "contact_spec_models.hpp"
 #include "hex_model_builder.hpp"
 #include "styk/mesher/builders.hpp"
@@ -19,12 +21,14 @@ using namespace styk;
 // Collects the iteration counts of the converged increments from the progress lines.
 class Recorder : public ProgressSink {
  public:
+  explicit Recorder(bool echo) : echo_(echo) {}
   void begin(const std::string&) override {}
   void end(const std::string& phase, double seconds) override {
     seconds_[phase] += seconds;
     ++calls_[phase];
   }
   void info(const std::string& line) override {
+    if (echo_) std::fprintf(stderr, "%s\n", line.c_str());
     const std::size_t at = line.find("converged in ");
     if (at != std::string::npos) iterations.push_back(std::stoi(line.substr(at + 13)));
   }
@@ -41,10 +45,24 @@ class Recorder : public ProgressSink {
  private:
   std::map<std::string, double> seconds_;
   std::map<std::string, int> calls_;
+  bool echo_ = false;
 };
 
-void run(const char* name, const Model& model, const ElementRegistry& registry) {
-  Recorder recorder;
+// Command line: `--log` echoes the solver's progress lines (every contact iteration) to stderr;
+// `--compliance` times the two compliance paths instead (compliance_ab.hpp); any other argument
+// is a model name to run (default: all).
+struct Options {
+  bool log = false;
+  bool compliance = false;
+  std::vector<std::string> only;
+  bool wants(const std::string& name) const {
+    return only.empty() || std::find(only.begin(), only.end(), name) != only.end();
+  }
+};
+
+void run(const char* name, const Model& model, const ElementRegistry& registry,
+         const Options& options) {
+  Recorder recorder(options.log);
   AnalysisReport report;
   const auto start = std::chrono::steady_clock::now();
   const Results results = run_static_analysis(model, registry, SolveOptions{}, &recorder, &report);
@@ -71,19 +89,41 @@ void run(const char* name, const Model& model, const ElementRegistry& registry) 
 
 }  // namespace
 
-int main() {
+int main(int argc, char** argv) {
+  Options options;
+  for (int i = 1; i < argc; ++i) {
+    if (std::string(argv[i]) == "--log")
+      options.log = true;
+    else if (std::string(argv[i]) == "--compliance")
+      options.compliance = true;
+    else
+      options.only.emplace_back(argv[i]);
+  }
   const auto full = styk::test::registry_with_plugins();
-  std::printf(
-      "model,elements,dofs,contact_nodes,increments,mean_iterations,max_iterations,"
-      "wall_s,linear_solve_s,compliance_s,wall_over_linear\n");
-  run("beams_mu0.2", test::two_cantilevers_model(test::coulomb(0.2)), full->registry);
-  run("beams_mu10", test::two_cantilevers_model(test::coulomb(10.0)), full->registry);
-  run("punch_mu0.04", test::punch_model(test::coulomb(0.04)), full->registry);
-  run("punch_mu0.75", test::punch_model(test::coulomb(0.75)), full->registry);
-  run("shrink_fit_2steps", test::shrink_fit_model(52.5), full->registry);
+  if (options.compliance)
+    std::printf(
+        "model,dofs,columns,dense_blocks_s,restricted_1_thread_s,restricted_2_threads_s,"
+        "speedup_1,speedup_2,max_rel_difference\n");
+  else
+    std::printf(
+        "model,elements,dofs,contact_nodes,increments,mean_iterations,max_iterations,"
+        "wall_s,linear_solve_s,compliance_s,wall_over_linear\n");
+  const auto maybe = [&](const char* name, auto&& build) {
+    if (!options.wants(name)) return;
+    if (options.compliance)
+      bench::compliance_ab(name, build(), full->registry);
+    else
+      run(name, build(), full->registry, options);
+  };
+  maybe("beams_mu0.2", [] { return test::two_cantilevers_model(test::coulomb(0.2)); });
+  maybe("beams_mu10", [] { return test::two_cantilevers_model(test::coulomb(10.0)); });
+  maybe("beams_mu100", [] { return test::two_cantilevers_model(test::coulomb(100.0)); });
+  maybe("punch_mu0.04", [] { return test::punch_model(test::coulomb(0.04)); });
+  maybe("punch_mu0.75", [] { return test::punch_model(test::coulomb(0.75)); });
+  maybe("shrink_fit_2steps", [] { return test::shrink_fit_model(52.5); });
   // `styk mesh shrink-fit` model A at its default density (625 node pairs): heating with
   // mu = 0.2, then 52.5 and 72 MPa; the sleeve held axially by friction alone.
-  run("shrink_fit_A_3steps", mesher::run_builder("shrink-fit", {}, full->registry).model,
-      full->registry);
+  maybe("shrink_fit_A_3steps",
+        [&] { return mesher::run_builder("shrink-fit", {}, full->registry).model; });
   return 0;
 }

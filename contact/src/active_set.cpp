@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
+#include <functional>
 #include <set>
 
 #include <Eigen/Cholesky>
@@ -262,6 +263,56 @@ BodyHold body_hold(const LinearContactSystem& system, const Setup& setup,
   return out;
 }
 
+// |lambda_t| / lambda_n of constraint j at x (scaled variables: 1 on the cone); -1 when open.
+double friction_ratio(const Setup& setup, const Eigen::VectorXd& lambda, int j) {
+  const double ln = lambda[3 * j];
+  if (!(ln > 0.0)) return -1.0;
+  double lt2 = 0.0;
+  for (int c = 1; c < 3; ++c)
+    if (setup.live[j][c]) lt2 += lambda[3 * j + c] * lambda[3 * j + c];
+  return std::sqrt(lt2) / ln;
+}
+
+// The stick/slip front moves a few nodes per iteration: a node that starts to slip sheds its
+// tangential force on its sticking neighbours, which leave the cone in the next iteration. While
+// the front only advances (sticking nodes turned to slip, none back), a sticking node whose ratio
+// |lambda_t| / lambda_n grew from `before` to `now` and would pass 1 after `lookahead` more such
+// steps is sent to slip at once. Returns the nodes switched.
+std::vector<int> anticipate_front(const std::vector<ContactConstraint>& constraints,
+                                  const Setup& setup, const std::vector<NodeStatus>& solved,
+                                  const Iterate& before, const Iterate& now, double lookahead,
+                                  std::vector<NodeStatus>& status) {
+  std::vector<int> switched;
+  if (!(lookahead > 0.0)) return switched;
+  std::size_t advanced = 0;
+  for (std::size_t j = 0; j < status.size(); ++j) {
+    if (solved[j] == NodeStatus::Slip && status[j] == NodeStatus::Stick) return switched;
+    if (solved[j] == NodeStatus::Stick && status[j] == NodeStatus::Slip) ++advanced;
+  }
+  std::vector<std::pair<double, int>> candidates;  // (predicted ratio, node)
+  for (std::size_t j = 0; j < status.size(); ++j) {
+    if (solved[j] != NodeStatus::Stick || status[j] != NodeStatus::Stick) continue;
+    if (constraints[j].law.kind == FrictionLaw::Kind::Tied ||
+        !(setup.live[j][1] || setup.live[j][2]))
+      continue;
+    const int k = static_cast<int>(j);
+    const double ratio_before = friction_ratio(setup, before.lambda, k);
+    const double ratio_now = friction_ratio(setup, now.lambda, k);
+    if (ratio_before < 0.0 || ratio_now < 0.0 || !(ratio_now > ratio_before)) continue;
+    const double predicted = ratio_now + lookahead * (ratio_now - ratio_before);
+    if (predicted > 1.0) candidates.emplace_back(predicted, k);
+  }
+  // The front moves about as many nodes per iteration as it just did: no more than that many
+  // ahead, the likeliest first (a global redistribution, as in a shrink fit's push, raises many
+  // ratios at once and would otherwise send far too many).
+  std::sort(candidates.begin(), candidates.end(), std::greater<>());
+  for (std::size_t i = 0; i < candidates.size() && i < advanced; ++i) {
+    status[candidates[i].second] = NodeStatus::Slip;
+    switched.push_back(candidates[i].second);
+  }
+  return switched;
+}
+
 bool any_slipping(const std::vector<NodeStatus>& status) {
   return std::find(status.begin(), status.end(), NodeStatus::Slip) != status.end();
 }
@@ -320,6 +371,12 @@ IncrementOutcome solve_increment(const std::vector<ContactConstraint>& constrain
   std::vector<std::vector<int>> changed_history;
   double damping = 1.0;
   bool closed_touching = !trust_predictor;
+  bool front_receded = false;  // some node went from slip back to stick in this increment
+  // From the elastic trial (everything closed sticks) the slip front can only advance; from an
+  // extrapolated predictor it may have to move either way. Not in the first iteration either:
+  // the growth from the predictor (the last step's solution) to the trial is the load step's,
+  // not the front's. Both cost the builder's shrink-fit model A iterations (bench README).
+  const bool from_elastic_trial = extrapolation == 0.0;
   for (int iteration = 1; iteration <= options.max_iterations; ++iteration) {
     const double eps = 1e-12 * force_scale(at);
     Iterate next;
@@ -377,6 +434,19 @@ IncrementOutcome solve_increment(const std::vector<ContactConstraint>& constrain
       new_status[j] = classify(p);
       residual = std::max(residual, complementarity_residual(p).cwiseAbs().maxCoeff());
       if (new_status[j] != status[j]) changed.push_back(j);
+    }
+    // Once a node has come back from slip to stick the front has found its place: anticipating
+    // further would only make the nodes at the front flip.
+    for (int j = 0; j < m; ++j)
+      if (status[j] == NodeStatus::Slip && new_status[j] == NodeStatus::Stick) front_receded = true;
+    const std::vector<int> anticipated =
+        damping < 1.0 || front_receded || !from_elastic_trial || iteration == 1
+            ? std::vector<int>{}
+            : anticipate_front(constraints, setup, status, at, next, options.front_lookahead,
+                               new_status);
+    changed.insert(changed.end(), anticipated.begin(), anticipated.end());
+    record.anticipated = static_cast<int>(anticipated.size());
+    for (int j = 0; j < m; ++j) {
       switch (new_status[j]) {
         case NodeStatus::Open:
           ++record.open;

@@ -292,6 +292,9 @@ Results run_contact_analysis(const Model& model, const ElementRegistry& registry
         phases.info(where + format(": iteration %.0f: %.0f stick, ", r.iteration, r.stick) +
                     format("%.0f slip, %.0f open, ", r.slip, r.open) +
                     format("%.0f changes, residual %.2e", r.changes, r.residual) +
+                    (r.anticipated > 0
+                         ? format(" (%.0f of them ahead of the slip front)", r.anticipated)
+                         : "") +
                     (r.cycle ? format(", cycle detected: step length %.3g", r.damping) : "") +
                     (r.regularised ? ", held by slipping nodes alone: slip springs" : ""));
       };

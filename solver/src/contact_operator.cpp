@@ -59,6 +59,33 @@ Eigen::MatrixXd ContactOperator::compliance(LinearSolver& solver, int active_dof
   for (int i = 0; i < rows(); ++i)
     if (row_used(i)) columns.push_back(i);
   Eigen::MatrixXd S = Eigen::MatrixXd::Zero(rows(), rows());
+  if (kinematic.empty()) {
+    // S_ij = B_i K^-1 B_j^T needs K^-1 B_j^T only at the dofs B touches: sparse right-hand sides,
+    // few wanted rows (LinearSolver::solve_sparse_columns).
+    std::vector<LinearSolver::SparseColumn> F(columns.size());
+    std::vector<int> local(active_dofs, -1), wanted;
+    for (std::size_t j = 0; j < columns.size(); ++j)
+      for (int p = ptr_[columns[j]]; p < ptr_[columns[j] + 1]; ++p) {
+        F[j].dof.push_back(dof_[p]);
+        F[j].value.push_back(value_[p]);
+        if (local[dof_[p]] < 0) {
+          local[dof_[p]] = static_cast<int>(wanted.size());
+          wanted.push_back(dof_[p]);
+        }
+      }
+    solver.solve_sparse_columns(F, wanted, active_dofs, block,
+                                [&](const std::vector<int>& solved, const Eigen::MatrixXd& X) {
+                                  for (std::size_t j = 0; j < solved.size(); ++j)
+                                    for (int i : columns) {
+                                      double sum = 0.0;
+                                      for (int p = ptr_[i]; p < ptr_[i + 1]; ++p)
+                                        sum += value_[p] * X(local[dof_[p]], j);
+                                      S(i, columns[solved[j]]) = sum;
+                                    }
+                                });
+    S = 0.5 * (S + S.transpose()).eval();
+    return S;
+  }
   const auto n = static_cast<std::size_t>(active_dofs);
   for (std::size_t first = 0; first < columns.size(); first += block) {
     const int count = static_cast<int>(std::min<std::size_t>(block, columns.size() - first));

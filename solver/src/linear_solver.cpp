@@ -1,5 +1,7 @@
 #include "linear_solver.hpp"
 
+#include <algorithm>
+
 namespace styk::solver_detail {
 
 DofPartition partition_dofs(int active_dofs, const std::vector<int>& prescribed) {
@@ -51,6 +53,29 @@ std::vector<double> LinearSolver::solve_homogeneous(const std::vector<double>& F
     std::copy(x.begin(), x.end(), X.begin() + j * rows);
   }
   return X;
+}
+
+void LinearSolver::solve_sparse_columns(const std::vector<SparseColumn>& F,
+                                        const std::vector<int>& rows, int active_dofs, int block,
+                                        const ColumnBlockSink& sink) {
+  const int total = static_cast<int>(F.size());
+  const auto n = static_cast<std::size_t>(active_dofs);
+  block = std::max(block, 1);
+  for (int first = 0; first < total; first += block) {
+    const int count = std::min(block, total - first);
+    std::vector<double> dense(n * count, 0.0);
+    std::vector<int> columns(count);
+    for (int j = 0; j < count; ++j) {
+      columns[j] = first + j;
+      const SparseColumn& f = F[first + j];
+      for (std::size_t p = 0; p < f.dof.size(); ++p) dense[j * n + f.dof[p]] += f.value[p];
+    }
+    const std::vector<double> X = solve_homogeneous(dense, count);
+    Eigen::MatrixXd values(rows.size(), count);
+    for (int j = 0; j < count; ++j)
+      for (std::size_t r = 0; r < rows.size(); ++r) values(r, j) = X[j * n + rows[r]];
+    sink(columns, values);
+  }
 }
 
 }  // namespace styk::solver_detail

@@ -3,10 +3,13 @@
 // prescribed dofs that moves prescribed displacements to the right-hand side.
 #pragma once
 
+#include <functional>
 #include <memory>
 #include <stdexcept>
 #include <string>
 #include <vector>
+
+#include <Eigen/Core>
 
 #include "phase_recorder.hpp"
 #include "prepared_model.hpp"
@@ -16,9 +19,9 @@
 namespace styk::solver_detail {
 
 struct DofPartition {
-  std::vector<int> free_of_dof;   // per active dof: index among the free dofs, -1 if prescribed
-  std::vector<int> free_dofs;     // free index -> active dof
-  std::vector<int> prescribed;    // sorted active dofs with a prescribed value
+  std::vector<int> free_of_dof;  // per active dof: index among the free dofs, -1 if prescribed
+  std::vector<int> free_dofs;    // free index -> active dof
+  std::vector<int> prescribed;   // sorted active dofs with a prescribed value
   int free_count() const { return static_cast<int>(free_dofs.size()); }
 };
 
@@ -75,6 +78,24 @@ class LinearSolver {
   // active_dofs() rows; prescribed rows of X are zero. The default solves column by column;
   // a direct solver overrides it with one blocked triangular solve.
   virtual std::vector<double> solve_homogeneous(const std::vector<double>& F, int columns);
+
+  // Rows `rows` (active dofs) of X = K_ff^-1 F for sparse right-hand sides F (prescribed dofs held
+  // at zero, prescribed entries of F ignored), handed to `sink` in blocks of at most `block`
+  // columns: sink(columns, values) with `columns` the indices into F of the block and `values`
+  // rows.size() x columns.size() (prescribed rows zero). The contact compliance needs X only at
+  // the contact dofs. The default solves dense blocks with solve_homogeneous; a supernodal factor
+  // overrides it with substitutions restricted to the factor's columns the right-hand sides and
+  // the wanted rows reach. The sink may be called from several threads at once, never twice for
+  // the same column.
+  struct SparseColumn {
+    std::vector<int> dof;  // active dofs
+    std::vector<double> value;
+  };
+  using ColumnBlockSink =
+      std::function<void(const std::vector<int>& columns, const Eigen::MatrixXd& values)>;
+  virtual void solve_sparse_columns(const std::vector<SparseColumn>& F,
+                                    const std::vector<int>& rows, int active_dofs, int block,
+                                    const ColumnBlockSink& sink);
 };
 
 std::unique_ptr<LinearSolver> make_cholmod_solver(const SolverContext& context);

@@ -49,6 +49,7 @@ struct IterationRecord {
   int iteration = 0;
   int open = 0, stick = 0, slip = 0;
   int changes = 0;           // status changes against the status set the iteration solved with
+  int anticipated = 0;       // of which sticking nodes sent to slip ahead of the front
   double residual = 0.0;     // max complementarity residual / largest multiplier
   double damping = 1.0;      // step length taken (< 1 after a cycle was detected)
   bool cycle = false;        // this status set was seen before in the increment
@@ -62,6 +63,14 @@ struct ActiveSetOptions {
   // multiple of their change over it (the driver passes dt_new / dt_last within a step, 0 at a
   // step's start): exact for proportional loading, a secant guess otherwise.
   double extrapolation = 0.0;
+  // Stick/slip front anticipation, in increments that start from the elastic trial (no
+  // extrapolated predictor): while the exact classification only moves sticking nodes to
+  // slip (the front advancing), a sticking node whose friction ratio |lambda_t| / lambda_n, grown
+  // over the last iteration at the same rate `front_lookahead` more times, would leave the cone is
+  // switched to slip already, at most as many as the front just moved (0: off). A wrong guess
+  // returns to stick by the exact test, and the convergence check is the exact one, so the
+  // solution is unchanged.
+  double front_lookahead = 1.0;
 };
 
 // A body held only by contact whose contacts cannot balance the load along one of its free rigid
