@@ -7,6 +7,7 @@ add_library(styk_gui_widgets STATIC
   src/model_dialogs.cpp
   src/dialog_fields.cpp
   src/revolve_dialog.cpp
+  src/geometry_dialogs.cpp
   src/interaction_dialogs.cpp
   src/load_dialogs.cpp
   src/entry_dialogs.cpp

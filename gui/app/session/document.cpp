@@ -18,6 +18,7 @@ void Document::new_model() {
   results_path_.clear();
   path_.clear();
   history_.clear();
+  layers_ = LayerTable{};  // a new model: the user layers of the old one go
   changed(false);
 }
 
@@ -28,6 +29,7 @@ void Document::open_inp(const std::string& path) {
   results_path_.clear();
   path_ = path;
   history_.clear();
+  layers_ = LayerTable{};  // a new model: the user layers of the old one go
   changed(false);
 }
 
@@ -38,6 +40,7 @@ void Document::open_results(const std::string& path) {
   results_path_ = path;
   path_ = path;
   history_.clear();
+  layers_ = LayerTable{};  // a new model: the user layers of the old one go
   changed(true);
 }
 

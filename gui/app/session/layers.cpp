@@ -25,19 +25,32 @@ void LayerTable::rebuild(const Model& model) {
   for (const render::Layer& l : layers_) previous[l.name] = l;
 
   std::vector<render::Layer> layers;
+  // 1: claimed by a user layer, 2: by a part layer.
   std::vector<char> taken(model.elements.size(), 0);
+  for (const std::string& name : user_layers_) {
+    const ElementSet* set = model.find_elset(name);
+    if (!set) continue;
+    render::Layer layer;
+    layer.name = set->name;
+    for (int e : set->elements)
+      if (!taken[e]) layer.elements.push_back(e), taken[e] = 1;
+    if (!layer.elements.empty()) layers.push_back(std::move(layer));
+  }
+  // Sets that may be parts (user layers are not), for "a set covering the whole model".
+  std::size_t part_sets = 0;
+  for (const auto& [name, set] : model.elsets) part_sets += is_user_layer(name) ? 0 : 1;
   for (const ElementSet* set : candidate_sets(model)) {
-    if (set->elements.empty()) continue;
+    if (set->elements.empty() || is_user_layer(set->name)) continue;
     // A set covering the whole model is no part when other sets exist (e.g. EALL next to parts).
     const bool whole = set->elements.size() == model.elements.size();
     const bool overlaps = std::any_of(set->elements.begin(), set->elements.end(),
-                                      [&](int e) { return taken[e] != 0; });
-    if (overlaps || (whole && model.sections.empty() && model.elsets.size() > 1)) continue;
+                                      [&](int e) { return taken[e] == 2; });
+    if (overlaps || (whole && model.sections.empty() && part_sets > 1)) continue;
     render::Layer layer;
     layer.name = set->name;
-    layer.elements = set->elements;
-    for (int e : set->elements) taken[e] = 1;
-    layers.push_back(std::move(layer));
+    for (int e : set->elements)
+      if (!taken[e]) layer.elements.push_back(e), taken[e] = 2;
+    if (!layer.elements.empty()) layers.push_back(std::move(layer));
   }
   std::vector<int> rest;
   for (std::size_t e = 0; e < taken.size(); ++e)
@@ -57,6 +70,14 @@ void LayerTable::rebuild(const Model& model) {
     }
   }
   layers_ = std::move(layers);
+}
+
+bool LayerTable::is_user_layer(const std::string& name) const {
+  return std::find(user_layers_.begin(), user_layers_.end(), name) != user_layers_.end();
+}
+
+void LayerTable::add_user_layer(const std::string& name) {
+  if (!is_user_layer(name)) user_layers_.push_back(name);
 }
 
 render::Layer& LayerTable::find(const std::string& name) {

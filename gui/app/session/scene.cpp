@@ -49,7 +49,8 @@ void Scene::rebuild(const Document& document, const DisplaySettings& settings) {
     increment = &results->increments[index];
   }
   auto skin = std::make_unique<render::SkinModel>(
-      model, document.registry(), document.layers().layers(), render::ElementFilter{});
+      model, document.registry(), filter_layers(model, document.layers().layers(), settings.filter),
+      render::ElementFilter{});
   if (skin->visible_nodes().empty()) return;  // everything hidden: an empty view, no error
 
   std::optional<render::ScalarField> field;
@@ -104,6 +105,9 @@ void Scene::rebuild(const Document& document, const DisplaySettings& settings) {
     title_lines_.push_back("Mesh: " + std::to_string(model.elements.size()) + " elements, " +
                            std::to_string(model.coords.size()) + " nodes");
   }
+  if (settings.filter.active())
+    title_lines_.push_back("Filter: " + std::to_string(filtered_elements(model, settings.filter).size()) +
+                           " of " + std::to_string(model.elements.size()) + " elements");
   if (scale > 0) title_lines_.push_back("Deformation scale: " + render::format_legend_value(scale));
 
   model_ = &model;

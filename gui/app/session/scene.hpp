@@ -10,6 +10,7 @@
 #include <vector>
 
 #include "session/document.hpp"
+#include "session/element_filter.hpp"
 #include "session/selection.hpp"
 #include "styk/render/frame.hpp"
 #include "styk/render/geometry.hpp"
@@ -32,6 +33,8 @@ struct DisplaySettings {
   // pictures compare. Empty: the field's range over the visible elements; the shape's bounds.
   std::optional<std::array<double, 2>> range;
   std::optional<std::array<std::array<float, 3>, 2>> camera_box;  // lower, upper (frame origin)
+  // View > Filter: only the passing elements of each visible layer are drawn (element_filter.hpp).
+  ElementDisplayFilter filter;
 };
 
 // The camera as the mouse moves it: a named view turned by azimuth/elevation, zoomed, and panned

@@ -24,12 +24,14 @@
 #include "interaction_dialogs.hpp"
 #include "model_dialogs.hpp"
 #include "revolve_dialog.hpp"
+#include "geometry_dialogs.hpp"
 #include "model_tree.hpp"
 #include "path_chart.hpp"
 #include "results_panel.hpp"
 #include "session/results_navigation.hpp"
 #include "session/selection_info.hpp"
 #include "session/selection_sets.hpp"
+#include "session/layer_edits.hpp"
 #include "solve_runner.hpp"
 #include "styk/io/results_file.hpp"
 #include "styk/mesher/builders.hpp"
@@ -83,7 +85,7 @@ MainWindow::MainWindow(const ElementRegistry& registry, QWidget* parent)
   connect(results_, &ResultsPanel::animate_toggled, this, [this](bool on) {
     view_->stop_animation();
     if (on) try {
-        view_->play_animation(std::make_unique<SceneAnimation>(document_, results_->settings(mode_),
+        view_->play_animation(std::make_unique<SceneAnimation>(document_, display_settings(),
                                                                results_->animation_kind(),
                                                                results_->animation_frames()),
                               100);
@@ -207,6 +209,8 @@ void MainWindow::build_menus() {
   dialog_action("&Concentrated load...", "action_cload", &make_cload_dialog);
   dialog_action("&Pressure...", "action_pressure", &make_pressure_dialog);
   dialog_action("&Revolve...", "action_revolve", &make_revolve_dialog);
+  dialog_action("P&lane...", "action_plane", &make_plane_dialog);
+  dialog_action("L&ine...", "action_line", &make_line_dialog);
   model->addSeparator();
   dialog_action("C&ontact pair...", "action_contact", &make_new_contact_dialog);
   dialog_action("&Initial temperature...", "action_initial_temperature",
@@ -236,6 +240,12 @@ void MainWindow::build_menus() {
                                                QString(), &ok);
     if (ok) make_set_from_selection(name);
   })->setObjectName("action_make_set");
+  select->addAction("New &layer from selection...", this, [this] {
+    bool ok = false;
+    const QString name = QInputDialog::getText(this, "New layer from selection", "Name",
+                                               QLineEdit::Normal, QString(), &ok);
+    if (ok) make_layer_from_selection(name);
+  })->setObjectName("action_layer_from_selection");
 
   QMenu* analysis = menuBar()->addMenu("&Analysis");
   analysis->addAction("&Solve", QKeySequence(Qt::Key_F5), this, &MainWindow::start_solve);
@@ -260,6 +270,22 @@ void MainWindow::build_menus() {
   view->addAction("&Fit", QKeySequence(Qt::Key_F), this, [this] { view_->fit(); });
   QAction* perspective = view->addAction("&Perspective", this, [this](bool on) { view_->set_perspective(on); });
   perspective->setCheckable(true);
+  view->addSeparator();
+  view->addAction("Fi&lter...", this, [this] {
+    FormDialog* dialog = make_filter_dialog(
+        document_.model(), filter_, [this](ElementDisplayFilter f) { set_filter(std::move(f)); },
+        this);
+    dialog->setAttribute(Qt::WA_DeleteOnClose);
+    dialog->open();
+  })->setObjectName("action_filter");
+  view->addAction("&Clear filter", this, [this] { set_filter({}); })
+      ->setObjectName("action_clear_filter");
+  view->addAction("New layer from &filter...", this, [this] {
+    bool ok = false;
+    const QString name = QInputDialog::getText(this, "New layer from filter", "Name",
+                                               QLineEdit::Normal, QString(), &ok);
+    if (ok) make_layer_from_filter(name);
+  })->setObjectName("action_layer_from_filter");
 }
 
 void MainWindow::run_dialog(QDialog* dialog) {
@@ -384,7 +410,7 @@ bool MainWindow::export_animation(const QString& directory, const QString& stem)
   const bool playing = view_->animating();
   view_->stop_animation();
   try {
-    SceneAnimation animation(document_, results_->settings(mode_), results_->animation_kind(),
+    SceneAnimation animation(document_, display_settings(), results_->animation_kind(),
                              results_->animation_frames());
     const QStringList files = view_->export_animation(animation, directory, stem, 100);
     log(QString("animation: %1 frames %2 ... and %3/%4.apng")
@@ -404,7 +430,7 @@ bool MainWindow::export_animation(const QString& directory, const QString& stem)
 void MainWindow::show_node_history() {
   const Results* results = document_.results();
   const Selection& selection = view_->scene().selection();
-  const DisplaySettings settings = results_->settings(mode_);
+  const DisplaySettings settings = display_settings();
   if (!results || selection.kind() != PickKind::Node || selection.nodes().empty() ||
       settings.field.empty()) {
     show_error("Value vs increment", "pick a node (Select > Pick nodes, click it) and choose a field");
@@ -452,8 +478,46 @@ void MainWindow::refresh_model() {
   refresh_scene();
 }
 
-void MainWindow::refresh_scene() {
+void MainWindow::set_filter(ElementDisplayFilter filter) {
+  filter_ = std::move(filter);
+  refresh_scene();
+}
+
+bool MainWindow::make_layer_from_filter(const QString& name) {
+  try {
+    add_layer_from_filter(document_, name.toStdString(), filter_);
+  } catch (const InputError& e) {
+    show_error("New layer from filter", QString::fromStdString(e.message()));
+    return false;
+  }
+  refresh_model();
+  return true;
+}
+
+bool MainWindow::make_layer_from_selection(const QString& name) {
+  try {
+    add_layer_from_selection(document_, name.toStdString(), view_->scene().selection());
+  } catch (const InputError& e) {
+    show_error("New layer from selection", QString::fromStdString(e.message()));
+    return false;
+  }
+  refresh_model();
+  return true;
+}
+
+DisplaySettings MainWindow::display_settings() const {
   DisplaySettings settings = results_->settings(mode_);
+  settings.filter = filter_;
+  return settings;
+}
+
+void MainWindow::refresh_scene() {
+  // A filter no element of the model passes any more (another model, an undone edit) is dropped.
+  if (filter_.active() && filtered_elements(document_.model(), filter_).empty()) {
+    filter_ = ElementDisplayFilter{};
+    log("view: the element filter matches no element of this model; cleared");
+  }
+  DisplaySettings settings = display_settings();
   if (!document_.results()) settings.field.clear();
   try {
     view_->scene().rebuild(document_, settings);

@@ -7,6 +7,8 @@
 #include <memory>
 
 #include "session/document.hpp"
+#include "session/element_filter.hpp"
+#include "session/scene.hpp"
 #include "styk/render/frame.hpp"
 
 class QLabel;
@@ -42,6 +44,13 @@ class MainWindow : public QMainWindow {
   // The selection in the view as a node set / element set / surface (undoable); errors go to
   // a message box. Returns success.
   bool make_set_from_selection(const QString& name);
+  // View > Filter: only the passing elements are drawn (an inactive filter draws everything).
+  void set_filter(ElementDisplayFilter filter);
+  const ElementDisplayFilter& filter() const { return filter_; }
+  // A user layer (session/layer_edits.hpp) from the filter / the selection (undoable); errors go
+  // to a message box. Returns success.
+  bool make_layer_from_filter(const QString& name);
+  bool make_layer_from_selection(const QString& name);
   // Writes the animation the results panel describes as DIR/STEM_0000.png ... and DIR/STEM.apng.
   bool export_animation(const QString& directory, const QString& stem);
   // The value-vs-increment chart of the first selected node and the field shown.
@@ -63,6 +72,7 @@ class MainWindow : public QMainWindow {
   void build_menus();
   void refresh_model();  // after any model or results change
   void refresh_scene();  // after a display setting change
+  DisplaySettings display_settings() const;  // the results panel's, with the filter
   void log(const QString& line);
   void show_error(const QString& title, const QString& message);
   void run_dialog(QDialog* dialog);
@@ -89,6 +99,7 @@ class MainWindow : public QMainWindow {
   std::unique_ptr<SolveRunner> solver_;
   render::DisplayMode mode_ = render::DisplayMode::Shaded;
   QString last_message_;
+  ElementDisplayFilter filter_;
 };
 
 }  // namespace styk::gui

@@ -1,0 +1,121 @@
+// styk-gui end to end (issue 7) under xvfb-run: View > Filter refuses bad id text inside the
+// dialog and, with good text, draws only the chosen elements; a layer is made from the filter and
+// one from the picked elements (undoable); Clear filter draws everything again; Model > Line and
+// Model > Plane add their parts through their dialogs.
+#include <QAction>
+#include <QApplication>
+#include <QCheckBox>
+#include <QComboBox>
+#include <QLineEdit>
+#include <QStandardPaths>
+#include <QTest>
+
+#include "form_dialog.hpp"
+#include "gl_view.hpp"
+#include "main_window.hpp"
+#include "session/element_setup.hpp"
+
+using namespace styk;
+
+namespace {
+
+gui::FormDialog* open_dialog(gui::MainWindow& w, const QString& action) {
+  auto* a = w.findChild<QAction*>(action);
+  if (!a) return nullptr;
+  a->trigger();
+  QApplication::processEvents();
+  for (gui::FormDialog* d : w.findChildren<gui::FormDialog*>())
+    if (d->isVisible()) return d;
+  return nullptr;
+}
+
+void set_text(gui::FormDialog* d, const QString& key, const QString& value) {
+  if (auto* e = d->findChild<QLineEdit*>(key)) e->setText(value);
+}
+
+std::size_t drawn_elements(const gui::Scene& scene) {
+  std::size_t count = 0;
+  for (const auto& layer : scene.skin()->layers()) count += layer.elements.size();
+  return count;
+}
+
+}  // namespace
+
+class GuiFilterGeometry : public QObject {
+  Q_OBJECT
+ private slots:
+  void initTestCase() {
+    QStandardPaths::setTestModeEnabled(true);
+    qputenv("STYK_GUI_NO_MESSAGE_BOXES", "1");
+    (void)gui::load_elements(registry_, libraries_, STYK_PLUGIN_BUILD_DIR);
+    window_ = std::make_unique<gui::MainWindow>(registry_);
+    window_->view()->setFixedSize(640, 480);
+    window_->show();
+    QVERIFY(QTest::qWaitForWindowExposed(window_.get()));
+    QVERIFY(window_->open_file(QString(STYK_SOURCE_DIR) + "/samples/cantilever-c3d20.inp"));
+    total_ = window_->document().model().elements.size();
+    QVERIFY(total_ > 3);
+  }
+
+  void filterDialogRefusesBadTextAndFilters() {
+    gui::FormDialog* d = open_dialog(*window_, "action_filter");
+    QVERIFY(d);
+    QVERIFY(d->findChild<QCheckBox*>("type_C3D20"));
+    set_text(d, "ids", "1-x");
+    d->accept();
+    QVERIFY(d->isVisible());
+    QVERIFY(d->error_text().contains("1-x"));
+    QVERIFY(!window_->filter().active());
+    set_text(d, "ids", "1-2, 3");
+    d->accept();
+    QVERIFY(!d->isVisible());
+    QVERIFY(window_->filter().active());
+    QCOMPARE(drawn_elements(window_->view()->scene()), std::size_t(3));
+  }
+
+  void layersFromFilterAndSelection() {
+    QVERIFY(window_->make_layer_from_filter("FIRST3"));
+    QCOMPARE(window_->document().layers().layers().front().name, std::string("FIRST3"));
+    QCOMPARE(window_->document().layers().layers().front().elements.size(), std::size_t(3));
+    QVERIFY(!window_->make_layer_from_filter("FIRST3"));  // the name is taken
+    window_->findChild<QAction*>("action_clear_filter")->trigger();
+    QVERIFY(!window_->filter().active());
+    QCOMPARE(drawn_elements(window_->view()->scene()), total_);
+    QVERIFY(!window_->make_layer_from_filter("ANY"));      // no filter set
+    QVERIFY(!window_->make_layer_from_selection("NONE"));  // nothing picked
+    window_->findChild<QAction*>("action_undo")->trigger();
+    QVERIFY(!window_->document().model().find_elset("FIRST3"));
+  }
+
+  void lineAndPlaneDialogs() {
+    gui::FormDialog* line = open_dialog(*window_, "action_line");
+    QVERIFY(line);
+    set_text(line, "name", "TIE");
+    set_text(line, "divisions", "0");
+    line->accept();
+    QVERIFY(line->isVisible());  // refused in the dialog
+    set_text(line, "divisions", "5");
+    line->accept();
+    QVERIFY(!line->isVisible());
+    QCOMPARE(window_->document().model().find_elset("TIE")->elements.size(), std::size_t(5));
+
+    gui::FormDialog* plane = open_dialog(*window_, "action_plane");
+    QVERIFY(plane);
+    set_text(plane, "name", "SHEET");
+    set_text(plane, "divisions", "3 2");
+    plane->accept();
+    QVERIFY(!plane->isVisible());
+    QCOMPARE(window_->document().model().find_elset("SHEET")->elements.size(), std::size_t(6));
+  }
+
+  void cleanupTestCase() { window_.reset(); }
+
+ private:
+  PluginLibraries libraries_;  // unloaded after the registry
+  ElementRegistry registry_;
+  std::unique_ptr<gui::MainWindow> window_;
+  std::size_t total_ = 0;
+};
+
+QTEST_MAIN(GuiFilterGeometry)
+#include "gui_filter_geometry_e2e_test.moc"
