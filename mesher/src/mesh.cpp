@@ -58,11 +58,15 @@ void Mesh::renumber_nodes(const std::vector<int>& old_to_new, int new_count) {
     kept.erase(std::unique(kept.begin(), kept.end()), kept.end());
     set = std::move(kept);
   }
-  for (Interface& i : interfaces)
-    for (auto& [a, b] : i.pairs) {
-      a = old_to_new[a];
-      b = old_to_new[b];
-    }
+  // A pair that loses a node is dropped, as a removed node leaves its sets: a C3D28 conversion
+  // removes the C3D20 bottom mid-edge nodes, and a kept -1 would index old_to_new[-1] on the
+  // next renumbering.
+  for (Interface& i : interfaces) {
+    std::vector<std::pair<int, int>> kept;
+    for (const auto& [a, b] : i.pairs)
+      if (old_to_new[a] >= 0 && old_to_new[b] >= 0) kept.emplace_back(old_to_new[a], old_to_new[b]);
+    i.pairs = std::move(kept);
+  }
 }
 
 int Mesh::remove_unused_nodes() {

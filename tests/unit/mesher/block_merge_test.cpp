@@ -67,6 +67,28 @@ TEST(Merge, TwoBlocksShareTheirFaceNodes) {
   EXPECT_EQ(mesh.remove_unused_nodes(), 0);
 }
 
+// An interface pair that loses a node when unused nodes go is dropped, the other pairs follow the
+// renumbering: no pair may keep a -1 (the next renumbering would index old_to_new[-1], which ASan
+// caught in the C3D28 bolted flange, whose two contact layers each remove their C3D20 mid-edges).
+TEST(Merge, RemovingUnusedNodesDropsTheirInterfacePairs) {
+  Mesh mesh;
+  mesh_block(mesh, box({0, 0, 0}, {1, 1, 1}), {"C3D8", {1, 1, 1}, {1, 1, 1}, ""});
+  const int stray = mesh.add_node({5, 5, 5});
+  mesh.interfaces.push_back({"I", {{0, 1}, {2, stray}, {6, 7}}, "A", "B"});
+  EXPECT_EQ(mesh.remove_unused_nodes(), 1);
+  ASSERT_EQ(mesh.interfaces[0].pairs.size(), 2u);
+  EXPECT_EQ(mesh.interfaces[0].pairs[0], std::make_pair(0, 1));
+  EXPECT_EQ(mesh.interfaces[0].pairs[1], std::make_pair(6, 7));
+  // A second removal with a pair on a node before the removed one: indices shift down by one.
+  mesh.nodes.insert(mesh.nodes.begin(), Vec3{9, 9, 9});
+  for (MeshElement& e : mesh.elements)
+    for (int& n : e.nodes) ++n;
+  for (auto& [a, b] : mesh.interfaces[0].pairs) ++a, ++b;
+  EXPECT_EQ(mesh.remove_unused_nodes(), 1);
+  ASSERT_EQ(mesh.interfaces[0].pairs.size(), 2u);
+  EXPECT_EQ(mesh.interfaces[0].pairs[1], std::make_pair(6, 7));
+}
+
 TEST(Merge, ToleranceIsRelativeToTheModelSize) {
   for (double scale : {1e-3, 1.0, 1e4}) {
     Mesh mesh;

@@ -62,7 +62,8 @@ struct Mesh {
   std::vector<int> surface_nodes(const std::string& name) const;
 
   // Applies a node renumbering (old index -> new index, -1 = removed) to the elements, node sets
-  // and interfaces; `new_count` is the number of nodes kept. Node coordinates are moved along.
+  // and interfaces (a set member or an interface pair whose node is removed is dropped);
+  // `new_count` is the number of nodes kept. Node coordinates are moved along.
   void renumber_nodes(const std::vector<int>& old_to_new, int new_count);
 
   // Removes nodes no element uses (after a merge or a conversion). Returns how many.
