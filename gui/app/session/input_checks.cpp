@@ -143,4 +143,29 @@ void append_part(Model& model, const Model& part) {
   }
 }
 
+void append_meshed_part(Model& model, const mesher::Mesh& mesh,
+                        const std::vector<std::string>& surfaces, const std::string& elset,
+                        const std::string& material) {
+  const int first_element = model.element_count();
+  append_part(model, mesher::to_model(mesh));
+  for (const std::string& name : surfaces) {
+    Surface surface;
+    surface.name = name;
+    for (const mesher::FaceRef& f : mesh.surfaces.at(name))
+      surface.faces.push_back({first_element + f.element, f.face + 1});
+    std::sort(surface.faces.begin(), surface.faces.end(), [](const auto& a, const auto& b) {
+      return a.element != b.element ? a.element < b.element : a.face < b.face;
+    });
+    model.surfaces[name] = std::move(surface);
+  }
+  if (material.empty()) return;
+  Section section;
+  section.elset = elset;
+  section.material = to_upper(material);
+  section.material_index = model.material_index(section.material);
+  const int index = static_cast<int>(model.sections.size());
+  model.sections.push_back(section);
+  for (int e : model.elsets.at(elset).elements) model.elements[e].section = index;
+}
+
 }  // namespace styk::gui

@@ -3,8 +3,10 @@
 #pragma once
 
 #include <string>
+#include <vector>
 
 #include "styk/core/model.hpp"
+#include "styk/mesher/mesh.hpp"
 
 namespace styk::gui {
 
@@ -37,5 +39,12 @@ void check_set_names_free(const Model& model, const std::string& name);
 // the largest existing ones; its node and element sets come along. Nodes are never merged with
 // the model's: a part touching another one stays a separate body (a contact interface).
 void append_part(Model& model, const Model& part);
+
+// append_part of a meshed part plus, for each name of `surfaces`, the mesh's surface of that name
+// (faces sorted by element, then face) and, when `material` is not empty, a section of that
+// material on element set `elset`. Mesh block and revolve both end this way.
+void append_meshed_part(Model& model, const mesher::Mesh& mesh,
+                        const std::vector<std::string>& surfaces, const std::string& elset,
+                        const std::string& material);
 
 }  // namespace styk::gui

@@ -257,27 +257,9 @@ Model model_with_revolve(const Model& model, const RevolveInput& in,
     mesh.add_to_node_set(surface, mesh.surface_nodes(surface));
 
   Model result = model;
-  const int first_element = result.element_count();
-  append_part(result, mesher::to_model(mesh));
-  for (const auto& [surface_name, faces] : mesh.surfaces) {
-    Surface surface;
-    surface.name = surface_name;
-    for (const mesher::FaceRef& face : faces)
-      surface.faces.push_back({first_element + face.element, face.face + 1});
-    std::sort(surface.faces.begin(), surface.faces.end(), [](const auto& a, const auto& b) {
-      return a.element != b.element ? a.element < b.element : a.face < b.face;
-    });
-    result.surfaces[surface.name] = std::move(surface);
-  }
-  if (!in.material.empty()) {
-    Section section;
-    section.elset = name;
-    section.material = to_upper(in.material);
-    section.material_index = result.material_index(section.material);
-    const int index = static_cast<int>(result.sections.size());
-    result.sections.push_back(section);
-    for (int e : result.elsets.at(name).elements) result.elements[e].section = index;
-  }
+  std::vector<std::string> surfaces;
+  for (const auto& entry : mesh.surfaces) surfaces.push_back(entry.first);
+  append_meshed_part(result, mesh, surfaces, name, in.material);
   return result;
 }
 

@@ -114,27 +114,9 @@ Model model_with_block(const Model& model, const BlockInput& in, const ElementRe
     mesh.add_to_node_set(name + "_" + side, mesh.surface_nodes(name + "_" + side));
 
   Model result = model;
-  const int first_element = result.element_count();
-  append_part(result, mesher::to_model(mesh));
-  for (const std::string& side : kSides) {
-    Surface surface;
-    surface.name = name + "_" + side;
-    for (const mesher::FaceRef& f : mesh.surfaces.at(surface.name))
-      surface.faces.push_back({first_element + f.element, f.face + 1});
-    std::sort(surface.faces.begin(), surface.faces.end(), [](const auto& a, const auto& b) {
-      return a.element != b.element ? a.element < b.element : a.face < b.face;
-    });
-    result.surfaces[surface.name] = std::move(surface);
-  }
-  if (!in.material.empty()) {
-    Section section;
-    section.elset = name;
-    section.material = to_upper(in.material);
-    section.material_index = result.material_index(section.material);
-    const int index = static_cast<int>(result.sections.size());
-    result.sections.push_back(section);
-    for (int e : result.elsets.at(name).elements) result.elements[e].section = index;
-  }
+  std::vector<std::string> surfaces;
+  for (const std::string& side : kSides) surfaces.push_back(name + "_" + side);
+  append_meshed_part(result, mesh, surfaces, name, in.material);
   return result;
 }
 
