@@ -4,6 +4,7 @@
 #include <fstream>
 #include <stdexcept>
 
+#include "session/view_state.hpp"
 #include "styk/inp/reader.hpp"
 #include "styk/inp/writer.hpp"
 #include "styk/io/results_file.hpp"
@@ -19,17 +20,22 @@ void Document::new_model() {
   path_.clear();
   history_.clear();
   layers_ = LayerTable{};  // a new model: the user layers of the old one go
+  filter_ = ElementDisplayFilter{};
+  open_warnings_.clear();
   changed(false);
 }
 
 void Document::open_inp(const std::string& path) {
   Model model = read_inp(path, registry_);
+  const ReadViewState view = read_view_state(path);
   model_ = std::move(model);
   results_.reset();
   results_path_.clear();
   path_ = path;
   history_.clear();
   layers_ = LayerTable{};  // a new model: the user layers of the old one go
+  open_warnings_ = view.warnings;
+  filter_ = apply_view_state(view.state, path, model_, layers_, open_warnings_);
   changed(false);
 }
 
@@ -41,6 +47,8 @@ void Document::open_results(const std::string& path) {
   path_ = path;
   history_.clear();
   layers_ = LayerTable{};  // a new model: the user layers of the old one go
+  filter_ = ElementDisplayFilter{};
+  open_warnings_.clear();
   changed(true);
 }
 
@@ -50,6 +58,7 @@ void Document::save_inp(const std::string& path) {
     std::ofstream out(temporary);
     if (!out) throw std::runtime_error("cannot write " + temporary);
     write_inp(model_, out);
+    write_view_state(view_state_of(layers_, filter_), out);
     out.flush();
     if (!out) throw std::runtime_error("error while writing " + temporary);
   }

@@ -1,13 +1,16 @@
 // The session's document: the Model being edited, optionally the results of one analysis of it,
-// the layers, and the edit history. No Qt here, so it is tested without a display; the main window
+// the layers, the view's element filter, and the edit history. No Qt here, so it is tested without a display; the main window
 // owns one Document and redraws when revision() changes.
 #pragma once
 
 #include <memory>
 #include <optional>
 #include <string>
+#include <utility>
+#include <vector>
 
 #include "session/commands.hpp"
+#include "session/element_filter.hpp"
 #include "session/layers.hpp"
 #include "styk/core/element_registry.hpp"
 #include "styk/core/model.hpp"
@@ -21,12 +24,15 @@ class Document {
   explicit Document(const ElementRegistry& registry);
 
   void new_model();
-  // Throws InputError ("file:line: message") and leaves the document unchanged on failure.
+  // Throws InputError ("file:line: message") and leaves the document unchanged on failure. The
+  // layers and the filter saved with the deck come back (view_state.hpp); view lines the model
+  // cannot take are dropped and listed in open_warnings().
   void open_inp(const std::string& path);
   // A .styk.h5 file: its mesh becomes the model (no materials or steps) and its results attach.
   // Throws std::runtime_error on failure, document unchanged.
   void open_results(const std::string& path);
-  // Writes the model as a deck (atomically: a temporary file renamed over `path`).
+  // Writes the model as a deck (atomically: a temporary file renamed over `path`), followed by the
+  // layers and the filter as comment lines (view_state.hpp).
   void save_inp(const std::string& path);
   // Attaches the results of an analysis of the current model (from a solve); throws
   // std::runtime_error when their node count does not match the model.
@@ -45,6 +51,11 @@ class Document {
   const ElementRegistry& registry() const { return registry_; }
   LayerTable& layers() { return layers_; }
   const LayerTable& layers() const { return layers_; }
+  // The view's element filter (a display setting: changing it is no model edit and not undone).
+  const ElementDisplayFilter& filter() const { return filter_; }
+  void set_filter(ElementDisplayFilter filter) { filter_ = std::move(filter); }
+  // "file:line: message" for each view line of the last opened deck that was dropped.
+  const std::vector<std::string>& open_warnings() const { return open_warnings_; }
   const std::string& path() const { return path_; }  // the deck (or results file) opened/saved
   bool is_modified() const { return !history_.is_clean(); }
   // Increases with every change of the model or the results.
@@ -58,6 +69,8 @@ class Document {
   std::optional<Results> results_;
   std::string results_path_;
   LayerTable layers_;
+  ElementDisplayFilter filter_;
+  std::vector<std::string> open_warnings_;
   UndoStack history_;
   std::string path_;
   long revision_ = 0;

@@ -273,8 +273,8 @@ void MainWindow::build_menus() {
   view->addSeparator();
   view->addAction("Fi&lter...", this, [this] {
     FormDialog* dialog = make_filter_dialog(
-        document_.model(), filter_, [this](ElementDisplayFilter f) { set_filter(std::move(f)); },
-        this);
+        document_.model(), document_.filter(),
+        [this](ElementDisplayFilter f) { set_filter(std::move(f)); }, this);
     dialog->setAttribute(Qt::WA_DeleteOnClose);
     dialog->open();
   })->setObjectName("action_filter");
@@ -304,6 +304,8 @@ bool MainWindow::open_file(const QString& path) {
     return false;
   }
   log("opened " + path);
+  for (const std::string& warning : document_.open_warnings())
+    log("view: " + QString::fromStdString(warning));
   add_recent(path);
   view_->set_named_view("iso");
   if (document_.results()) results_->set_field("S.mises");
@@ -479,13 +481,13 @@ void MainWindow::refresh_model() {
 }
 
 void MainWindow::set_filter(ElementDisplayFilter filter) {
-  filter_ = std::move(filter);
+  document_.set_filter(std::move(filter));
   refresh_scene();
 }
 
 bool MainWindow::make_layer_from_filter(const QString& name) {
   try {
-    add_layer_from_filter(document_, name.toStdString(), filter_);
+    add_layer_from_filter(document_, name.toStdString(), document_.filter());
   } catch (const InputError& e) {
     show_error("New layer from filter", QString::fromStdString(e.message()));
     return false;
@@ -507,14 +509,15 @@ bool MainWindow::make_layer_from_selection(const QString& name) {
 
 DisplaySettings MainWindow::display_settings() const {
   DisplaySettings settings = results_->settings(mode_);
-  settings.filter = filter_;
+  settings.filter = document_.filter();
   return settings;
 }
 
 void MainWindow::refresh_scene() {
   // A filter no element of the model passes any more (another model, an undone edit) is dropped.
-  if (filter_.active() && filtered_elements(document_.model(), filter_).empty()) {
-    filter_ = ElementDisplayFilter{};
+  if (document_.filter().active() &&
+      filtered_elements(document_.model(), document_.filter()).empty()) {
+    document_.set_filter({});
     log("view: the element filter matches no element of this model; cleared");
   }
   DisplaySettings settings = display_settings();

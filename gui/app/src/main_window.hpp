@@ -44,9 +44,10 @@ class MainWindow : public QMainWindow {
   // The selection in the view as a node set / element set / surface (undoable); errors go to
   // a message box. Returns success.
   bool make_set_from_selection(const QString& name);
-  // View > Filter: only the passing elements are drawn (an inactive filter draws everything).
+  // View > Filter: only the passing elements are drawn (an inactive filter draws everything). The
+  // document keeps it, so it is saved with the deck.
   void set_filter(ElementDisplayFilter filter);
-  const ElementDisplayFilter& filter() const { return filter_; }
+  const ElementDisplayFilter& filter() const { return document_.filter(); }
   // A user layer (session/layer_edits.hpp) from the filter / the selection (undoable); errors go
   // to a message box. Returns success.
   bool make_layer_from_filter(const QString& name);
@@ -99,7 +100,6 @@ class MainWindow : public QMainWindow {
   std::unique_ptr<SolveRunner> solver_;
   render::DisplayMode mode_ = render::DisplayMode::Shaded;
   QString last_message_;
-  ElementDisplayFilter filter_;
 };
 
 }  // namespace styk::gui
