@@ -5,31 +5,18 @@
 
 #include <algorithm>
 
+#include "box_model.hpp"
 #include "session/document.hpp"
 #include "session/element_filter.hpp"
 #include "session/geometry_objects.hpp"
 #include "session/layer_edits.hpp"
 #include "session/scene.hpp"
 #include "styk/elements/builtin.hpp"
-#include "styk/mesher/block_mesh.hpp"
 
 namespace styk::gui {
 namespace {
 
-Model box_model() {
-  mesher::Mesh mesh;
-  mesher::BlockSpec spec;
-  spec.type = "C3D8";
-  spec.divisions = {4, 4, 4};
-  spec.elset = "BOX";
-  mesher::mesh_block(
-      mesh,
-      [](const Vec3& xi) {
-        return Vec3{2 * (xi[0] + 1), 2 * (xi[1] + 1), 2 * (xi[2] + 1)};
-      },
-      spec);
-  return mesher::to_model(mesh);
-}
+using test::box_model;
 
 class GuiFilterTest : public ::testing::Test {
  protected:

@@ -8,31 +8,18 @@
 #include <fstream>
 #include <sstream>
 
+#include "box_model.hpp"
 #include "session/document.hpp"
 #include "session/layer_edits.hpp"
 #include "session/validation.hpp"
 #include "session/view_state.hpp"
 #include "styk/elements/builtin.hpp"
 #include "styk/inp/reader.hpp"
-#include "styk/mesher/block_mesh.hpp"
 
 namespace styk::gui {
 namespace {
 
-Model box_model() {
-  mesher::Mesh mesh;
-  mesher::BlockSpec spec;
-  spec.type = "C3D8";
-  spec.divisions = {4, 4, 4};
-  spec.elset = "BOX";
-  mesher::mesh_block(
-      mesh,
-      [](const Vec3& xi) {
-        return Vec3{2 * (xi[0] + 1), 2 * (xi[1] + 1), 2 * (xi[2] + 1)};
-      },
-      spec);
-  return mesher::to_model(mesh);
-}
+using test::box_model;
 
 std::string read_text(const std::string& path) {
   std::ifstream in(path);
@@ -126,12 +113,13 @@ TEST_F(GuiViewStateTest, BadViewLinesAreDroppedWithTheirLine) {
   // Appended after the saved view lines, so these are the deck's last six lines.
   int first = 1;
   for (char c : text) first += c == '\n';
-  text += "**STYK LAYER, NAME=NOPE, USER=YES, VISIBLE=NO, COLOR=FF0000\n"  // no such set
-          "**STYK LAYER, NAME=BOX, VISIBLE=MAYBE, COLOR=FF0000\n"          // not YES/NO
-          "**styk layer, name=box, color=12345\n"                          // 5 digits
-          "**STYK CAMERA, AZIMUTH=30\n"                                    // unknown line
-          "**STYK LAYER, NAME=BOX, VISIBLE=NO, COLOR=00FF00\n"             // fine
-          "**STYK FILTER, TYPES=C3D20\n";                                  // type not in model
+  text +=
+      "**STYK LAYER, NAME=NOPE, USER=YES, VISIBLE=NO, COLOR=FF0000\n"  // no such set
+      "**STYK LAYER, NAME=BOX, VISIBLE=MAYBE, COLOR=FF0000\n"          // not YES/NO
+      "**styk layer, name=box, color=12345\n"                          // 5 digits
+      "**STYK CAMERA, AZIMUTH=30\n"                                    // unknown line
+      "**STYK LAYER, NAME=BOX, VISIBLE=NO, COLOR=00FF00\n"             // fine
+      "**STYK FILTER, TYPES=C3D20\n";                                  // type not in model
   write(text);
   Document reopened(registry);
   reopened.open_inp(path);

@@ -40,8 +40,8 @@ std::string hex_color(const render::Rgb& color) {
 // Throws std::invalid_argument with the reason for anything but six hex digits.
 render::Rgb parse_color(const std::string& text) {
   const bool hex = text.size() == 6 && std::all_of(text.begin(), text.end(), [](char c) {
-    return std::isxdigit(static_cast<unsigned char>(c)) != 0;
-  });
+                     return std::isxdigit(static_cast<unsigned char>(c)) != 0;
+                   });
   if (!hex) throw std::invalid_argument("COLOR=" + text + " is not six hex digits like CC3311");
   const auto channel = [&](int i) {
     return static_cast<float>(std::stoi(text.substr(2 * i, 2), nullptr, 16)) / 255.0f;
@@ -190,8 +190,8 @@ ElementDisplayFilter apply_view_state(const ViewState& state, const std::string&
     if (model.find_elset(style.name)) {
       layers.add_user_layer(style.name);
     } else {
-      warnings.push_back(located(path, style.line,
-                                 "user layer " + style.name + " has no element set; dropped"));
+      warnings.push_back(
+          located(path, style.line, "user layer " + style.name + " has no element set; dropped"));
     }
   }
   layers.rebuild(model);
