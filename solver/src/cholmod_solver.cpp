@@ -17,6 +17,7 @@
 #include "linear_solver.hpp"
 #include "node_ordering.hpp"
 #include "parallel.hpp"
+#include "restricted_substitution.hpp"
 
 namespace styk::solver_detail {
 namespace {
@@ -32,104 +33,6 @@ double physical_memory_bytes() {
   const long page_size = sysconf(_SC_PAGE_SIZE);
   return pages > 0 && page_size > 0 ? static_cast<double>(pages) * page_size : 0.0;
 }
-
-// Forward and back substitutions with CHOLMOD's supernodal factor L L^T = P K_ff P^T restricted to
-// what a sparse right-hand side and a few wanted rows need. Forward: L y = P b is nonzero only in
-// the supernodes on the elimination-tree paths from b's entries to the root (the "reach"); back:
-// x_s depends only on x at the rows below supernode s, all of them ancestors of s, so x is exact
-// on any ancestor-closed set of supernodes, e.g. the paths from the wanted rows to the root. The
-// arithmetic is the full solve's minus exact zeros and unwanted entries.
-class RestrictedSubstitution {
- public:
-  RestrictedSubstitution(const cholmod_factor& L, const DofPartition& partition)
-      : partition_(partition) {
-    const auto n = static_cast<std::size_t>(L.n);
-    const auto* perm = static_cast<const SuiteSparse_long*>(L.Perm);
-    position_.resize(n);
-    for (std::size_t k = 0; k < n; ++k) position_[perm != nullptr ? perm[k] : k] = k;
-    super_ = static_cast<const SuiteSparse_long*>(L.super);
-    pi_ = static_cast<const SuiteSparse_long*>(L.pi);
-    px_ = static_cast<const SuiteSparse_long*>(L.px);
-    s_ = static_cast<const SuiteSparse_long*>(L.s);
-    x_ = static_cast<const double*>(L.x);
-    const auto nsuper = static_cast<SuiteSparse_long>(L.nsuper);
-    supernode_of_.resize(n);
-    parent_.assign(nsuper, -1);
-    for (SuiteSparse_long s = 0; s < nsuper; ++s) {
-      for (SuiteSparse_long k = super_[s]; k < super_[s + 1]; ++k) supernode_of_[k] = s;
-      // The first row below the diagonal block belongs to the parent in the supernodal tree.
-      const SuiteSparse_long columns = super_[s + 1] - super_[s];
-      if (pi_[s + 1] - pi_[s] > columns) parent_[s] = s_[pi_[s] + columns];
-      max_below_ = std::max<Eigen::Index>(max_below_, pi_[s + 1] - pi_[s] - columns);
-    }
-    for (SuiteSparse_long s = 0; s < nsuper; ++s)
-      if (parent_[s] >= 0) parent_[s] = supernode_of_[parent_[s]];
-  }
-
-  // Permuted position of an active dof, -1 when it is prescribed.
-  SuiteSparse_long position(int dof) const {
-    const int free = partition_.free_of_dof[dof];
-    return free < 0 ? -1 : static_cast<SuiteSparse_long>(position_[free]);
-  }
-  SuiteSparse_long supernode(SuiteSparse_long position) const { return supernode_of_[position]; }
-  std::size_t supernodes() const { return parent_.size(); }
-
-  // Marks `s` and its ancestors.
-  void mark_path(SuiteSparse_long s, std::vector<char>& marked) const {
-    for (; s >= 0 && !marked[s]; s = parent_[s]) marked[s] = 1;
-  }
-
-  // X (permuted rows, one column per right-hand side) := L^-1 X on the supernodes `forward`, then
-  // L^-T X on `back` (ancestor-closed). E is scratch.
-  void solve(Eigen::MatrixXd& X, const std::vector<char>& forward, const std::vector<char>& back,
-             Eigen::MatrixXd& E) const {
-    const auto nsuper = static_cast<SuiteSparse_long>(parent_.size());
-    const Eigen::Index r = X.cols();
-    if (E.rows() < max_below_ || E.cols() < r) E.resize(max_below_, r);
-    for (SuiteSparse_long s = 0; s < nsuper; ++s) {
-      if (!forward[s]) continue;
-      const auto [columns, below, block] = supernode_block(s);
-      auto xs = X.middleRows(super_[s], columns);
-      block.topRows(columns).triangularView<Eigen::Lower>().solveInPlace(xs);
-      if (below == 0) continue;
-      auto e = E.topLeftCorner(below, r);
-      e.noalias() = block.bottomRows(below) * xs;
-      const SuiteSparse_long* rows = s_ + pi_[s] + columns;
-      for (Eigen::Index i = 0; i < below; ++i) X.row(rows[i]) -= e.row(i);
-    }
-    for (SuiteSparse_long s = nsuper - 1; s >= 0; --s) {
-      if (!back[s]) continue;
-      const auto [columns, below, block] = supernode_block(s);
-      auto xs = X.middleRows(super_[s], columns);
-      if (below > 0) {
-        auto e = E.topLeftCorner(below, r);
-        const SuiteSparse_long* rows = s_ + pi_[s] + columns;
-        for (Eigen::Index i = 0; i < below; ++i) e.row(i) = X.row(rows[i]);
-        xs.noalias() -= block.bottomRows(below).transpose() * e;
-      }
-      block.topRows(columns).triangularView<Eigen::Lower>().transpose().solveInPlace(xs);
-    }
-  }
-
- private:
-  struct Block {
-    Eigen::Index columns, below;
-    Eigen::Map<const Eigen::MatrixXd> values;  // rows x columns, column-major
-  };
-  Block supernode_block(SuiteSparse_long s) const {
-    const Eigen::Index columns = super_[s + 1] - super_[s];
-    const Eigen::Index rows = pi_[s + 1] - pi_[s];
-    return {columns, rows - columns, Eigen::Map<const Eigen::MatrixXd>(x_ + px_[s], rows, columns)};
-  }
-
-  const DofPartition& partition_;
-  std::vector<std::size_t> position_;           // free index -> permuted position
-  std::vector<SuiteSparse_long> supernode_of_;  // permuted position -> supernode
-  std::vector<SuiteSparse_long> parent_;        // supernodal elimination tree
-  const SuiteSparse_long *super_ = nullptr, *pi_ = nullptr, *px_ = nullptr, *s_ = nullptr;
-  const double* x_ = nullptr;
-  Eigen::Index max_below_ = 0;  // most rows below a diagonal block
-};
 
 class CholmodSolver final : public LinearSolver {
  public:
