@@ -69,10 +69,9 @@ Model finish_model(const Mesh& mesh, const std::string& heading, double young, d
   return model;
 }
 
-std::vector<ConcentratedLoad> traction_loads(const Model& model, const ElementRegistry& registry,
-                                             const std::vector<FaceRef>& faces, const Vec3& total) {
-  std::map<int, double> area;  // node -> equivalent nodal area
-  double sum = 0.0;
+NodalAreas equivalent_nodal_areas(const Model& model, const ElementRegistry& registry,
+                                  const std::vector<FaceRef>& faces) {
+  NodalAreas out;
   for (const FaceRef& f : faces) {
     const Element& element = model.elements[f.element];
     const TElement* formulation = registry.find(element.type);
@@ -89,14 +88,20 @@ std::vector<ConcentratedLoad> traction_loads(const Model& model, const ElementRe
     formulation->nodal_areas(g, f.face, a);
     for (int i = 0; i < element.node_count; ++i)
       if (a(i) != 0.0) {
-        area[nodes[i]] += a(i);
-        sum += a(i);
+        out.area[nodes[i]] += a(i);
+        out.sum += a(i);
       }
   }
+  return out;
+}
+
+std::vector<ConcentratedLoad> traction_loads(const Model& model, const ElementRegistry& registry,
+                                             const std::vector<FaceRef>& faces, const Vec3& total) {
+  const NodalAreas areas = equivalent_nodal_areas(model, registry, faces);
   std::vector<ConcentratedLoad> loads;
-  for (const auto& [node, a] : area)
+  for (const auto& [node, a] : areas.area)
     for (int d = 0; d < 3; ++d)
-      if (total[d] != 0.0) loads.push_back({node, d + 1, total[d] * a / sum, {}});
+      if (total[d] != 0.0) loads.push_back({node, d + 1, total[d] * a / areas.sum, {}});
   return loads;
 }
 

@@ -2,6 +2,7 @@
 #pragma once
 
 #include <functional>
+#include <map>
 #include <string>
 #include <vector>
 
@@ -32,6 +33,15 @@ std::vector<int> nodes_where(const Mesh& mesh, const std::function<bool(const Ve
 
 // Model of the mesh with material MAT (E, nu) on element set EALL.
 Model finish_model(const Mesh& mesh, const std::string& heading, double young, double poisson);
+
+// Equivalent nodal areas A_i of the faces' nodes (TElement::nodal_areas, summed per node; C3D20
+// corners are negative) and their total, summed in face order.
+struct NodalAreas {
+  std::map<int, double> area;  // node -> A_i
+  double sum = 0.0;
+};
+NodalAreas equivalent_nodal_areas(const Model& model, const ElementRegistry& registry,
+                                  const std::vector<FaceRef>& faces);
 
 // Consistent nodal forces of a uniform traction with resultant `total` on the faces (A_i of every
 // face node from TElement::nodal_areas, summed per node).

@@ -89,24 +89,8 @@ SectionCurve polyline(std::vector<Vec3> points) {
 
 std::vector<ConcentratedLoad> rim_torque_loads(const Model& model, const ElementRegistry& registry,
                                                const std::vector<FaceRef>& faces, double torque) {
-  std::map<int, double> area;  // node -> equivalent nodal area (C3D20 corners: negative)
-  for (const FaceRef& f : faces) {
-    const Element& element = model.elements[f.element];
-    const TElement* formulation = registry.find(element.type);
-    if (!formulation)
-      throw InputError({model.source, 0}, "element type " + element.type +
-                                              " is not registered (are the plug-ins loaded?)");
-    ElementGeometry g;
-    g.X.resize(element.node_count, 3);
-    g.id = element.id;
-    const int* nodes = model.element_nodes(f.element);
-    for (int i = 0; i < element.node_count; ++i)
-      for (int d = 0; d < 3; ++d) g.X(i, d) = model.coords[nodes[i]][d];
-    Eigen::VectorXd a;
-    formulation->nodal_areas(g, f.face, a);
-    for (int i = 0; i < element.node_count; ++i)
-      if (a(i) != 0.0) area[nodes[i]] += a(i);
-  }
+  // C3D20 corners carry negative areas, and so negative shares of the torque.
+  const std::map<int, double> area = equivalent_nodal_areas(model, registry, faces).area;
   double lever = 0.0;  // sum A_i r_i
   for (const auto& [node, a] : area)
     lever += a * std::hypot(model.coords[node][0], model.coords[node][1]);
