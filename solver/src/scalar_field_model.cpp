@@ -3,21 +3,10 @@
 #include <numeric>
 
 #include "scalar_element.hpp"
+#include "styk/core/step_kind.hpp"
 
 namespace styk::solver_detail {
 namespace {
-
-const char* procedure_keyword(StepKind kind) {
-  switch (kind) {
-    case StepKind::Static:
-      return "*STATIC";
-    case StepKind::HeatTransfer:
-      return "*HEAT TRANSFER";
-    case StepKind::ElectricConduction:
-      return "*COUPLED THERMAL-ELECTRICAL";
-  }
-  return "";
-}
 
 std::string element_label(const Element& element) {
   return "element " + std::to_string(element.id) + " (" + element.type + ")";
@@ -91,7 +80,7 @@ ScalarFieldModel prepare_scalar_field_model(const Model& model, const ElementReg
   prepared.kind = first.kind;
   const bool heat = prepared.kind == StepKind::HeatTransfer;
   prepared.field = heat ? ScalarFieldResult::Kind::Temperature : ScalarFieldResult::Kind::Potential;
-  prepared.dof = heat ? 11 : 9;
+  prepared.dof = scalar_dof(prepared.kind);
   refuse_mechanical_features(model, procedure_keyword(prepared.kind));
 
   const int element_count = model.element_count();

@@ -6,6 +6,7 @@
 
 #include "deck_reader.hpp"
 #include "numbers.hpp"
+#include "styk/core/step_kind.hpp"
 
 namespace styk::inp {
 
@@ -19,23 +20,6 @@ bool op_new(const KeywordLine& kw) {
   if (value != "NEW" && value != "MOD")
     throw InputError(kw.where, "OP=" + op->value + " on " + kw.label() + ": expected NEW or MOD");
   return value == "NEW";
-}
-
-const char* step_keyword(StepKind kind) {
-  switch (kind) {
-    case StepKind::Static:
-      return "*STATIC";
-    case StepKind::HeatTransfer:
-      return "*HEAT TRANSFER";
-    case StepKind::ElectricConduction:
-      return "*COUPLED THERMAL-ELECTRICAL";
-  }
-  return "";
-}
-
-// The dof a scalar step solves for: 11 temperature, 9 electric potential; 0 for static steps.
-int scalar_dof(StepKind kind) {
-  return kind == StepKind::HeatTransfer ? 11 : kind == StepKind::ElectricConduction ? 9 : 0;
 }
 
 std::string dof_name(int dof) {
@@ -54,7 +38,7 @@ std::string what_step_takes(StepKind kind) {
   const int scalar = scalar_dof(kind);
   return scalar == 0
              ? std::string("mechanical steps take dofs 1..3")
-             : std::string(step_keyword(kind)) + " steps take " + dof_name(scalar) + " only";
+             : std::string(procedure_keyword(kind)) + " steps take " + dof_name(scalar) + " only";
 }
 
 // The output variables of *NODE PRINT / *EL PRINT / *NODE FILE / *EL FILE per step kind
@@ -200,38 +184,38 @@ void DeckReader::check_field_kinds() {
   for (const Step& step : model_.steps) {
     for (const Boundary& b : step.boundaries)
       if (!dof_fits(b.dof, step.kind))
-        throw InputError(b.where, dof_name(b.dof) + " in a " + step_keyword(step.kind) +
+        throw InputError(b.where, dof_name(b.dof) + " in a " + procedure_keyword(step.kind) +
                                       " step (at " + step.procedure.where.str() +
                                       "): " + what_step_takes(step.kind));
     const bool scalar = step.kind != StepKind::Static;
     if (scalar && !step.cloads.empty())
       throw InputError(step.cloads.front().where,
-                       std::string("*CLOAD in a ") + step_keyword(step.kind) +
+                       std::string("*CLOAD in a ") + procedure_keyword(step.kind) +
                            " step: use *CFLUX (heat flow) or *CECUR (current)");
     if (scalar && !step.dloads.empty())
       throw InputError(step.dloads.front().where, std::string("*DLOAD in a ") +
-                                                      step_keyword(step.kind) +
+                                                      procedure_keyword(step.kind) +
                                                       " step: use *DFLUX for a face flux");
     if (scalar && !step.temperatures.empty())
       throw InputError(step.temperatures.front().where,
-                       std::string("*TEMPERATURE in a ") + step_keyword(step.kind) +
+                       std::string("*TEMPERATURE in a ") + procedure_keyword(step.kind) +
                            " step: the temperature is the unknown there; prescribe it with "
                            "*BOUNDARY, dof 11");
     for (const ConcentratedLoad& c : step.cfluxes)
       if (!dof_fits(c.dof, step.kind))
         throw InputError(c.where, std::string(c.dof == 11 ? "*CFLUX" : "*CECUR") + " in a " +
-                                      step_keyword(step.kind) + " step (at " +
+                                      procedure_keyword(step.kind) + " step (at " +
                                       step.procedure.where.str() +
                                       "): " + what_step_takes(step.kind));
     for (const OutputRequest& request : step.outputs)
       for (const std::string& var : request.vars)
         if (!variable_fits(var, step.kind))
           throw InputError(request.where, "output variable " + var + " in a " +
-                                              step_keyword(step.kind) + " step: it prints " +
+                                              procedure_keyword(step.kind) + " step: it prints " +
                                               variables_of(step.kind));
     if (step.kind != StepKind::HeatTransfer && !step.dfluxes.empty())
       throw InputError(step.dfluxes.front().where,
-                       std::string("*DFLUX in a ") + step_keyword(step.kind) +
+                       std::string("*DFLUX in a ") + procedure_keyword(step.kind) +
                            " step: face fluxes belong to *HEAT TRANSFER steps");
   }
   // Model-level boundary conditions hold in every step, so they must fit every step.
@@ -239,7 +223,7 @@ void DeckReader::check_field_kinds() {
     for (const Step& step : model_.steps)
       if (!dof_fits(b.dof, step.kind))
         throw InputError(b.where, dof_name(b.dof) + " is prescribed for every step, but the " +
-                                      step_keyword(step.kind) + " step at " +
+                                      procedure_keyword(step.kind) + " step at " +
                                       step.procedure.where.str() +
                                       " cannot take it: " + what_step_takes(step.kind));
   // Materials: what the deck's procedures need (the old "no *ELASTIC" check for static decks).

@@ -4,6 +4,7 @@
 #include <optional>
 #include <string>
 
+#include "styk/core/step_kind.hpp"
 #include "writer_parts.hpp"
 
 namespace styk {
@@ -144,8 +145,7 @@ void write_step(const Model& model, const Step& step, std::ostream& out) {
   out << '\n';
   if (step.has_procedure && step.kind != StepKind::Static) {
     const StaticProcedure& p = step.procedure;
-    out << (step.kind == StepKind::HeatTransfer ? "*HEAT TRANSFER" : "*COUPLED THERMAL-ELECTRICAL")
-        << ", STEADY STATE\n"
+    out << procedure_keyword(step.kind) << ", STEADY STATE\n"
         << num(p.initial_increment) << ", " << num(p.total_time) << '\n';
   } else if (step.has_procedure) {
     const StaticProcedure& p = step.procedure;
