@@ -1,3 +1,4 @@
+#include <chrono>
 #include <map>
 #include <string>
 
@@ -57,7 +58,12 @@ int mesh_command(const MeshArgs& args) {
   const std::map<std::string, std::string> params = parse_params(args);
   PluginLibraries libraries;  // outlives the registry: plug-in code lives in it
   const ElementRegistry registry = make_registry(libraries);
+  // Some builders solve (the bolted flange calibrates its preload), so say what is running.
+  fmt::print(stderr, "building {} ...\n", args.builder);
+  const auto start = std::chrono::steady_clock::now();
   const mesher::BuildResult result = mesher::run_builder(args.builder, params, registry);
+  const std::chrono::duration<double> took = std::chrono::steady_clock::now() - start;
+  fmt::print(stderr, "built {} in {:.1f} s\n", args.builder, took.count());
   AtomicTextFile file(args.output);
   write_inp(result.model, file.stream());
   file.commit();
