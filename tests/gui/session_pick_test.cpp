@@ -307,6 +307,42 @@ TEST_F(PickTest, MarkersOfHiddenNodesAndEdgesAreNotDrawn) {
   EXPECT_EQ(scene.frame(400, 300, from_minus_x).overlay.triangles.size(), plain + 4 * 6);
 }
 
+// The markers' depth test rasterises only the faces around the selection (issue 7: the picker was
+// rebuilt over the whole skin every frame while something was selected). Inside its region a
+// region picker must answer exactly like the whole one. An 8 x 4 x 4 box seen from iso.
+TEST(PickRegion, ARegionPickerAnswersLikeTheWholePickerInsideItsRegion) {
+  ElementRegistry registry;
+  register_builtin_elements(registry);
+  Document doc(registry);
+  BlockInput box;
+  box.size = {8, 4, 4};
+  box.divisions = {8, 4, 4};
+  box.type = "C3D8";
+  box.name = "BOX";
+  doc.apply(block_command(doc.model(), box, registry));
+  Scene scene;
+  scene.rebuild(doc, {});
+  scene.frame(640, 480, {});
+  const Picker whole(scene);
+  ASSERT_EQ(whole.face_count(), 2u * (8 * 4 + 8 * 4 + 4 * 4));  // the skin: 160 faces
+  int visible = 0;
+  for (int n = 0; n < doc.model().node_count(); ++n) {
+    const auto p = scene.screen_position(n);
+    const render::PixelRect region{int(std::floor(p[0])), int(std::floor(p[1])), 1, 1};
+    const Picker part(scene, region);
+    ASSERT_EQ(part.node_visible(n), whole.node_visible(n)) << "node " << n;
+    visible += whole.node_visible(n) ? 1 : 0;
+    // About one face's neighbourhood, not the skin: at most the 12 faces around a node (a
+    // projected face spans ~40 px here, so only the faces meeting the node's pixel +- 3 count).
+    EXPECT_LE(part.face_count(), 12u) << "node " << n;
+    EXPECT_GE(part.face_count(), whole.node_visible(n) ? 1u : 0u);
+  }
+  // Seen from iso 3 sides show: (9 x 5) + (9 x 5) + (5 x 5) - 9 - 5 - 5 + 1 = 97 nodes.
+  EXPECT_EQ(visible, 97);
+  // A region in the empty corner of the picture rasterises no face at all.
+  EXPECT_EQ(Picker(scene, render::PixelRect{0, 0, 4, 4}).face_count(), 0u);
+}
+
 TEST_F(PickTest, TheSelectionIsDescribedWithIdsCoordinatesAndValues) {
   Results results;
   results.increments.emplace_back();

@@ -64,6 +64,35 @@ void outline_face(const Scene& scene, const Picker& picker, int element, int fac
     outline_edge(scene, picker, corners[i], corners[(i + 1) % corners.size()], width, out);
 }
 
+// The screen bounding box of everything `selection` marks: its nodes, and the corners of its faces
+// and of its elements' skin faces.
+render::PixelRect selection_region(const Scene& scene, const Selection& selection) {
+  const Model& model = *scene.model();
+  double x0 = 1e300, x1 = -1e300, y0 = 1e300, y1 = -1e300;
+  const auto add = [&](int node) {
+    const std::array<double, 3> p = scene.screen_position(node);
+    x0 = std::min(x0, p[0]), x1 = std::max(x1, p[0]);
+    y0 = std::min(y0, p[1]), y1 = std::max(y1, p[1]);
+  };
+  for (int n : selection.nodes())
+    if (n >= 0 && n < model.node_count()) add(n);
+  for (const SurfaceFace& f : selection.faces()) {
+    if (f.element < 0 || f.element >= model.element_count()) continue;
+    const int count = int(scene.skin()->formulations()[f.element]->faces().size());
+    if (f.face >= 1 && f.face <= count)
+      for (int n : face_corner_nodes(scene, f.element, f.face - 1)) add(n);
+  }
+  const std::vector<int>& elements = selection.elements();
+  if (!elements.empty())
+    for (const render::SkinModel::LayerSkin& layer : scene.skin()->layers())
+      for (const render::SkinFace& face : layer.faces)
+        if (std::binary_search(elements.begin(), elements.end(), face.element))
+          for (int n : face_corner_nodes(scene, face.element, face.face)) add(n);
+  if (x0 > x1) return {};  // nothing to mark: an empty region rasterises almost nothing
+  return {int(std::floor(x0)), int(std::floor(y0)), int(std::ceil(x1 - std::floor(x0))) + 1,
+          int(std::ceil(y1 - std::floor(y0))) + 1};
+}
+
 }  // namespace
 
 std::vector<int> face_corner_nodes(const Scene& scene, int element, int face) {
@@ -84,8 +113,9 @@ void append_highlight(const Scene& scene, const Selection& selection,
   const render::PixelRect& area = scene.last_frame().overlay.model;
   const double unit = std::max(2.0, double(scene.last_frame().point_size) * 0.5);
   const double width = std::max(2.0, unit);
-  // Only what is seen from the camera is marked: the same face-id buffer as picking.
-  const Picker picker(scene);
+  // Only what is seen from the camera is marked: the same face-id buffer as picking, built only
+  // around the selection (every lookup below stays within the reach of a selected point or edge).
+  const Picker picker(scene, selection_region(scene, selection));
   for (int n : selection.nodes()) {
     if (n < 0 || n >= model.node_count() || !picker.node_visible(n)) continue;
     const std::array<double, 3> p = scene.screen_position(n);

@@ -12,9 +12,29 @@ namespace {
 
 constexpr int kVisibilityReach = 2;  // pixels around a node searched for a face holding it
 
+// Whether the screen bounding box of a face's corners meets `region` grown by the reach (and a
+// pixel for the rasteriser's rounding).
+bool meets(const std::vector<std::array<double, 3>>& corners, const render::PixelRect& region) {
+  const double grow = kVisibilityReach + 1.0;
+  double x0 = corners[0][0], x1 = x0, y0 = corners[0][1], y1 = y0;
+  for (const auto& c : corners) {
+    x0 = std::min(x0, c[0]), x1 = std::max(x1, c[0]);
+    y0 = std::min(y0, c[1]), y1 = std::max(y1, c[1]);
+  }
+  return x1 >= region.x - grow && x0 <= region.x + region.width + grow &&
+         y1 >= region.y - grow && y0 <= region.y + region.height + grow;
+}
+
 }  // namespace
 
-Picker::Picker(const Scene& scene) : scene_(scene) {
+Picker::Picker(const Scene& scene) : scene_(scene) { build(nullptr); }
+
+Picker::Picker(const Scene& scene, const render::PixelRect& region) : scene_(scene) {
+  build(&region);
+}
+
+void Picker::build(const render::PixelRect* region) {
+  const Scene& scene = scene_;
   if (!scene.skin() || !scene.model()) return;
   const render::Frame& frame = scene.last_frame();
   width_ = frame.width;
@@ -22,8 +42,13 @@ Picker::Picker(const Scene& scene) : scene_(scene) {
   ids_.assign(std::size_t(width_) * height_, -1);
   depth_.assign(ids_.size(), std::numeric_limits<float>::max());
   const Model& model = *scene.model();
+  std::vector<std::array<double, 3>> corners;
   for (const render::SkinModel::LayerSkin& layer : scene.skin()->layers())
     for (const render::SkinFace& face : layer.faces) {
+      corners.clear();
+      for (int n : face_corner_nodes(scene, face.element, face.face))
+        corners.push_back(scene.screen_position(n));
+      if (region && !meets(corners, *region)) continue;
       const int id = int(faces_.size());
       faces_.push_back(face);
       const FaceDef& def = scene.skin()->formulations()[face.element]->faces()[face.face];
@@ -31,9 +56,6 @@ Picker::Picker(const Scene& scene) : scene_(scene) {
       std::vector<int> all;
       for (int k : def.nodes) all.push_back(nodes[k]);
       face_nodes_.push_back(std::move(all));
-      std::vector<std::array<double, 3>> corners;
-      for (int n : face_corner_nodes(scene, face.element, face.face))
-        corners.push_back(scene.screen_position(n));
       rasterise(id, corners);
     }
 }
