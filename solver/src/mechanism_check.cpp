@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
+#include <optional>
 #include <string>
 
 #include <Eigen/Eigenvalues>
@@ -12,7 +13,6 @@ namespace {
 
 using Matrix6 = Eigen::Matrix<double, 6, 6>;
 using Vector6 = Eigen::Matrix<double, 6, 1>;
-
 
 std::string node_list(const Model& model, const PreparedModel& prepared,
                       const std::vector<int>& nodes) {
@@ -39,6 +39,42 @@ std::string format_vector(Eigen::Vector3d v, double scale) {
   char buffer[96];
   std::snprintf(buffer, sizeof buffer, "(%.4g, %.4g, %.4g)", v.x(), v.y(), v.z());
   return buffer;
+}
+
+// H = sum R_p^T R_p over the part's nodes, R_p = [I, -[p]x] mapping a rigid motion (t, omega) to
+// the node's displacement t + omega x p (same centroid and scaling as the restraints).
+Matrix6 node_motions(const Model& model, const PreparedModel& prepared,
+                     const std::vector<int>& part, const Eigen::Vector3d& centroid, double size) {
+  Matrix6 H = Matrix6::Zero();
+  for (int a : part) {
+    const Vec3& x = model.coords[prepared.node_of_active[a]];
+    const Eigen::Vector3d p = (Eigen::Vector3d(x[0], x[1], x[2]) - centroid) / size;
+    Eigen::Matrix<double, 3, 6> R;
+    R.leftCols<3>().setIdentity();
+    R.rightCols<3>() << 0.0, p.z(), -p.y(), -p.z(), 0.0, p.x(), p.y(), -p.x(), 0.0;
+    H.noalias() += R.transpose() * R;
+  }
+  return H;
+}
+
+// A rigid motion every restraint allows (G m = 0) that moves some node (H m != 0), if any. When
+// all nodes lie on one line (a truss bar, a row of bar nodes) the spin about that line moves no
+// node: it is no mechanism of the discrete model, so only motions in the range of H are tested.
+std::optional<Vector6> free_rigid_motion(const Matrix6& G, const Matrix6& H) {
+  const Eigen::SelfAdjointEigenSolver<Matrix6> moves(H);
+  int still = 0;  // rigid motions that move no node
+  while (still < 6 && !(moves.eigenvalues()[still] > 1e-12 * moves.eigenvalues()[5])) ++still;
+  if (still == 0) {
+    const Eigen::SelfAdjointEigenSolver<Matrix6> eigen(G);
+    if (eigen.eigenvalues()[0] > 1e-12 * eigen.eigenvalues()[5]) return std::nullopt;
+    return Vector6(eigen.eigenvectors().col(0));
+  }
+  const Eigen::MatrixXd Q = moves.eigenvectors().rightCols(6 - still);
+  const Eigen::MatrixXd Gq = Q.transpose() * G * Q;
+  const Eigen::SelfAdjointEigenSolver<Eigen::MatrixXd> eigen(Gq);
+  const Eigen::Index last = Gq.rows() - 1;
+  if (eigen.eigenvalues()[0] > 1e-12 * eigen.eigenvalues()[last]) return std::nullopt;
+  return Vector6(Q * eigen.eigenvectors().col(0));
 }
 
 }  // namespace
@@ -139,9 +175,10 @@ void check_rigid_body_modes(const Model& model, const PreparedModel& prepared,
 
     // Rotations: the restraints must not all be satisfied by a rigid rotation.
     if (!((hi - lo).maxCoeff() > 0.0)) continue;  // a single point: translations are all it has
-    const Eigen::SelfAdjointEigenSolver<Matrix6> eigen(G);
-    if (eigen.eigenvalues()[0] > 1e-12 * eigen.eigenvalues()[5]) continue;
-    const Vector6 mode = eigen.eigenvectors().col(0);
+    const std::optional<Vector6> free =
+        free_rigid_motion(G, node_motions(model, prepared, part, centroid, size));
+    if (!free) continue;
+    const Vector6 mode = *free;
     const Eigen::Vector3d omega = mode.tail<3>();
     if (omega.norm() < 1e-6) continue;  // a translation; already excluded above
     const Eigen::Vector3d t = mode.head<3>();

@@ -180,6 +180,34 @@ TEST(TrussT3D2, TwoBarTrussMatchesTheHandCalculation) {
   EXPECT_NEAR(RA[1], -N[0] * t1[1], 1e-12 * N.norm());
 }
 
+// A bar's nodes lie on one line: the spin about it moves no node, so a bar held at both ends is no
+// mechanism (the rigid-body check used to refuse it as "can rotate freely"); held at one end only
+// it swings about that end and is refused. Two bars, loaded along their axis at the middle node
+// (held across, where the straight bars give no stiffness), held at both ends:
+// u = F L1 L2 / (E A L) = 100 x 0.5 x 0.5 / (2e5 x 0.05 x 1), to 1e-12.
+TEST(TrussT3D2, ABarHeldAtBothEndsSolvesAndAtOneEndIsRefused) {
+  const auto deck = [](const std::string& supports) {
+    return "*NODE\n1, 0.5, 2, 0.5\n2, 1, 2, 0.5\n3, 1.5, 2, 0.5\n"
+           "*ELEMENT, TYPE=T3D2, ELSET=BAR\n1, 1, 2\n2, 2, 3\n"
+           "*MATERIAL, NAME=STEEL\n*ELASTIC\n2e5, 0.3\n"
+           "*SOLID SECTION, ELSET=BAR, MATERIAL=STEEL\n0.05\n"
+           "*BOUNDARY\n" +
+           supports + "*STEP\n*STATIC\n*CLOAD\n2, 1, 100.\n*END STEP\n";
+  };
+  Model model;
+  const Results results = test::solve_deck("bar", deck("1, 1, 3\n2, 2, 3\n3, 1, 3\n"), &model);
+  const double expected = 100.0 * 0.5 * 0.5 / (2e5 * 0.05 * 1.0);
+  EXPECT_NEAR(results.increments.back().U[model.node_index(2)][0], expected, 1e-12 * expected);
+  try {
+    test::solve_deck("bar", deck("1, 1, 3\n"));
+    FAIL() << "a bar held at one end was solved";
+  } catch (const InputError& error) {
+    EXPECT_NE(std::string(error.what()).find("rotate freely about the axis through (0.5, 2, 0.5)"),
+              std::string::npos)
+        << error.what();
+  }
+}
+
 // --- bad input ----------------------------------------------------------------------------------
 
 std::string one_cps4(const std::string& thickness, const std::string& step_lines) {
