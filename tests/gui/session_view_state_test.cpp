@@ -7,6 +7,9 @@
 #include <cstdio>
 #include <fstream>
 #include <sstream>
+#include <string>
+
+#include <unistd.h>
 
 #include "box_model.hpp"
 #include "session/document.hpp"
@@ -45,7 +48,10 @@ class GuiViewStateTest : public ::testing::Test {
   }
   ElementRegistry registry;
   Document doc;
-  const std::string path = ::testing::TempDir() + "styk_view_state_test.inp";
+  // One file per test and process: ctest runs the cases in parallel, other build trees too.
+  const std::string path = ::testing::TempDir() + "styk_view_state_" +
+                           ::testing::UnitTest::GetInstance()->current_test_info()->name() + "_" +
+                           std::to_string(::getpid()) + ".inp";
 };
 
 TEST_F(GuiViewStateTest, LayersAndFilterComeBackAfterSaveAndOpen) {
