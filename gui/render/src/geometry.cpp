@@ -5,6 +5,7 @@
 #include <limits>
 
 #include "face_shape.hpp"
+#include "line_geometry.hpp"
 
 namespace styk::render {
 namespace {
@@ -313,8 +314,13 @@ SkinModel::SkinModel(const Model& model, const ElementRegistry& registry,
   std::vector<char> used(model.coords.size(), 0), any(model.coords.size(), 0);
   for (const Layer& layer : layers) {
     if (!layer.visible) continue;
-    LayerSkin skin{layer.name, layer.color, filter_elements(model, layer.elements, filter), {}, {}};
+    LayerSkin skin;
+    skin.name = layer.name;
+    skin.color = layer.color;
+    skin.elements = filter_elements(model, layer.elements, filter);
     skin.faces = extract_skin(model, formulations_, skin.elements);
+    for (int e : skin.elements)
+      if (is_line_element(*formulations_[e])) skin.lines.push_back(e);
     std::fill(used.begin(), used.end(), 0);
     for (int e : skin.elements) {
       const int* nodes = model.element_nodes(e);
@@ -372,6 +378,7 @@ FrameGeometry build_geometry(const SkinModel& skin, const GeometryRequest& rq) {
     for (const SkinFace& face : layer.faces) tessellate.face(face, layer.color, edges);
     if (!emit_edges(g, edges, layer.color, crease_cos)) g.closed = false;
     if (!tessellate.oriented()) g.closed = false;
+    add_line_elements(skin, layer, rq, g.origin, g.bars);
     if (!rq.points) continue;
     for (int node : layer.nodes) {
       float t = -1.0f;
@@ -391,6 +398,7 @@ FrameGeometry build_geometry(const SkinModel& skin, const GeometryRequest& rq) {
     }
     FrameGeometry base = build_geometry(skin, undeformed);
     g.outline = std::move(base.features);
+    g.outline.insert(g.outline.end(), base.bars.begin(), base.bars.end());  // undeformed bars
     for (Vertex& v : g.outline)
       v.color[0] = kOutline.r, v.color[1] = kOutline.g, v.color[2] = kOutline.b;
   }
@@ -401,6 +409,7 @@ FrameGeometry build_geometry(const SkinModel& skin, const GeometryRequest& rq) {
   grow(g, g.points);
   grow(g, g.outline);
   grow(g, g.edges);
+  grow(g, g.bars);
   if (g.lower[0] > g.upper[0]) g.lower = g.upper = {0, 0, 0};
   return g;
 }

@@ -35,15 +35,20 @@ GLuint compile(const GladGLContext& gl, GLenum kind, const char* source) {
   return shader;
 }
 
-GlProgram link(const GladGLContext& gl, const char* vertex, const char* fragment) {
+// `geometry` may be null: a program of a vertex and a fragment stage.
+GlProgram link(const GladGLContext& gl, const char* vertex, const char* fragment,
+               const char* geometry = nullptr) {
   const GLuint vs = compile(gl, GL_VERTEX_SHADER, vertex);
   const GLuint fs = compile(gl, GL_FRAGMENT_SHADER, fragment);
+  const GLuint gs = geometry ? compile(gl, GL_GEOMETRY_SHADER, geometry) : 0;
   GlProgram program(gl, gl.CreateProgram());
   gl.AttachShader(program.get(), vs);
   gl.AttachShader(program.get(), fs);
+  if (gs) gl.AttachShader(program.get(), gs);
   gl.LinkProgram(program.get());
   gl.DeleteShader(vs);
   gl.DeleteShader(fs);
+  if (gs) gl.DeleteShader(gs);
   GLint ok = 0;
   gl.GetProgramiv(program.get(), GL_LINK_STATUS, &ok);
   if (!ok) {
@@ -54,10 +59,12 @@ GlProgram link(const GladGLContext& gl, const char* vertex, const char* fragment
   return program;
 }
 
-// The uniforms of the scene program, looked up once after linking.
+// The uniforms of the scene and bar programs, looked up once after linking (-1 for those a
+// program does not have: setting them does nothing).
 struct SceneUniforms {
   GLint view, projection, point_size, smooth, bands, palette;
   GLint lit, use_field, use_override, override_color, line_shade;
+  GLint viewport, line_width;  // bar program only
 
   SceneUniforms(const GladGLContext& gl, GLuint p)
       : view(gl.GetUniformLocation(p, "u_view")),
@@ -70,7 +77,9 @@ struct SceneUniforms {
         use_field(gl.GetUniformLocation(p, "u_use_field")),
         use_override(gl.GetUniformLocation(p, "u_use_override")),
         override_color(gl.GetUniformLocation(p, "u_override")),
-        line_shade(gl.GetUniformLocation(p, "u_line_shade")) {}
+        line_shade(gl.GetUniformLocation(p, "u_line_shade")),
+        viewport(gl.GetUniformLocation(p, "u_viewport")),
+        line_width(gl.GetUniformLocation(p, "u_line_width")) {}
 };
 
 // How one primitive list is coloured.
@@ -89,7 +98,9 @@ struct GlRenderer::Impl {
   GladGLContext gl{};
   GlProgram scene_program;
   GlProgram overlay_program;
+  GlProgram bar_program;  // line elements, widened to quads by a geometry stage
   std::optional<SceneUniforms> scene_uniforms;
+  std::optional<SceneUniforms> bar_uniforms;
   GLint overlay_size = -1;
   std::optional<GpuGeometry> geometry;  // the retained vertex arrays of the model
   GlVertexArray overlay_array;
@@ -98,7 +109,9 @@ struct GlRenderer::Impl {
   void init() {
     scene_program = link(gl, shaders::kSceneVertex, shaders::kSceneFragment);
     overlay_program = link(gl, shaders::kOverlayVertex, shaders::kOverlayFragment);
+    bar_program = link(gl, shaders::kBarVertex, shaders::kSceneFragment, shaders::kBarGeometry);
     scene_uniforms.emplace(gl, scene_program.get());
+    bar_uniforms.emplace(gl, bar_program.get());
     overlay_size = gl.GetUniformLocation(overlay_program.get(), "u_size");
     geometry.emplace(gl);
     overlay_array = make_vertex_array(gl);
@@ -115,8 +128,7 @@ struct GlRenderer::Impl {
     gl.BindVertexArray(0);
   }
 
-  void set_style(const Style& style) {
-    const SceneUniforms& u = *scene_uniforms;
+  void set_style(const SceneUniforms& u, const Style& style) {
     gl.Uniform1i(u.lit, style.lit);
     gl.Uniform1i(u.use_field, style.use_field);
     gl.Uniform1i(u.use_override, style.override_color);
@@ -126,13 +138,13 @@ struct GlRenderer::Impl {
 
   void draw_lines(Primitives lines, const Style& style) {
     if (geometry->empty(lines)) return;
-    set_style(style);
+    set_style(*scene_uniforms, style);
     geometry->draw(lines);
   }
 
   void draw_faces(const Style& style) {
     if (geometry->empty(Primitives::Faces)) return;
-    set_style(style);
+    set_style(*scene_uniforms, style);
     // A closed skin seen from outside: its back faces are all hidden, so the rasteriser need not
     // fill them (about half the triangles). Triangles are clockwise seen from outside.
     if (geometry->closed()) {
@@ -149,13 +161,22 @@ struct GlRenderer::Impl {
     gl.FrontFace(GL_CCW);  // the GL default, for whoever shares the context (Qt)
   }
 
-  void draw_scene(const FrameView& f) {
-    const PixelRect& area = f.overlay.model;
-    gl.Viewport(area.x, f.height - (area.y + area.height), area.width, area.height);
-    gl.Enable(GL_DEPTH_TEST);
-    gl.DepthFunc(GL_LEQUAL);
+  // The line elements as quads of f.bar_width pixels in the model area, with their own program
+  // (the scene program is in use again afterwards).
+  void draw_bars(const FrameView& f, const Style& style) {
+    if (geometry->empty(Primitives::Bars)) return;
+    gl.UseProgram(bar_program.get());
+    const SceneUniforms& u = *bar_uniforms;
+    set_view_uniforms(u, f);
+    gl.Uniform2f(u.viewport, float(f.overlay.model.width), float(f.overlay.model.height));
+    gl.Uniform1f(u.line_width, f.bar_width);
+    set_style(u, style);
+    geometry->draw(Primitives::Bars);
     gl.UseProgram(scene_program.get());
-    const SceneUniforms& u = *scene_uniforms;
+  }
+
+  // Camera and colour scale, for the program in use.
+  void set_view_uniforms(const SceneUniforms& u, const FrameView& f) {
     gl.UniformMatrix4fv(u.view, 1, GL_FALSE, f.camera.view.data());
     gl.UniformMatrix4fv(u.projection, 1, GL_FALSE, f.camera.projection.data());
     gl.Uniform1f(u.point_size, f.point_size);
@@ -167,6 +188,15 @@ struct GlRenderer::Impl {
       palette[3 * i] = c.r, palette[3 * i + 1] = c.g, palette[3 * i + 2] = c.b;
     }
     gl.Uniform3fv(u.palette, kMaxBands, palette);
+  }
+
+  void draw_scene(const FrameView& f) {
+    const PixelRect& area = f.overlay.model;
+    gl.Viewport(area.x, f.height - (area.y + area.height), area.width, area.height);
+    gl.Enable(GL_DEPTH_TEST);
+    gl.DepthFunc(GL_LEQUAL);
+    gl.UseProgram(scene_program.get());
+    set_view_uniforms(*scene_uniforms, f);
 
     const bool field = f.has_field;
     const float layer_line_shade = 0.55f;  // layer colours are light: darken them as lines
@@ -190,6 +220,10 @@ struct GlRenderer::Impl {
         draw_lines(Primitives::Edges, Style{false, false, true, kInk, 1.0f});
         break;
     }
+    // Line elements in every mode but points (there, their nodes are drawn like all others): in
+    // the layer colour as it is (not darkened like mesh lines: a bar is the element itself), or
+    // in the contour colours.
+    if (f.mode != DisplayMode::Points) draw_bars(f, Style{false, field, false, {}, 1.0f});
     draw_lines(Primitives::Outline, Style{false, false, true, kOutline, 1.0f});
   }
 

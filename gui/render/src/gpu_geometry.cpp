@@ -59,6 +59,7 @@ void GpuGeometry::upload(const FrameGeometry& g) {
   put(Primitives::Features, g.features);
   put(Primitives::Outline, g.outline);
   put(Primitives::Points, g.points);
+  put(Primitives::Bars, g.bars);
   List& faces = lists_[index(Primitives::Faces)];
   gl_.BindVertexArray(faces.vertex_array.get());
   fill(gl_, GL_ELEMENT_ARRAY_BUFFER, g.triangles);

@@ -1,7 +1,7 @@
 // Private: the GL copy of a FrameGeometry. Each primitive list (faces with their index buffer,
-// mesh edges, feature lines, undeformed outline, node points) has its own vertex array object
-// and buffers, made once; upload() replaces their contents, draw() only binds and draws. This is
-// what lets the desktop view orbit without sending the model to the GL again.
+// mesh edges, feature lines, undeformed outline, node points, line elements) has its own vertex
+// array object and buffers, made once; upload() replaces their contents, draw() only binds and
+// draws. This is what lets the desktop view orbit without sending the model to the GL again.
 #pragma once
 
 #include <array>
@@ -11,7 +11,7 @@
 
 namespace styk::render {
 
-enum class Primitives { Faces, Edges, Features, Outline, Points };
+enum class Primitives { Faces, Edges, Features, Outline, Points, Bars };
 
 class GpuGeometry {
  public:
@@ -20,7 +20,8 @@ class GpuGeometry {
 
   // Copies every primitive list of `geometry` into the GL buffers (the previous contents go).
   void upload(const FrameGeometry& geometry);
-  // Draws one list as triangles, lines or points with the program in use. Nothing when empty.
+  // Draws one list as triangles, lines (bars too: the program in use widens them) or points with
+  // the program in use. Nothing when empty.
   void draw(Primitives which) const;
   bool empty(Primitives which) const { return lists_[index(which)].count == 0; }
   // See FrameGeometry::closed: back faces may be culled.
@@ -36,7 +37,7 @@ class GpuGeometry {
   static std::size_t index(Primitives which) { return static_cast<std::size_t>(which); }
 
   const GladGLContext& gl_;
-  std::array<List, 5> lists_;
+  std::array<List, 6> lists_;
   bool closed_ = false;
 };
 

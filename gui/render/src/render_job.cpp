@@ -241,6 +241,7 @@ Frame RenderJob::frame(double fraction) const {
   frame.has_field = static_cast<bool>(field_);
   frame.colors = colors_;
   frame.point_size = float(std::max(2, text_scale_for(options_.height) + 1));
+  frame.bar_width = frame.point_size + 1.0f;  // a bar stands out from the 1 px mesh lines
   return frame;
 }
 

@@ -69,6 +69,60 @@ void main() {
 }
 )";
 
+// Line elements: the scene's vertex stage with outputs for a geometry stage that widens each
+// segment into a screen-space quad of u_line_width pixels (core profile GL draws wide GL_LINES
+// only up to 1 px on some drivers), with square caps so the segments of a 3-node line join. The
+// quad keeps the depth of its segment, so solids in front hide it. The scene's fragment stage
+// colours it (unlit: layer colour or contour colour per pixel).
+inline constexpr const char* kBarVertex = R"(#version 330 core
+layout(location = 0) in vec3 a_position;
+layout(location = 2) in vec3 a_color;
+layout(location = 3) in float a_t;
+uniform mat4 u_view;
+uniform mat4 u_projection;
+out vec3 g_color;
+out float g_t;
+void main() {
+  g_color = a_color;
+  g_t = a_t;
+  gl_Position = u_projection * u_view * vec4(a_position, 1.0);
+}
+)";
+
+inline constexpr const char* kBarGeometry = R"(#version 330 core
+layout(lines) in;
+layout(triangle_strip, max_vertices = 4) out;
+in vec3 g_color[];
+in float g_t[];
+uniform vec2 u_viewport;
+uniform float u_line_width;
+out vec3 v_normal;
+out vec3 v_color;
+out float v_t;
+void corner(int end, vec2 offset_pixels) {
+  vec4 p = gl_in[end].gl_Position;
+  gl_Position = vec4(p.xy + offset_pixels * 2.0 / u_viewport * p.w, p.zw);
+  v_normal = vec3(0.0);
+  v_color = g_color[end];
+  v_t = g_t[end];
+  EmitVertex();
+}
+void main() {
+  vec4 a = gl_in[0].gl_Position, b = gl_in[1].gl_Position;
+  if (a.w <= 0.0 || b.w <= 0.0) return;
+  vec2 d = (b.xy / b.w - a.xy / a.w) * 0.5 * u_viewport;
+  float len = length(d);
+  vec2 along = len > 1e-6 ? d / len : vec2(1.0, 0.0);
+  vec2 across = vec2(-along.y, along.x) * 0.5 * u_line_width;
+  along *= 0.5 * u_line_width;
+  corner(0, -along + across);
+  corner(0, -along - across);
+  corner(1, along + across);
+  corner(1, along - across);
+  EndPrimitive();
+}
+)";
+
 inline constexpr const char* kOverlayVertex = R"(#version 330 core
 layout(location = 0) in vec2 a_position;
 layout(location = 1) in vec3 a_color;

@@ -72,6 +72,19 @@ int face_corner_count(const TElement& element, const FaceDef& face) {
              : 4;
 }
 
+bool is_line_element(const TElement& element) {
+  const int nodes = element.node_count();
+  return element.faces().empty() && (nodes == 2 || nodes == 3);
+}
+
+std::vector<int> line_node_order(const TElement& element) {
+  const std::vector<Vec3>& xi = element.natural_nodes();
+  std::vector<int> order(xi.size());
+  for (std::size_t k = 0; k < order.size(); ++k) order[k] = static_cast<int>(k);
+  std::stable_sort(order.begin(), order.end(), [&xi](int a, int b) { return xi[a][0] < xi[b][0]; });
+  return order;
+}
+
 std::vector<const TElement*> element_formulations(const Model& model,
                                                   const ElementRegistry& registry) {
   std::vector<const TElement*> out(model.elements.size(), nullptr);

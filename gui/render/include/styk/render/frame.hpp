@@ -37,6 +37,7 @@ struct FrameView {
   bool has_field = false;
   ColorScale colors;  // meaningful when has_field
   float point_size = 3.0f;
+  float bar_width = 3.0f;  // pixels across a drawn line element (truss)
 };
 
 // One complete picture: the view and the geometry (the vertex arrays; expensive to build and to

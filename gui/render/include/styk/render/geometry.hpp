@@ -1,6 +1,7 @@
 // The CPU side of a picture: the skins of the visible layers (built once) and, per frame, the
 // vertex arrays the GL renderer draws (triangles, mesh edges, feature lines, the undeformed
-// outline, node points) at a deformation scale, coloured by layer or by a scalar field.
+// outline, line elements, node points) at a deformation scale, coloured by layer or by a scalar
+// field.
 #pragma once
 
 #include <array>
@@ -35,9 +36,13 @@ struct FrameGeometry {
   // Indices into face_vertices, 3 per triangle, turning clockwise as seen from outside the
   // element the face belongs to (whatever the node order of the formulation's faces).
   std::vector<std::uint32_t> triangles;
+  // Line pairs: the line elements (trusses, see is_line_element), one segment per pair of
+  // consecutive nodes along the element, in the layer colour or with the field's t per node.
+  // The outline below holds them undeformed too.
+  std::vector<Vertex> bars;
   std::vector<Vertex> edges;            // line pairs: every edge of every skin face, once
   std::vector<Vertex> features;         // line pairs: boundary, non-manifold and crease edges
-  std::vector<Vertex> outline;          // line pairs: feature edges of the undeformed shape
+  std::vector<Vertex> outline;          // line pairs: feature edges, bars of the undeformed shape
   std::vector<Vertex> points;           // the nodes of the visible elements
   std::array<float, 3> lower{0, 0, 0};  // bounds of everything above, relative to origin
   std::array<float, 3> upper{0, 0, 0};
@@ -57,6 +62,7 @@ class SkinModel {
     Rgb color;
     std::vector<int> elements;    // visible elements of the layer (after the filter)
     std::vector<SkinFace> faces;  // their skin
+    std::vector<int> lines;       // the line elements among them (no faces: drawn as bars)
     std::vector<int> nodes;       // their nodes, ascending
   };
 

@@ -34,4 +34,12 @@ std::vector<SkinFace> extract_skin(const Model& model,
 // first three (in natural coordinates) is a mid-edge node of a triangle, not a corner.
 int face_corner_count(const TElement& element, const FaceDef& face);
 
+// Whether a formulation is a line element (a truss such as T3D2): no faces and 2 or 3 nodes. It
+// has no skin; the renderer draws it as segments through its nodes instead.
+bool is_line_element(const TElement& element);
+
+// The local nodes of a line element in their order along the line (ascending natural xi), e.g.
+// {0, 2, 1} for a 3-node line listing its middle node last.
+std::vector<int> line_node_order(const TElement& element);
+
 }  // namespace styk::render
