@@ -7,6 +7,7 @@
 #include <sstream>
 
 #include "session/input_checks.hpp"
+#include "session/orientation_input.hpp"
 #include "session/validation.hpp"
 
 namespace styk::gui {
@@ -93,18 +94,10 @@ std::unique_ptr<Command> equation_command(const Model& model,
 
 Transform checked_transform(const Model& model, const TransformInput& in, int replacing) {
   const NodeSet& set = existing_nset(model, in.nset);
-  for (int k = 0; k < 3; ++k) {
-    check_finite(in.a[k], "point a");
-    check_finite(in.b[k], "point b");
-  }
-  const double scale = std::max({norm(in.a), norm(in.b), 1e-300});
-  if (!in.cylindrical) {
-    if (norm(in.a) < 1e-12 * scale) refuse("point a must not be the origin (it gives local x)");
-    if (norm(cross(in.a, in.b)) < 1e-9 * norm(in.a) * norm(in.b) || norm(in.b) == 0.0)
-      refuse("point b must not lie on the line of a (it gives the local x-y plane)");
-  } else {
+  const LocalAxes axes = local_axes(in.cylindrical, in.a, in.b);  // shared with *ORIENTATION
+  if (in.cylindrical) {
+    const double scale = std::max({norm(in.a), norm(in.b), 1e-300});
     const Vec3 axis = minus(in.b, in.a);
-    if (norm(axis) < 1e-12 * scale) refuse("the two axis points a and b must differ");
     for (int n : set.nodes) {
       const double distance = norm(cross(minus(model.coords[n], in.a), axis)) / norm(axis);
       if (distance < 1e-9 * std::max(scale, 1.0))
@@ -124,9 +117,7 @@ Transform checked_transform(const Model& model, const TransformInput& in, int re
   }
   Transform t;
   t.nset = set.name;
-  t.axes.system = in.cylindrical ? CoordinateSystem::Cylindrical : CoordinateSystem::Rectangular;
-  t.axes.a = in.a;
-  t.axes.b = in.b;
+  t.axes = axes;
   return t;
 }
 

@@ -5,6 +5,7 @@
 
 #include "session/input_checks.hpp"
 #include "session/load_groups.hpp"
+#include "session/orientation_input.hpp"
 
 namespace styk::gui {
 namespace {
@@ -149,6 +150,12 @@ std::unique_ptr<Command> delete_command(const Model& model, const Entry& entry) 
           model, "Delete the nodal fluxes of " + model.steps[i].name, [i](auto& m) -> auto& {
             return m.steps.at(i).cfluxes;
           });
+    case EntryKind::StepDfluxes:
+      check_index(model.steps, i, "step");
+      return clear_list<DistributedLoad>(
+          model, "Delete the face fluxes of " + model.steps[i].name, [i](auto& m) -> auto& {
+            return m.steps.at(i).dfluxes;
+          });
     case EntryKind::ContactPair:
       return delete_contact_pair(model, i);
     case EntryKind::Equation:
@@ -178,6 +185,17 @@ std::unique_ptr<Command> delete_command(const Model& model, const Entry& entry) 
           refuse("surface " + name + " is used by the contact pair " + p.slave + " / " + p.master +
                  "; delete the pair first");
       return erase_named(model, name, "surface", &Model::surfaces);
+    case EntryKind::Orientation:
+      if (const std::string user = orientation_user(model, name); !user.empty()) {
+        std::string pair;
+        for (const ContactPair& p : model.contact_pairs)
+          if (p.interaction == user) pair = " (contact pair " + p.slave + " / " + p.master + ")";
+        refuse("orientation " + name +
+               " gives the slip directions of the anisotropic friction of "
+               "interaction " +
+               user + pair + "; change that friction first");
+      }
+      return erase_named(model, name, "orientation", &Model::orientations);
   }
   refuse("this entry cannot be deleted");
 }

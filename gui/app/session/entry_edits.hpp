@@ -1,7 +1,8 @@
 // Editing and deleting what the model tree lists: an Entry names one item (a material, a step's
 // loads, a contact pair, a set, ...); delete_command() removes it undoably or refuses with the
 // reason when something still uses it (a material a section names, an element set with a
-// section, a surface of a contact pair, a node set a *TRANSFORM names); the *_edit_command()s
+// section, a surface of a contact pair, a node set a *TRANSFORM names, an orientation an
+// anisotropic friction names); the *_edit_command()s
 // replace an entry with what its dialog now says.
 #pragma once
 
@@ -31,13 +32,16 @@ enum class EntryKind {
   NodeSet,      // name
   ElementSet,   // name
   Surface,      // name
+  StepDfluxes,  // index = the step: its *DFLUX face fluxes (heat transfer steps)
+  Orientation,  // name (refused while an anisotropic friction names it)
 };
 
 struct Entry {
   EntryKind kind = EntryKind::Material;
   int index = -1;
   std::string name;
-  // For the per-node lists (boundary conditions, loads, pressures, temperatures, fluxes): -1 the
+  // For the per-node lists (boundary conditions, loads, pressures, face fluxes, temperatures, nodal
+  // fluxes): -1 the
   // whole list, otherwise one group of it (session/load_groups.hpp: what one dialog made).
   int item = -1;
 };

@@ -29,6 +29,10 @@ auto& pressures_in(M& m, int step) {
   return m.steps.at(step).dloads;
 }
 template <typename M>
+auto& face_fluxes_in(M& m, int step) {
+  return m.steps.at(step).dfluxes;
+}
+template <typename M>
 auto& temperatures_in(M& m, int step) {
   return step < 0 ? m.initial_temperatures : m.steps.at(step).temperatures;
 }
@@ -41,6 +45,9 @@ ListOf<ConcentratedLoad> load_list(int step, int dof) {
 }
 ListOf<DistributedLoad> pressure_list(int step) {
   return [step](Model& m) -> std::vector<DistributedLoad>& { return pressures_in(m, step); };
+}
+ListOf<DistributedLoad> face_flux_list(int step) {
+  return [step](Model& m) -> std::vector<DistributedLoad>& { return face_fluxes_in(m, step); };
 }
 ListOf<NodalTemperature> temperature_list(int step) {
   return [step](Model& m) -> std::vector<NodalTemperature>& { return temperatures_in(m, step); };
@@ -164,6 +171,26 @@ std::unique_ptr<Command> pressure_edit_command(const Model& model, const Entry& 
                                           added, entry.index == in.step);
 }
 
+std::unique_ptr<Command> flux_edit_command(const Model& model, const Entry& entry,
+                                           const FluxInput& in) {
+  if (entry.kind != EntryKind::StepDfluxes) refuse("this entry is not a list of face fluxes");
+  const FaceGroup g = group_at(face_groups(model, entry), entry);
+  check_flux_step(model, in.step);
+  check_finite(in.magnitude, "flux");
+  if (in.magnitude == 0.0) refuse("a flux of 0 does nothing; enter a value");
+  // Empty surface and element set: the same faces as now.
+  NamedFaces target{g.faces,
+                    g.surface.empty() ? std::to_string(g.faces.size()) + " faces" : g.surface};
+  if (!in.surface.empty() || !in.elset.empty())
+    target = faces_of(model, in.surface, in.elset, in.face);
+  std::vector<DistributedLoad> added;
+  for (const SurfaceFace& f : target.faces) added.push_back({f.element, f.face, in.magnitude, {}});
+  return replace_entries<DistributedLoad>(
+      "Edit face flux into " + target.name, face_flux_list(entry.index),
+      face_fluxes_in(model, entry.index), g.positions, face_flux_list(in.step),
+      face_fluxes_in(model, in.step), added, entry.index == in.step);
+}
+
 std::unique_ptr<Command> temperature_edit_command(const Model& model, const Entry& entry,
                                                   const TemperatureInput& in) {
   const NodeGroup g = group_at(node_groups(model, entry), entry);
@@ -222,6 +249,12 @@ std::unique_ptr<Command> group_delete_command(const Model& model, const Entry& e
       const auto& now = pressures_in(model, entry.index);
       return replace_entries<DistributedLoad>(text, pressure_list(entry.index), now, g.positions,
                                               pressure_list(entry.index), now, {}, true);
+    }
+    case EntryKind::StepDfluxes: {
+      const FaceGroup g = group_at(face_groups(model, entry), entry);
+      const auto& now = face_fluxes_in(model, entry.index);
+      return replace_entries<DistributedLoad>(text, face_flux_list(entry.index), now, g.positions,
+                                              face_flux_list(entry.index), now, {}, true);
     }
     case EntryKind::ModelBoundaries:
     case EntryKind::StepBoundaries: {

@@ -143,7 +143,7 @@ bool is_load_list(EntryKind kind) {
   return kind == EntryKind::ModelBoundaries || kind == EntryKind::StepBoundaries ||
          kind == EntryKind::StepCloads || kind == EntryKind::StepDloads ||
          kind == EntryKind::StepTemperatures || kind == EntryKind::InitialTemperatures ||
-         kind == EntryKind::StepFluxes;
+         kind == EntryKind::StepFluxes || kind == EntryKind::StepDfluxes;
 }
 
 std::vector<NodeGroup> node_groups(const Model& model, const Entry& entry) {
@@ -175,10 +175,13 @@ std::vector<NodeGroup> node_groups(const Model& model, const Entry& entry) {
 }
 
 std::vector<FaceGroup> face_groups(const Model& model, const Entry& entry) {
-  if (entry.kind != EntryKind::StepDloads) refuse("this entry is not a list of pressures");
+  if (entry.kind != EntryKind::StepDloads && entry.kind != EntryKind::StepDfluxes)
+    refuse("this entry is not a list of pressures or face fluxes");
   if (entry.index < 0 || entry.index >= static_cast<int>(model.steps.size()))
     refuse("no step " + std::to_string(entry.index + 1) + " in the model");
-  const std::vector<DistributedLoad>& list = model.steps[entry.index].dloads;
+  const Step& step = model.steps[entry.index];
+  const std::vector<DistributedLoad>& list =
+      entry.kind == EntryKind::StepDloads ? step.dloads : step.dfluxes;
   // Faces as (element, face) keys, so runs and sets compare with <.
   using Key = std::pair<int, int>;
   std::vector<std::pair<std::string, std::vector<Key>>> sets;
@@ -228,12 +231,13 @@ std::vector<FaceGroup> face_groups(const Model& model, const Entry& entry) {
 
 std::vector<std::string> group_labels(const Model& model, const Entry& entry) {
   std::vector<std::string> labels;
-  if (entry.kind == EntryKind::StepDloads) {
+  if (entry.kind == EntryKind::StepDloads || entry.kind == EntryKind::StepDfluxes) {
+    const char* what = entry.kind == EntryKind::StepDloads ? ": pressure " : ": flux ";
     for (const FaceGroup& g : face_groups(model, entry)) {
       const std::string where = !g.surface.empty() ? g.surface
                                 : !g.elset.empty() ? g.elset + " S" + std::to_string(g.face)
                                                    : std::to_string(g.faces.size()) + " faces";
-      labels.push_back(where + ": pressure " + number(g.magnitude));
+      labels.push_back(where + what + number(g.magnitude));
     }
     return labels;
   }
@@ -264,6 +268,11 @@ CloadInput cload_input_of(const Model& model, const Entry& entry) {
 PressureInput pressure_input_of(const Model& model, const Entry& entry) {
   const FaceGroup g = group_at(face_groups(model, entry), entry);
   return {g.surface, g.elset, g.face > 0 ? g.face : 1, g.magnitude, entry.index};
+}
+
+FluxInput flux_input_of(const Model& model, const Entry& entry) {
+  if (entry.kind != EntryKind::StepDfluxes) refuse("this entry is not a list of face fluxes");
+  return pressure_input_of(model, entry);  // the same fields, found the same way
 }
 
 TemperatureInput temperature_input_of(const Model& model, const Entry& entry) {

@@ -1,10 +1,10 @@
 // The per-node lists of the model (boundary conditions, concentrated loads, nodal heat flows /
-// currents, pressures, temperatures) hold one entry per node and dof, as the deck does; a dialog
-// made many of them at once. A group is what one dialog made, found again from the list: the
-// entries of one value (and, for boundary conditions, a run of consecutive dofs with the same
-// nodes), with the node set or surface whose members they are when one matches. The model tree
-// shows the groups; each can be edited (its dialog filled from the group) or deleted, as one
-// undoable command, with the add dialogs' checks.
+// currents, pressures, face fluxes, temperatures) hold one entry per node and dof (or face), as
+// the deck does; a dialog made many of them at once. A group is what one dialog made, found again
+// from the list: the entries of one value (and, for boundary conditions, a run of consecutive dofs
+// with the same nodes), with the node set or surface whose members they are when one matches. The
+// model tree shows the groups; each can be edited (its dialog filled from the group) or deleted, as
+// one undoable command, with the add dialogs' checks.
 #pragma once
 
 #include <memory>
@@ -13,6 +13,7 @@
 
 #include "session/commands.hpp"
 #include "session/entry_edits.hpp"
+#include "session/flux_input.hpp"
 #include "session/thermal_input.hpp"
 #include "session/validation.hpp"
 #include "styk/core/model.hpp"
@@ -41,14 +42,17 @@ struct FaceGroup {
 bool is_load_list(EntryKind kind);
 // The groups of the list `entry` names (entry.kind + entry.index = the step; item ignored).
 std::vector<NodeGroup> node_groups(const Model& model, const Entry& entry);
-std::vector<FaceGroup> face_groups(const Model& model, const Entry& entry);  // StepDloads
-// One line per group for the model tree, e.g. "INNER: dof 11 = 100", "12 nodes: dofs 1-3 = 0".
+// StepDloads (pressures) or StepDfluxes (face fluxes).
+std::vector<FaceGroup> face_groups(const Model& model, const Entry& entry);
+// One line per group for the model tree, e.g. "INNER: dof 11 = 100", "12 nodes: dofs 1-3 = 0",
+// "TOP: pressure 5", "OUTER: flux 3".
 std::vector<std::string> group_labels(const Model& model, const Entry& entry);
 
 // What the group's dialog shows (nset / surface empty: "the same nodes / faces as now").
 BoundaryInput boundary_input_of(const Model& model, const Entry& group);
 CloadInput cload_input_of(const Model& model, const Entry& group);  // split = false: per node
 PressureInput pressure_input_of(const Model& model, const Entry& group);
+FluxInput flux_input_of(const Model& model, const Entry& group);
 TemperatureInput temperature_input_of(const Model& model, const Entry& group);
 
 // Replace group `entry.item` of the list by what the dialog says, checked as the add dialogs
@@ -62,6 +66,9 @@ std::unique_ptr<Command> pressure_edit_command(const Model& model, const Entry& 
                                                const PressureInput& input);
 std::unique_ptr<Command> temperature_edit_command(const Model& model, const Entry& group,
                                                   const TemperatureInput& input);
+// A face-flux group: the step must be a heat transfer step (flux_input.hpp).
+std::unique_ptr<Command> flux_edit_command(const Model& model, const Entry& group,
+                                           const FluxInput& input);
 // Removes group `entry.item` of the list.
 std::unique_ptr<Command> group_delete_command(const Model& model, const Entry& group);
 

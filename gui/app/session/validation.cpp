@@ -260,8 +260,8 @@ std::unique_ptr<Command> pressure_command(const Model& model, const PressureInpu
   if (model.steps[in.step].kind != StepKind::Static)
     refuse("step " + model.steps[in.step].name + " is a " +
            step_kind_name(model.steps[in.step].kind) +
-           " step: a pressure belongs to a static step (face fluxes, *DFLUX, are not offered in "
-           "the GUI yet)");
+           " step: a pressure belongs to a static step (a heat flux into a face: Model > Face "
+           "flux)");
   check_finite(in.magnitude, "pressure");
   if (in.magnitude == 0.0) refuse("a pressure of 0 does nothing; enter a value");
   std::vector<DistributedLoad> loads;

@@ -14,6 +14,7 @@ bool has_entry_dialog(const Entry& e) {
     case EntryKind::StepCloads:
     case EntryKind::StepFluxes:
     case EntryKind::StepDloads:
+    case EntryKind::StepDfluxes:
     case EntryKind::StepTemperatures:
     case EntryKind::InitialTemperatures:
       return e.item >= 0;
@@ -71,6 +72,10 @@ FormDialog* make_entry_dialog(Document& doc, const Entry& entry, const Selection
       return make_cload_dialog(doc, parent, entry);
     case EntryKind::StepDloads:
       return make_pressure_dialog(doc, parent, entry);
+    case EntryKind::StepDfluxes:
+      return make_flux_dialog(doc, parent, entry);
+    case EntryKind::Orientation:
+      return make_orientation_dialog(doc, parent, entry.name);
     case EntryKind::StepTemperatures:
     case EntryKind::InitialTemperatures:
       return make_temperature_dialog(doc, parent, entry);

@@ -7,6 +7,7 @@
 #include "session/constraint_input.hpp"
 #include "session/contact_input.hpp"
 #include "session/load_groups.hpp"
+#include "session/orientation_input.hpp"
 #include "session/thermal_input.hpp"
 
 namespace styk::gui {
@@ -162,6 +163,40 @@ FormDialog* make_transform_dialog(Document& doc, QWidget* parent, int transform)
         f.text("nset"), f.text("system") == "cylindrical", {a[0], a[1], a[2]}, {b[0], b[1], b[2]}};
     doc.apply(transform >= 0 ? transform_edit_command(doc.model(), transform, t)
                              : transform_command(doc.model(), t));
+  });
+  return d;
+}
+
+FormDialog* make_orientation_dialog(Document& doc, QWidget* parent) {
+  return make_orientation_dialog(doc, parent, std::string());
+}
+
+FormDialog* make_orientation_dialog(Document& doc, QWidget* parent, const std::string& name) {
+  const bool editing = !name.empty();
+  OrientationInput in;
+  in.name = "ORIENT-" + std::to_string(doc.model().orientations.size() + 1);
+  if (editing) in = orientation_input_of(doc.model(), name);
+  const auto point = [](const Vec3& p) {
+    return QString("%1 %2 %3").arg(p[0]).arg(p[1]).arg(p[2]);
+  };
+  auto* d = new FormDialog(
+      editing ? "Edit orientation" : "Orientation",
+      "*ORIENTATION: a named local system; anisotropic friction (Contact pair) slips with mu1 "
+      "along its axis 1 and mu2 along axis 2. Rectangular: local x along a, local y in the plane "
+      "of a and b. Cylindrical: a and b on the axis; 1 radial, 2 tangential, 3 axial.",
+      parent);
+  d->add_text("name", "Name", q(in.name));
+  d->add_choice("system", "System", {"rectangular", "cylindrical"},
+                in.cylindrical ? "cylindrical" : "rectangular");
+  d->add_text("a", "Point a x y z", point(in.a));
+  d->add_text("b", "Point b x y z", point(in.b));
+  d->set_accept([&doc, name](const FormDialog& f) {
+    const std::vector<double> a = numbers(f, "a", "Point a", 3);
+    const std::vector<double> b = numbers(f, "b", "Point b", 3);
+    const OrientationInput o{
+        f.text("name"), f.text("system") == "cylindrical", {a[0], a[1], a[2]}, {b[0], b[1], b[2]}};
+    doc.apply(name.empty() ? orientation_command(doc.model(), o)
+                           : orientation_edit_command(doc.model(), name, o));
   });
   return d;
 }

@@ -4,6 +4,7 @@
 #pragma once
 
 #include <QWidget>
+#include <string>
 
 #include "form_dialog.hpp"
 #include "session/document.hpp"
@@ -25,5 +26,9 @@ FormDialog* make_temperature_dialog(Document& document, QWidget* parent, const E
 FormDialog* make_equation_dialog(Document& document, QWidget* parent, int equation);
 FormDialog* make_transform_dialog(Document& document, QWidget* parent, int transform);
 FormDialog* make_common_nodes_dialog(Document& document, QWidget* parent);
+// *ORIENTATION: a named local system (rectangular or cylindrical, points a and b) for anisotropic
+// friction; `name` non-empty edits that orientation.
+FormDialog* make_orientation_dialog(Document& document, QWidget* parent);
+FormDialog* make_orientation_dialog(Document& document, QWidget* parent, const std::string& name);
 
 }  // namespace styk::gui

@@ -3,6 +3,7 @@
 #include <optional>
 
 #include "dialog_fields.hpp"
+#include "session/flux_input.hpp"
 #include "session/load_groups.hpp"
 #include "session/validation.hpp"
 
@@ -85,14 +86,27 @@ FormDialog* cload_dialog(Document& doc, QWidget* parent, const Entry* group) {
   return d;
 }
 
-FormDialog* pressure_dialog(Document& doc, QWidget* parent, const Entry* group) {
+// Pressure (*DLOAD, static steps) and face flux (*DFLUX, heat transfer steps) ask for the same
+// faces: a surface, or face S1..S6 of an element set.
+FormDialog* face_load_dialog(Document& doc, QWidget* parent, const Entry* group, bool flux) {
   const Model& m = doc.model();
   PressureInput in{"", "", 1, 1.0, 0};
-  if (group) in = pressure_input_of(m, *group);
-  auto* d = new FormDialog(group ? "Edit pressure" : "Pressure",
-                           "*DLOAD pressure (positive pushes into the element) on a surface, or "
-                           "on face S1..S6 of every element of an element set.",
-                           parent);
+  if (flux) {  // the first heat transfer step, where a flux may go
+    for (int s = 0; s < int(m.steps.size()); ++s)
+      if (m.steps[s].kind == StepKind::HeatTransfer) {
+        in.step = s;
+        break;
+      }
+  }
+  if (group) in = flux ? flux_input_of(m, *group) : pressure_input_of(m, *group);
+  const QString title = flux ? "Face flux" : "Pressure";
+  auto* d = new FormDialog(
+      group ? "Edit " + title.toLower() : title,
+      flux ? "*DFLUX uniform heat flux per area (positive into the body) on a surface, or on face "
+             "S1..S6 of every element of an element set, in a heat transfer step."
+           : "*DLOAD pressure (positive pushes into the element) on a surface, or on face S1..S6 "
+             "of every element of an element set.",
+      parent);
   QStringList surfaces{"(element set below)"};
   if (group && in.surface.empty() && in.elset.empty())
     surfaces.prepend(
@@ -103,19 +117,23 @@ FormDialog* pressure_dialog(Document& doc, QWidget* parent, const Entry* group) 
   if (group && in.elset.empty()) elsets.prepend("(none)");
   d->add_choice("elset", "Element set", elsets, q(in.elset));
   d->add_text("face", "Face (1..6)", QString::number(in.face));
-  d->add_text("magnitude", "Pressure", QString::number(in.magnitude));
+  d->add_text("magnitude", flux ? "Flux" : "Pressure", QString::number(in.magnitude));
   d->add_choice("step", "Step", step_names(m, false),
                 m.steps.empty() ? QString() : step_choice(m, in.step));
   const std::optional<Entry> edited = group ? std::optional<Entry>(*group) : std::nullopt;
-  d->set_accept([&doc, edited](const FormDialog& f) {
+  d->set_accept([&doc, edited, flux](const FormDialog& f) {
     const std::string elset = f.text("elset") == "(none)" ? std::string() : f.text("elset");
     const std::string surface = chosen_set(f, "surface");
     // "(the same N faces)": keep them; "(element set below)": the element set's faces.
     const bool keep = f.text("surface").rfind("(the same", 0) == 0;
     const PressureInput p{surface, keep ? std::string() : elset, f.integer("face", "Face"),
-                          f.real("magnitude", "Pressure"), step_index(f.text("step"))};
-    doc.apply(edited ? pressure_edit_command(doc.model(), *edited, p)
-                     : pressure_command(doc.model(), p));
+                          f.real("magnitude", flux ? "Flux" : "Pressure"),
+                          step_index(f.text("step"))};
+    if (flux)
+      doc.apply(edited ? flux_edit_command(doc.model(), *edited, p) : flux_command(doc.model(), p));
+    else
+      doc.apply(edited ? pressure_edit_command(doc.model(), *edited, p)
+                       : pressure_command(doc.model(), p));
   });
   return d;
 }
@@ -129,7 +147,10 @@ FormDialog* make_cload_dialog(Document& doc, QWidget* parent) {
   return cload_dialog(doc, parent, nullptr);
 }
 FormDialog* make_pressure_dialog(Document& doc, QWidget* parent) {
-  return pressure_dialog(doc, parent, nullptr);
+  return face_load_dialog(doc, parent, nullptr, false);
+}
+FormDialog* make_flux_dialog(Document& doc, QWidget* parent) {
+  return face_load_dialog(doc, parent, nullptr, true);
 }
 FormDialog* make_boundary_dialog(Document& doc, QWidget* parent, const Entry& group) {
   return boundary_dialog(doc, parent, &group);
@@ -138,7 +159,10 @@ FormDialog* make_cload_dialog(Document& doc, QWidget* parent, const Entry& group
   return cload_dialog(doc, parent, &group);
 }
 FormDialog* make_pressure_dialog(Document& doc, QWidget* parent, const Entry& group) {
-  return pressure_dialog(doc, parent, &group);
+  return face_load_dialog(doc, parent, &group, false);
+}
+FormDialog* make_flux_dialog(Document& doc, QWidget* parent, const Entry& group) {
+  return face_load_dialog(doc, parent, &group, true);
 }
 
 }  // namespace styk::gui

@@ -208,6 +208,7 @@ void MainWindow::build_menus() {
   dialog_action("&Boundary condition...", "action_boundary", &make_boundary_dialog);
   dialog_action("&Concentrated load...", "action_cload", &make_cload_dialog);
   dialog_action("&Pressure...", "action_pressure", &make_pressure_dialog);
+  dialog_action("Face fl&ux...", "action_flux", &make_flux_dialog);
   dialog_action("&Revolve...", "action_revolve", &make_revolve_dialog);
   dialog_action("P&lane...", "action_plane", &make_plane_dialog);
   dialog_action("L&ine...", "action_line", &make_line_dialog);
@@ -218,6 +219,7 @@ void MainWindow::build_menus() {
   dialog_action("&Temperature...", "action_temperature", &make_temperature_dialog);
   dialog_action("&Equation...", "action_equation", &make_equation_dialog);
   dialog_action("Trans&form...", "action_transform", &make_transform_dialog);
+  dialog_action("Orient&ation...", "action_orientation", &make_orientation_dialog);
   dialog_action("&Node set from two sets...", "action_common_nodes", &make_common_nodes_dialog);
 
   QMenu* select = menuBar()->addMenu("Se&lect");

@@ -81,16 +81,17 @@ QString friction_text(const Model& m, const ContactPair& p) {
 void add_step(const Model& m, QTreeWidgetItem* steps, const Step& s, int i) {
   QTreeWidgetItem* item = entry(
       leaf(steps,
-           QString("%1 %2 — %3%4 BC, %5 CLOAD, %6 DLOAD")
+           QString("%1 %2 — %3%4 BC, %5 CLOAD, %6 DLOAD%7")
                .arg(i + 1)
                .arg(q(s.name))
                .arg(s.kind == StepKind::Static ? QString() : QString(step_kind_text(s.kind)) + ", ")
                .arg(s.boundaries.size())
                .arg(s.cloads.size() + s.cfluxes.size())
-               .arg(s.dloads.size()),
+               .arg(s.dloads.size())
+               .arg(s.dfluxes.empty() ? QString() : QString(", %1 DFLUX").arg(s.dfluxes.size())),
            QString("<b>Step %1</b><br>%2, initial increment %3, total time %4<br>%5 boundary "
                    "dofs, %6 concentrated loads, %7 face loads, %8 nodal temperatures, %9 nodal "
-                   "fluxes")
+                   "fluxes, %10 face fluxes")
                .arg(q(s.name))
                .arg(step_kind_text(s.kind))
                .arg(s.procedure.initial_increment)
@@ -99,7 +100,8 @@ void add_step(const Model& m, QTreeWidgetItem* steps, const Step& s, int i) {
                .arg(s.cloads.size())
                .arg(s.dloads.size())
                .arg(s.temperatures.size())
-               .arg(s.cfluxes.size())),
+               .arg(s.cfluxes.size())
+               .arg(s.dfluxes.size())),
       EntryKind::Step, i);
   const char* fluxes =
       s.kind == StepKind::ElectricConduction ? "nodal currents" : "nodal heat flows";
@@ -108,6 +110,7 @@ void add_step(const Model& m, QTreeWidgetItem* steps, const Step& s, int i) {
       {EntryKind::StepCloads, {"concentrated loads", s.cloads.size()}},
       {EntryKind::StepFluxes, {fluxes, s.cfluxes.size()}},
       {EntryKind::StepDloads, {"pressures", s.dloads.size()}},
+      {EntryKind::StepDfluxes, {"face fluxes", s.dfluxes.size()}},
       {EntryKind::StepTemperatures, {"temperatures", s.temperatures.size()}}};
   for (const auto& [kind, what] : lists)
     if (what.second > 0)
@@ -261,6 +264,20 @@ void ModelTree::populate(const Document& doc) {
                    .arg(q(p.slave), q(p.master), q(p.interaction), friction_text(m, p))
                    .arg(p.clearance ? QString("<br>clearance %1").arg(*p.clearance) : QString())),
           EntryKind::ContactPair, int(i));
+  }
+  if (!m.orientations.empty()) {
+    QTreeWidgetItem* orientations = group(this, "Orientations", int(m.orientations.size()));
+    for (const auto& [name, o] : m.orientations) {
+      const bool cylindrical = o.axes.system == CoordinateSystem::Cylindrical;
+      const auto point = [](const Vec3& p) {
+        return QString("(%1, %2, %3)").arg(p[0]).arg(p[1]).arg(p[2]);
+      };
+      entry(leaf(orientations, q(name) + " — " + (cylindrical ? "cylindrical" : "rectangular"),
+                 QString("<b>*ORIENTATION %1</b><br>%2<br>a = %3<br>b = %4")
+                     .arg(q(name), cylindrical ? "cylindrical" : "rectangular", point(o.axes.a),
+                          point(o.axes.b))),
+            EntryKind::Orientation, -1, name);
+    }
   }
   if (!m.equations.empty() || !m.transforms.empty()) {
     QTreeWidgetItem* constraints =
