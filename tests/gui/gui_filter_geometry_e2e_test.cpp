@@ -1,14 +1,18 @@
 // styk-gui end to end (issue 7) under xvfb-run: View > Filter refuses bad id text inside the
 // dialog and, with good text, draws only the chosen elements; a layer is made from the filter and
 // one from the picked elements (undoable); Clear filter draws everything again; Model > Line and
-// Model > Plane add their parts through their dialogs.
+// Model > Plane add their parts through their dialogs; Model > Mesh block with curved edges: "fill
+// midpoints" writes the straight midpoints, a folding arc is refused in the dialog, a quarter
+// cylinder wall is meshed.
 #include <QAction>
 #include <QApplication>
 #include <QCheckBox>
 #include <QComboBox>
 #include <QLineEdit>
+#include <QPushButton>
 #include <QStandardPaths>
 #include <QTest>
+#include <cmath>
 
 #include "form_dialog.hpp"
 #include "gl_view.hpp"
@@ -106,6 +110,44 @@ class GuiFilterGeometry : public QObject {
     plane->accept();
     QVERIFY(!plane->isVisible());
     QCOMPARE(window_->document().model().find_elset("SHEET")->elements.size(), std::size_t(6));
+  }
+
+  void curvedBlockDialog() {
+    // A quarter of a thick-walled cylinder, r = 10..20, height 5: corners in C3D8 order.
+    gui::FormDialog* d = open_dialog(*window_, "action_block");
+    QVERIFY(d);
+    set_text(d, "name", "WALL");
+    d->findChild<QCheckBox*>("use_corners")->setChecked(true);
+    set_text(d, "corners", "10 0 0  20 0 0  0 20 0  0 10 0  10 0 5  20 0 5  0 20 5  0 10 5");
+    set_text(d, "divisions", "2 4 1");
+    d->findChild<QPushButton*>("fill_midpoints")->click();
+    const QString straight = d->findChild<QLineEdit*>("mid_edges")->text();
+    QVERIFY2(straight.startsWith("15 0 0; 10 10 0; 0 15 0; 5 5 0; 15 0 5;"), qPrintable(straight));
+    d->findChild<QCheckBox*>("curved")->setChecked(true);
+    // The outer arc's midpoints pulled inside the inner wall: the block folds.
+    const QString folded = "15 0 0; 3 3 0; 0 15 0; 7.0710678118655 7.0710678118655 0; "
+                           "15 0 5; 3 3 5; 0 15 5; 7.0710678118655 7.0710678118655 5; "
+                           "10 0 2.5; 20 0 2.5; 0 20 2.5; 0 10 2.5";
+    set_text(d, "mid_edges", folded);
+    d->accept();
+    QVERIFY(d->isVisible());
+    QVERIFY2(d->error_text().contains("fold"), qPrintable(d->error_text()));
+    QVERIFY(!window_->document().model().find_elset("WALL"));
+    QString arcs = folded;
+    arcs.replace("3 3 0", "14.142135623731 14.142135623731 0")
+        .replace("3 3 5", "14.142135623731 14.142135623731 5");
+    set_text(d, "mid_edges", arcs);
+    d->accept();
+    QVERIFY2(!d->isVisible(), qPrintable(d->error_text()));
+    const Model& m = window_->document().model();
+    QVERIFY(m.find_elset("WALL"));
+    QCOMPARE(m.find_elset("WALL")->elements.size(), std::size_t(8));
+    // The outer arc's mid node (eta = 0) sits on the circle r = 20 at 45 degrees.
+    bool on_arc = false;
+    for (int n : m.find_nset("WALL_XMAX")->nodes)
+      on_arc = on_arc || (std::abs(m.coords[n][0] - 14.142135623731) < 1e-9 &&
+                          std::abs(m.coords[n][1] - 14.142135623731) < 1e-9);
+    QVERIFY(on_arc);
   }
 
   void cleanupTestCase() { window_.reset(); }

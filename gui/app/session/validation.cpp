@@ -9,24 +9,8 @@
 #include <stdexcept>
 
 #include "session/input_checks.hpp"
-#include "styk/mesher/block_mesh.hpp"
-#include "styk/mesher/convert.hpp"
-#include "styk/mesher/geometry_maps.hpp"
 
 namespace styk::gui {
-namespace {
-
-const std::array<std::string, 6> kSides{"XMIN", "XMAX", "YMIN", "YMAX", "ZMIN", "ZMAX"};
-
-std::vector<Vec3> block_corners(const BlockInput& in) {
-  if (in.use_corners) return {in.corners.begin(), in.corners.end()};
-  const Vec3& o = in.origin;
-  const Vec3 e{o[0] + in.size[0], o[1] + in.size[1], o[2] + in.size[2]};
-  return {{o[0], o[1], o[2]}, {e[0], o[1], o[2]}, {e[0], e[1], o[2]}, {o[0], e[1], o[2]},
-          {o[0], o[1], e[2]}, {e[0], o[1], e[2]}, {e[0], e[1], e[2]}, {o[0], e[1], e[2]}};
-}
-
-}  // namespace
 
 double parse_real(const std::string& text, const std::string& label) {
   errno = 0;
@@ -48,82 +32,6 @@ int parse_integer(const std::string& text, const std::string& label) {
       value < -1000000000L || value > 1000000000L)
     refuse(label + ": '" + text + "' is not a whole number");
   return static_cast<int>(value);
-}
-
-void check_block(const BlockInput& in, const Model& model, const ElementRegistry& registry) {
-  check_name(in.name, "the block's element set");
-  const std::string name = to_upper(in.name);
-  if (model.find_elset(name)) refuse("element set " + name + " exists already; choose another name");
-  for (const std::string& side : kSides)
-    if (model.find_nset(name + "_" + side) || model.surfaces.count(name + "_" + side))
-      refuse("node set or surface " + name + "_" + side + " exists already; choose another name");
-  const char* axes = "xyz";
-  long long count = 1;
-  for (int k = 0; k < 3; ++k) {
-    const std::string a(1, axes[k]);
-    if (in.divisions[k] < 1)
-      refuse("divisions along " + a + " must be at least 1, not " +
-             std::to_string(in.divisions[k]));
-    if (in.divisions[k] > 1000) refuse("divisions along " + a + " must be at most 1000");
-    count *= in.divisions[k];
-    check_finite(in.grading[k], "grading along " + a);
-    if (!(in.grading[k] > 0)) refuse("grading along " + a + " must be > 0 (1 = uniform)");
-    if (!in.use_corners) {
-      check_finite(in.size[k], "size along " + a);
-      check_finite(in.origin[k], "origin " + a);
-      if (!(in.size[k] > 0)) refuse("size along " + a + " must be > 0");
-    }
-  }
-  if (in.use_corners)
-    for (const Vec3& c : in.corners)
-      for (double x : c) check_finite(x, "corner coordinate");
-  if (count > 2000000) refuse("the block would have " + std::to_string(count) +
-                              " elements; at most 2,000,000");
-  const std::string type = to_upper(in.type);
-  if (type != "C3D8" && type != "C3D20" && type != "C3D21" && type != "C3D28")
-    refuse("element type " + in.type + " cannot be meshed here; use C3D8, C3D20, C3D21 or C3D28");
-  if (!registry.find(type))
-    refuse("element type " + type + " is not available (its plug-in is not loaded)");
-  if ((type == "C3D21" || type == "C3D28") &&
-      std::find(kSides.begin(), kSides.end(), to_upper(in.layer_side)) == kSides.end())
-    refuse("layer side must be one of XMIN, XMAX, YMIN, YMAX, ZMIN, ZMAX");
-  if (!in.material.empty() && model.material_index(to_upper(in.material)) < 0)
-    refuse("no material " + to_upper(in.material) + " in the model");
-}
-
-Model model_with_block(const Model& model, const BlockInput& in, const ElementRegistry& registry) {
-  check_block(in, model, registry);
-  const std::string name = to_upper(in.name);
-  const std::string type = to_upper(in.type);
-  mesher::Mesh mesh;
-  mesher::BlockSpec spec;
-  spec.type = type == "C3D8" ? "C3D8" : "C3D20";
-  spec.divisions = in.divisions;
-  spec.grading = in.grading;
-  spec.elset = name;
-  try {
-    const mesher::Block block = mesher::mesh_block(mesh, mesher::hex_map(block_corners(in)), spec);
-    for (int s = 0; s < 6; ++s)
-      mesh.add_to_surface(name + "_" + kSides[s], block.side_faces(s / 2, s % 2 == 0 ? -1 : 1));
-    if (type == "C3D21") mesher::convert_layer_to_c3d21(mesh, name + "_" + to_upper(in.layer_side));
-    if (type == "C3D28") mesher::convert_layer_to_c3d28(mesh, name + "_" + to_upper(in.layer_side));
-  } catch (const std::invalid_argument& e) {
-    refuse(std::string("the mesher refuses the block: ") + e.what());
-  }
-  for (const std::string& side : kSides)
-    mesh.add_to_node_set(name + "_" + side, mesh.surface_nodes(name + "_" + side));
-
-  Model result = model;
-  std::vector<std::string> surfaces;
-  for (const std::string& side : kSides) surfaces.push_back(name + "_" + side);
-  append_meshed_part(result, mesh, surfaces, name, in.material);
-  return result;
-}
-
-std::unique_ptr<Command> block_command(const Model& model, const BlockInput& input,
-                                       const ElementRegistry& registry) {
-  Model after = model_with_block(model, input, registry);
-  return make_replace_model("Mesh block " + to_upper(input.name), model, std::move(after));
 }
 
 Material checked_material(const Model& model, const MaterialInput& in, int replacing) {

@@ -8,6 +8,7 @@
 #include <string>
 #include <vector>
 
+#include "session/block_input.hpp"  // the "Mesh block" dialog (BlockInput, block_command)
 #include "session/commands.hpp"
 #include "styk/core/element_registry.hpp"
 #include "styk/core/model.hpp"
@@ -17,32 +18,6 @@ namespace styk::gui {
 // Text fields of the dialogs: a number, or InputError "LABEL: 'text' is not a number".
 double parse_real(const std::string& text, const std::string& label);
 int parse_integer(const std::string& text, const std::string& label);
-
-// "Mesh block": a hexahedral block meshed with mesher/ and appended to the model (new node and
-// element ids follow the largest existing ones). The element set NAME receives the elements; node
-// sets NAME_XMIN, NAME_XMAX, NAME_YMIN, ... the nodes of the six block sides (the sides of the
-// map: xi = -1 is XMIN, eta = -1 YMIN, zeta = -1 ZMIN).
-struct BlockInput {
-  bool use_corners = false;    // true: the 8 corners (C3D8 order); false: origin + size box
-  std::array<Vec3, 8> corners{};
-  Vec3 origin{0, 0, 0};
-  Vec3 size{1, 1, 1};
-  std::array<int, 3> divisions{4, 1, 1};
-  std::array<double, 3> grading{1, 1, 1};  // last / first element length per direction
-  // C3D8, C3D20, or C3D21 / C3D28: C3D20 whose layer of elements on side `layer_side` becomes
-  // the thesis' contact hexahedra.
-  std::string type = "C3D20";
-  std::string layer_side = "ZMAX";  // XMIN, XMAX, YMIN, YMAX, ZMIN, ZMAX
-  std::string name = "BLOCK";
-  std::string material;  // non-empty: also a solid section of the new set with this material
-};
-void check_block(const BlockInput& input, const Model& model, const ElementRegistry& registry);
-// The model with the block appended (throws InputError like check_block, or for a map the mesher
-// refuses, e.g. left-handed corners).
-Model model_with_block(const Model& model, const BlockInput& input,
-                       const ElementRegistry& registry);
-std::unique_ptr<Command> block_command(const Model& model, const BlockInput& input,
-                                       const ElementRegistry& registry);
 
 struct MaterialInput {
   std::string name;

@@ -1,5 +1,9 @@
 #include "model_dialogs.hpp"
 
+#include <QFormLayout>
+#include <QLabel>
+#include <QLineEdit>
+#include <QPushButton>
 #include <QRegularExpression>
 #include <algorithm>
 #include <cstdlib>
@@ -17,20 +21,81 @@ namespace {
 QStringList element_sets(const Model& m) { return element_set_names(m); }
 QStringList materials(const Model& m) { return material_names(m); }
 
+// `count` numbers separated by blanks, commas or semicolons, or InputError naming the field.
+std::vector<double> numbers(const std::string& text, const std::string& label, int count) {
+  const QStringList parts =
+      QString::fromStdString(text).split(QRegularExpression("[\\s,;]+"), Qt::SkipEmptyParts);
+  if (parts.size() != count)
+    throw InputError({}, label + ": give " + std::to_string(count) + " numbers, not " +
+                             std::to_string(parts.size()));
+  std::vector<double> v;
+  for (const QString& p : parts) v.push_back(parse_real(p.toStdString(), label));
+  return v;
+}
+
+// The block dialog's box or corners (whichever "use_corners" selects) into `in`.
+void read_block_corners(const FormDialog& f, BlockInput& in) {
+  in.use_corners = f.checked("use_corners");
+  if (in.use_corners) {
+    const std::vector<double> c = numbers(f.text("corners"), "Corners", 24);
+    for (int i = 0; i < 8; ++i) in.corners[i] = {c[3 * i], c[3 * i + 1], c[3 * i + 2]};
+  } else {
+    const std::vector<double> o = numbers(f.text("origin"), "Box origin", 3);
+    const std::vector<double> s = numbers(f.text("size"), "Box size", 3);
+    in.origin = {o[0], o[1], o[2]};
+    in.size = {s[0], s[1], s[2]};
+  }
+}
+
+// "x y z; x y z; ...": one point per semicolon, so the user finds the edge to curve.
+QString point_list(const std::vector<Vec3>& points) {
+  QStringList text;
+  for (const Vec3& p : points)
+    text << QString("%1 %2 %3").arg(p[0], 0, 'g', 12).arg(p[1], 0, 'g', 12).arg(p[2], 0, 'g', 12);
+  return text.join("; ");
+}
+
+// "Fill midpoints": the straight-edge midpoints of the current box or corners, the starting
+// point for curving some of the edges. Bad corners are shown in the dialog's error line.
+void add_fill_midpoints_button(FormDialog& d) {
+  auto* button = new QPushButton("Fill midpoints from the box / corners");
+  button->setObjectName("fill_midpoints");
+  d.findChild<QFormLayout*>()->addRow(QString(), button);
+  QObject::connect(button, &QPushButton::clicked, &d, [&d] {
+    auto* error = d.findChild<QLabel*>("error");
+    try {
+      BlockInput in;
+      read_block_corners(d, in);
+      d.findChild<QLineEdit*>("mid_edges")->setText(point_list(straight_mid_edges(in)));
+      error->clear();
+    } catch (const InputError& e) {
+      error->setText(QString::fromStdString(e.message()));
+    }
+  });
+}
+
 }  // namespace
 
 FormDialog* make_block_dialog(Document& doc, QWidget* parent) {
   auto* d = new FormDialog("Mesh block",
                            "A hexahedral block, meshed and added to the model. Give a box "
-                           "(origin and size) or the 8 corners (C3D8 order, x y z each). The "
-                           "element set NAME and node sets/surfaces NAME_XMIN ... NAME_ZMAX are "
-                           "created.",
+                           "(origin and size) or the 8 corners (C3D8 order, x y z each). Curved "
+                           "edges: the 12 mid-edge points (C3D20 nodes 9-20, x y z each); each "
+                           "edge becomes the quadratic through its corners and its mid-edge "
+                           "point. The element set NAME and node sets/surfaces NAME_XMIN ... "
+                           "NAME_ZMAX are created.",
                            parent);
   d->add_text("name", "Name (element set)", "BLOCK");
   d->add_text("origin", "Box origin x y z", "0 0 0");
   d->add_text("size", "Box size x y z", "100 10 10");
   d->add_check("use_corners", "Use the 8 corners below instead of the box", false);
   d->add_text("corners", "Corners (24 numbers)", "");
+  d->add_check("curved", "Curved edges (20 points): use the mid-edge points below", false);
+  BlockInput box;
+  box.size = {100, 10, 10};
+  d->add_text("mid_edges", "Mid-edge points (nodes 9-20, 36 numbers)",
+              point_list(straight_mid_edges(box)));
+  add_fill_midpoints_button(*d);
   d->add_text("divisions", "Divisions x y z", "10 2 2");
   d->add_text("grading", "Grading x y z (last/first)", "1 1 1");
   d->add_choice("type", "Element type", {"C3D20", "C3D8", "C3D21", "C3D28"});
@@ -38,33 +103,18 @@ FormDialog* make_block_dialog(Document& doc, QWidget* parent) {
                 {"ZMAX", "ZMIN", "XMIN", "XMAX", "YMIN", "YMAX"});
   d->add_choice("material", "Section material", QStringList{"(none)"} + materials(doc.model()));
   d->set_accept([&doc](const FormDialog& f) {
-    const auto numbers = [&f](const QString& key, const QString& label, int count) {
-      const QStringList parts = QString::fromStdString(f.text(key))
-                                    .split(QRegularExpression("[\\s,;]+"), Qt::SkipEmptyParts);
-      if (parts.size() != count)
-        throw InputError({}, label.toStdString() + ": give " + std::to_string(count) +
-                                 " numbers, not " + std::to_string(parts.size()));
-      std::vector<double> v;
-      for (const QString& p : parts) v.push_back(parse_real(p.toStdString(), label.toStdString()));
-      return v;
-    };
     BlockInput in;
     in.name = f.text("name");
-    in.use_corners = f.checked("use_corners");
-    if (in.use_corners) {
-      const std::vector<double> c = numbers("corners", "Corners", 24);
-      for (int i = 0; i < 8; ++i) in.corners[i] = {c[3 * i], c[3 * i + 1], c[3 * i + 2]};
-    } else {
-      const std::vector<double> o = numbers("origin", "Box origin", 3);
-      const std::vector<double> s = numbers("size", "Box size", 3);
-      in.origin = {o[0], o[1], o[2]};
-      in.size = {s[0], s[1], s[2]};
+    read_block_corners(f, in);
+    if (f.checked("curved")) {
+      const std::vector<double> m = numbers(f.text("mid_edges"), "Mid-edge points", 36);
+      for (int i = 0; i < 12; ++i) in.mid_edges.push_back({m[3 * i], m[3 * i + 1], m[3 * i + 2]});
     }
     const QStringList div = QString::fromStdString(f.text("divisions"))
                                 .split(QRegularExpression("[\\s,;]+"), Qt::SkipEmptyParts);
     if (div.size() != 3) throw InputError({}, "Divisions: give 3 whole numbers");
     for (int k = 0; k < 3; ++k) in.divisions[k] = parse_integer(div[k].toStdString(), "Divisions");
-    const std::vector<double> g = numbers("grading", "Grading", 3);
+    const std::vector<double> g = numbers(f.text("grading"), "Grading", 3);
     in.grading = {g[0], g[1], g[2]};
     in.type = f.text("type");
     in.layer_side = f.text("layer_side");
