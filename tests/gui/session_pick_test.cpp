@@ -9,6 +9,7 @@
 #include <cmath>
 
 #include "session/document.hpp"
+#include "session/geometry_objects.hpp"
 #include "session/highlight.hpp"
 #include "session/picking.hpp"
 #include "session/scene.hpp"
@@ -341,6 +342,85 @@ TEST(PickRegion, ARegionPickerAnswersLikeTheWholePickerInsideItsRegion) {
   EXPECT_EQ(visible, 97);
   // A region in the empty corner of the picture rasterises no face at all.
   EXPECT_EQ(Picker(scene, render::PixelRect{0, 0, 4, 4}).face_count(), 0u);
+}
+
+// Bars (line elements, drawn since issue 7's line objects) are picked along their drawn width as
+// elements, never as faces, and hidden behind solids like faces are; a picked bar is traced.
+TEST_F(PickTest, BarsArePickedAsElementsAndHiddenBehindSolids) {
+  LineInput out;  // beside the block along +x: seen from +y
+  out.name = "OUT";
+  out.a = {3, 0.5, 0.5};
+  out.b = {5, 0.5, 0.5};
+  out.divisions = 2;
+  doc.apply(line_command(doc.model(), out, registry));
+  LineInput behind;  // behind the end face x = 2 seen from +x
+  behind.name = "BEHIND";
+  behind.a = {-1, 0.2, 0.5};
+  behind.b = {-1, 0.8, 0.5};
+  behind.divisions = 1;
+  doc.apply(line_command(doc.model(), behind, registry));
+  const ElementSet& out_set = *doc.model().find_elset("OUT");
+  const int behind_bar = doc.model().find_elset("BEHIND")->elements.front();
+  Scene scene;
+  scene.rebuild(doc, {});
+  ViewState from_plus_y;
+  from_plus_y.spec.name = "+y";
+  scene.frame(400, 300, from_plus_y);
+  const Picker seen(scene);
+  const auto middle = node_pixel(scene, node_at(4, 0.5, 0.5));  // between the two OUT bars
+  const auto quarter = [&](int sign) {  // a pixel on the bar, 1 px off its axis
+    const auto a = scene.screen_position(node_at(3, 0.5, 0.5));
+    const auto b = scene.screen_position(node_at(4, 0.5, 0.5));
+    return std::array<int, 2>{int(std::floor(0.5 * (a[0] + b[0]))),
+                              int(std::floor(0.5 * (a[1] + b[1]))) + sign};
+  };
+  for (int sign : {-1, 1}) {
+    const auto p = quarter(sign);
+    const auto element = seen.pick(p[0], p[1], PickKind::Element);
+    ASSERT_TRUE(element) << sign;
+    EXPECT_EQ(element->element, out_set.elements.front());
+    EXPECT_FALSE(seen.pick(p[0], p[1], PickKind::Face));  // a bar has no face
+  }
+  const auto node = seen.pick(middle[0], middle[1], PickKind::Node, 4);
+  ASSERT_TRUE(node);
+  EXPECT_EQ(node->node, node_at(4, 0.5, 0.5));
+  EXPECT_TRUE(seen.node_visible(node_at(5, 0.5, 0.5)));
+  std::vector<int> boxed;
+  for (const PickedItem& i : seen.pick_box(0, 0, 399, 299, PickKind::Element))
+    boxed.push_back(i.element);
+  EXPECT_NE(std::find(boxed.begin(), boxed.end(), out_set.elements.back()), boxed.end());
+  for (const PickedItem& i : seen.pick_box(0, 0, 399, 299, PickKind::Face))
+    EXPECT_GE(i.face, 1);
+  // Seen from +x the BEHIND bar lies behind the block's end face: its pixels pick the block.
+  ViewState from_plus_x;
+  from_plus_x.spec.name = "+x";
+  scene.frame(400, 300, from_plus_x);
+  const Picker hidden(scene);
+  const auto a = scene.screen_position(node_at(-1, 0.2, 0.5));
+  const auto b = scene.screen_position(node_at(-1, 0.8, 0.5));
+  const int hx = int(std::floor(0.5 * (a[0] + b[0]))), hy = int(std::floor(0.5 * (a[1] + b[1])));
+  const auto front = hidden.pick(hx, hy, PickKind::Element);
+  ASSERT_TRUE(front);
+  EXPECT_NE(front->element, behind_bar);
+  EXPECT_FALSE(hidden.node_visible(node_at(-1, 0.2, 0.5)));
+  // A selected bar is traced: seen from +y one stretch along it (6 vertices), from +x nothing.
+  const std::size_t plain = scene.frame(400, 300, from_plus_y).overlay.triangles.size();
+  Selection bar(PickKind::Element);
+  PickedItem item;
+  item.kind = PickKind::Element;
+  item.element = out_set.elements.front();
+  bar.apply(SelectOp::Replace, {item});
+  scene.set_selection(bar);
+  EXPECT_EQ(scene.frame(400, 300, from_plus_y).overlay.triangles.size(), plain + 6);
+  item.element = behind_bar;
+  bar.apply(SelectOp::Replace, {item});
+  scene.set_selection(bar);
+  const std::size_t plain_x = [&] {
+    Scene bare;
+    bare.rebuild(doc, {});
+    return bare.frame(400, 300, from_plus_x).overlay.triangles.size();
+  }();
+  EXPECT_EQ(scene.frame(400, 300, from_plus_x).overlay.triangles.size(), plain_x);
 }
 
 TEST_F(PickTest, TheSelectionIsDescribedWithIdsCoordinatesAndValues) {

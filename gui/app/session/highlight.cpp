@@ -64,6 +64,15 @@ void outline_face(const Scene& scene, const Picker& picker, int element, int fac
     outline_edge(scene, picker, corners[i], corners[(i + 1) % corners.size()], width, out);
 }
 
+// The nodes of line element `element` (model indices) in their order along the line.
+std::vector<int> bar_nodes(const Scene& scene, int element) {
+  const int* nodes = scene.model()->element_nodes(element);
+  std::vector<int> result;
+  for (int k : render::line_node_order(*scene.skin()->formulations()[element]))
+    result.push_back(nodes[k]);
+  return result;
+}
+
 // The screen bounding box of everything `selection` marks: its nodes, and the corners of its faces
 // and of its elements' skin faces.
 render::PixelRect selection_region(const Scene& scene, const Selection& selection) {
@@ -84,10 +93,14 @@ render::PixelRect selection_region(const Scene& scene, const Selection& selectio
   }
   const std::vector<int>& elements = selection.elements();
   if (!elements.empty())
-    for (const render::SkinModel::LayerSkin& layer : scene.skin()->layers())
+    for (const render::SkinModel::LayerSkin& layer : scene.skin()->layers()) {
       for (const render::SkinFace& face : layer.faces)
         if (std::binary_search(elements.begin(), elements.end(), face.element))
           for (int n : face_corner_nodes(scene, face.element, face.face)) add(n);
+      for (int e : layer.lines)
+        if (std::binary_search(elements.begin(), elements.end(), e))
+          for (int n : bar_nodes(scene, e)) add(n);
+    }
   if (x0 > x1) return {};  // nothing to mark: an empty region rasterises almost nothing
   return {int(std::floor(x0)), int(std::floor(y0)), int(std::ceil(x1 - std::floor(x0))) + 1,
           int(std::ceil(y1 - std::floor(y0))) + 1};
@@ -133,10 +146,18 @@ void append_highlight(const Scene& scene, const Selection& selection,
   if (selection.elements().empty()) return;
   // An element is outlined along its faces on the skin (the only ones that can be seen).
   const std::vector<int>& elements = selection.elements();
-  for (const render::SkinModel::LayerSkin& layer : scene.skin()->layers())
+  for (const render::SkinModel::LayerSkin& layer : scene.skin()->layers()) {
     for (const render::SkinFace& face : layer.faces)
       if (std::binary_search(elements.begin(), elements.end(), face.element))
         outline_face(scene, picker, face.element, face.face, width, triangles);
+    // A bar (line element) is traced along its seen stretches.
+    for (int e : layer.lines)
+      if (std::binary_search(elements.begin(), elements.end(), e)) {
+        const std::vector<int> nodes = bar_nodes(scene, e);
+        for (std::size_t i = 0; i + 1 < nodes.size(); ++i)
+          outline_edge(scene, picker, nodes[i], nodes[i + 1], width, triangles);
+      }
+  }
 }
 
 }  // namespace styk::gui

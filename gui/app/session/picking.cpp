@@ -21,8 +21,8 @@ bool meets(const std::vector<std::array<double, 3>>& corners, const render::Pixe
     x0 = std::min(x0, c[0]), x1 = std::max(x1, c[0]);
     y0 = std::min(y0, c[1]), y1 = std::max(y1, c[1]);
   }
-  return x1 >= region.x - grow && x0 <= region.x + region.width + grow &&
-         y1 >= region.y - grow && y0 <= region.y + region.height + grow;
+  return x1 >= region.x - grow && x0 <= region.x + region.width + grow && y1 >= region.y - grow &&
+         y0 <= region.y + region.height + grow;
 }
 
 }  // namespace
@@ -43,7 +43,7 @@ void Picker::build(const render::PixelRect* region) {
   depth_.assign(ids_.size(), std::numeric_limits<float>::max());
   const Model& model = *scene.model();
   std::vector<std::array<double, 3>> corners;
-  for (const render::SkinModel::LayerSkin& layer : scene.skin()->layers())
+  for (const render::SkinModel::LayerSkin& layer : scene.skin()->layers()) {
     for (const render::SkinFace& face : layer.faces) {
       corners.clear();
       for (int n : face_corner_nodes(scene, face.element, face.face))
@@ -58,6 +58,23 @@ void Picker::build(const render::PixelRect* region) {
       face_nodes_.push_back(std::move(all));
       rasterise(id, corners);
     }
+    // Line elements (trusses) are drawn as bars: picked along their segments, as elements only.
+    for (int element : layer.lines) {
+      const std::vector<int> order =
+          render::line_node_order(*scene.skin()->formulations()[element]);
+      const int* nodes = model.element_nodes(element);
+      corners.clear();
+      for (int k : order) corners.push_back(scene.screen_position(nodes[k]));
+      if (corners.size() < 2 || (region && !meets(corners, *region))) continue;
+      const int id = int(faces_.size());
+      faces_.push_back({element, kNoFace});
+      std::vector<int> all;
+      for (int k : order) all.push_back(nodes[k]);
+      face_nodes_.push_back(std::move(all));
+      for (std::size_t i = 0; i + 1 < corners.size(); ++i)
+        rasterise_segment(id, corners[i], corners[i + 1]);
+    }
+  }
 }
 
 void Picker::rasterise(int id, const std::vector<std::array<double, 3>>& corners) {
@@ -65,6 +82,33 @@ void Picker::rasterise(int id, const std::vector<std::array<double, 3>>& corners
     if (!(c[2] >= -1.0 && c[2] <= 1.0)) return;  // outside the depth range: not drawn either
   for (std::size_t i = 1; i + 1 < corners.size(); ++i)
     rasterise_triangle(id, corners[0], corners[i], corners[i + 1]);
+}
+
+void Picker::rasterise_segment(int id, const std::array<double, 3>& a,
+                               const std::array<double, 3>& b) {
+  for (const auto* c : {&a, &b})
+    if (!((*c)[2] >= -1.0 && (*c)[2] <= 1.0)) return;  // outside the depth range: not drawn
+  // Half the drawn bar's width plus half a pixel, so a click on the bar's edge still hits it.
+  const double half = 0.5 * scene_.last_frame().bar_width + 0.5;
+  const render::PixelRect& box = scene_.last_frame().overlay.model;
+  const int x0 = std::max({0, box.x, int(std::floor(std::min(a[0], b[0]) - half))});
+  const int x1 =
+      std::min({width_ - 1, box.x + box.width - 1, int(std::ceil(std::max(a[0], b[0]) + half))});
+  const int y0 = std::max({0, box.y, int(std::floor(std::min(a[1], b[1]) - half))});
+  const int y1 =
+      std::min({height_ - 1, box.y + box.height - 1, int(std::ceil(std::max(a[1], b[1]) + half))});
+  const double dx = b[0] - a[0], dy = b[1] - a[1], length2 = dx * dx + dy * dy;
+  for (int y = y0; y <= y1; ++y)
+    for (int x = x0; x <= x1; ++x) {
+      const double px = x + 0.5, py = y + 0.5;
+      const double t = length2 > 1e-18
+                           ? std::clamp(((px - a[0]) * dx + (py - a[1]) * dy) / length2, 0.0, 1.0)
+                           : 0.0;
+      if (std::hypot(a[0] + t * dx - px, a[1] + t * dy - py) > half) continue;
+      const float z = float(a[2] + t * (b[2] - a[2]));
+      const std::size_t i = std::size_t(y) * width_ + x;
+      if (z < depth_[i]) depth_[i] = z, ids_[i] = id;
+    }
 }
 
 void Picker::rasterise_triangle(int id, const std::array<double, 3>& a,
@@ -132,7 +176,7 @@ bool Picker::edge_point_visible(double px, double py, int a, int b) const {
 std::optional<PickedItem> Picker::pick(int x, int y, PickKind kind, int radius) const {
   if (kind != PickKind::Node) {
     const std::optional<render::SkinFace> face = face_at(x, y);
-    if (!face) return std::nullopt;
+    if (!face || (kind == PickKind::Face && face->face == kNoFace)) return std::nullopt;
     PickedItem item;
     item.kind = kind;
     item.element = face->element;
@@ -188,6 +232,7 @@ std::vector<PickedItem> Picker::pick_box(int x0, int y0, int x1, int y1, PickKin
     return items;
   }
   for (int id : ids) {
+    if (kind == PickKind::Face && faces_[id].face == kNoFace) continue;  // a bar has no face
     PickedItem item;
     item.kind = kind;
     item.element = faces_[id].element;

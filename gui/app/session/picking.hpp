@@ -13,6 +13,9 @@
 
 namespace styk::gui {
 
+// A picker entry that is a line element (truss bar): it has an element and nodes, but no face.
+constexpr int kNoFace = -1;
+
 class Picker {
  public:
   // Rasterises the scene's last frame(); the scene must stay unchanged while the picker is used.
@@ -28,7 +31,8 @@ class Picker {
   // Every visible entity of `kind` inside the box [x0, x1] x [y0, y1] (corners in any order).
   std::vector<PickedItem> pick_box(int x0, int y0, int x1, int y1, PickKind kind) const;
 
-  // The skin face (element, 0-based face) drawn front-most at pixel (x, y), if any.
+  // The skin face (element, 0-based face) drawn front-most at pixel (x, y), if any; for a line
+  // element's bar the face is kNoFace.
   std::optional<render::SkinFace> face_at(int x, int y) const;
   // Whether a node is drawn on a front-most face (a face holding it is visible within 2 pixels).
   bool node_visible(int node) const;
@@ -42,6 +46,7 @@ class Picker {
   void build(const render::PixelRect* region);
   int id_at(int x, int y) const;  // index into faces_, or -1
   void rasterise(int id, const std::vector<std::array<double, 3>>& corners);
+  void rasterise_segment(int id, const std::array<double, 3>& a, const std::array<double, 3>& b);
   void rasterise_triangle(int id, const std::array<double, 3>& a, const std::array<double, 3>& b,
                           const std::array<double, 3>& c);
 
