@@ -16,6 +16,7 @@ add_library(styk_gui_widgets STATIC
   src/path_chart.cpp
   src/solve_runner.cpp
   src/main_window.cpp
+  src/main_window_menus.cpp
 )
 set_target_properties(styk_gui_widgets PROPERTIES AUTOMOC ON)
 target_include_directories(styk_gui_widgets PUBLIC ${CMAKE_CURRENT_SOURCE_DIR}/src)

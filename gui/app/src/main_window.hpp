@@ -70,7 +70,13 @@ class MainWindow : public QMainWindow {
   void closeEvent(QCloseEvent* event) override;
 
  private:
-  void build_menus();
+  void build_menus();  // main_window_menus.cpp: one builder per menu
+  void build_file_menu();
+  void build_edit_menu();
+  void build_model_menu();
+  void build_select_menu();
+  void build_analysis_menu();
+  void build_view_menu();
   void refresh_model();  // after any model or results change
   void refresh_scene();  // after a display setting change
   DisplaySettings display_settings() const;  // the results panel's, with the filter
