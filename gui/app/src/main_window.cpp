@@ -12,15 +12,15 @@
 #include <QStatusBar>
 #include <QTextBrowser>
 
-#include "gl_view.hpp"
 #include "entry_dialogs.hpp"
+#include "gl_view.hpp"
 #include "model_tree.hpp"
 #include "path_chart.hpp"
 #include "results_panel.hpp"
+#include "session/layer_edits.hpp"
 #include "session/results_navigation.hpp"
 #include "session/selection_info.hpp"
 #include "session/selection_sets.hpp"
-#include "session/layer_edits.hpp"
 #include "solve_runner.hpp"
 #include "styk/io/results_file.hpp"
 
@@ -104,17 +104,18 @@ MainWindow::MainWindow(const ElementRegistry& registry, QWidget* parent)
     const render::Rgb c = document_.layers().layer(name.toStdString()).color;
     const QColor chosen = QColorDialog::getColor(QColor::fromRgbF(c.r, c.g, c.b), this);
     if (!chosen.isValid()) return;
-    document_.layers().set_color(name.toStdString(), {float(chosen.redF()), float(chosen.greenF()),
-                                                      float(chosen.blueF())});
+    document_.layers().set_color(
+        name.toStdString(), {float(chosen.redF()), float(chosen.greenF()), float(chosen.blueF())});
     tree_->populate(document_);
     refresh_scene();
   });
   connect(results_, &ResultsPanel::changed, this, &MainWindow::refresh_scene);
   connect(results_, &ResultsPanel::chart_requested, this, [this](const QString& nset) {
     try {
-      const auto points = field_along_node_set(view_->scene(), document_.model(), nset.toStdString());
-      QDialog* chart = make_path_chart(points, QString::fromStdString(view_->scene().field()->name),
-                                       nset, this);
+      const auto points =
+          field_along_node_set(view_->scene(), document_.model(), nset.toStdString());
+      QDialog* chart =
+          make_path_chart(points, QString::fromStdString(view_->scene().field()->name), nset, this);
       chart->show();
     } catch (const InputError& e) {
       show_error("X-Y chart", QString::fromStdString(e.message()));
@@ -136,8 +137,10 @@ void MainWindow::run_dialog(QDialog* dialog) {
 
 bool MainWindow::open_file(const QString& path) {
   try {
-    if (path.endsWith(".h5")) document_.open_results(path.toStdString());
-    else document_.open_inp(path.toStdString());
+    if (path.endsWith(".h5"))
+      document_.open_results(path.toStdString());
+    else
+      document_.open_inp(path.toStdString());
   } catch (const std::exception& e) {
     show_error("Open " + QFileInfo(path).fileName(), QString::fromUtf8(e.what()));
     return false;
@@ -204,9 +207,12 @@ void MainWindow::on_solve_finished(bool ok, const QString& results, const QStrin
     QString message = error;
     if (line > 0)
       message += QString("\n\nat line %1 of the deck written for the solver (%2):\n%3")
-                     .arg(line).arg(solver_->deck_path(), text);
-    if (error == "cancelled") log("solve cancelled");
-    else show_error("Solve", message);
+                     .arg(line)
+                     .arg(solver_->deck_path(), text);
+    if (error == "cancelled")
+      log("solve cancelled");
+    else
+      show_error("Solve", message);
     emit solve_finished(false);
     return;
   }
@@ -255,10 +261,13 @@ bool MainWindow::export_animation(const QString& directory, const QString& stem)
                              results_->animation_frames());
     const QStringList files = view_->export_animation(animation, directory, stem, 100);
     log(QString("animation: %1 frames %2 ... and %3/%4.apng")
-            .arg(files.size()).arg(files.value(0)).arg(directory, stem));
+            .arg(files.size())
+            .arg(files.value(0))
+            .arg(directory, stem));
   } catch (const std::exception& e) {
     const auto* input = dynamic_cast<const InputError*>(&e);
-    show_error("Export animation", input ? QString::fromStdString(input->message()) : QString(e.what()));
+    show_error("Export animation",
+               input ? QString::fromStdString(input->message()) : QString(e.what()));
     refresh_scene();
     return false;
   }
@@ -274,13 +283,14 @@ void MainWindow::show_node_history() {
   const DisplaySettings settings = display_settings();
   if (!results || selection.kind() != PickKind::Node || selection.nodes().empty() ||
       settings.field.empty()) {
-    show_error("Value vs increment", "pick a node (Select > Pick nodes, click it) and choose a field");
+    show_error("Value vs increment",
+               "pick a node (Select > Pick nodes, click it) and choose a field");
     return;
   }
   const int node = selection.nodes().front();
   try {
-    const auto points = node_history(document_.model(), *results, node, settings.field,
-                                     settings.averaging);
+    const auto points =
+        node_history(document_.model(), *results, node, settings.field, settings.averaging);
     QStringList labels;
     for (const HistoryPoint& p : points)
       labels << QString::fromStdString(increment_label(results->increments[p.increment]));
@@ -384,20 +394,24 @@ void MainWindow::show_error(const QString& title, const QString& message) {
 }
 
 bool MainWindow::maybe_save() {
-  if (!document_.is_modified() || qEnvironmentVariableIsSet("STYK_GUI_NO_MESSAGE_BOXES")) return true;
-  const auto answer = QMessageBox::question(this, "Unsaved changes", "Save the model first?",
-                                            QMessageBox::Save | QMessageBox::Discard | QMessageBox::Cancel);
+  if (!document_.is_modified() || qEnvironmentVariableIsSet("STYK_GUI_NO_MESSAGE_BOXES"))
+    return true;
+  const auto answer =
+      QMessageBox::question(this, "Unsaved changes", "Save the model first?",
+                            QMessageBox::Save | QMessageBox::Discard | QMessageBox::Cancel);
   if (answer == QMessageBox::Cancel) return false;
   if (answer == QMessageBox::Save) {
-    const QString path = QFileDialog::getSaveFileName(this, "Save deck", QString(), "Decks (*.inp)");
+    const QString path =
+        QFileDialog::getSaveFileName(this, "Save deck", QString(), "Decks (*.inp)");
     return !path.isEmpty() && save_file(path);
   }
   return true;
 }
 
 void MainWindow::update_title() {
-  const QString name = document_.path().empty() ? QString("(new model)")
-                                                : QFileInfo(QString::fromStdString(document_.path())).fileName();
+  const QString name = document_.path().empty()
+                           ? QString("(new model)")
+                           : QFileInfo(QString::fromStdString(document_.path())).fileName();
   setWindowTitle(name + (document_.is_modified() ? " *" : "") + " — styk-gui");
 }
 

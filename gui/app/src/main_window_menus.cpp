@@ -44,26 +44,34 @@ void MainWindow::build_file_menu() {
   recent_menu_ = file->addMenu("Open &recent");
   file->addAction("&Save", QKeySequence::Save, this, [this] {
     const QString path = QString::fromStdString(document_.path());
-    if (path.endsWith(".inp")) save_file(path);
+    if (path.endsWith(".inp"))
+      save_file(path);
     else {
-      const QString chosen = QFileDialog::getSaveFileName(this, "Save deck", QString(), "Decks (*.inp)");
+      const QString chosen =
+          QFileDialog::getSaveFileName(this, "Save deck", QString(), "Decks (*.inp)");
       if (!chosen.isEmpty()) save_file(chosen);
     }
   });
   file->addAction("Save &as...", QKeySequence::SaveAs, this, [this] {
-    const QString chosen = QFileDialog::getSaveFileName(this, "Save deck", QString(), "Decks (*.inp)");
+    const QString chosen =
+        QFileDialog::getSaveFileName(this, "Save deck", QString(), "Decks (*.inp)");
     if (!chosen.isEmpty()) save_file(chosen);
   });
   file->addAction("&Export view as PNG...", this, [this] {
-    const QString chosen = QFileDialog::getSaveFileName(this, "Export PNG", "view.png", "PNG (*.png)");
+    const QString chosen =
+        QFileDialog::getSaveFileName(this, "Export PNG", "view.png", "PNG (*.png)");
     if (!chosen.isEmpty()) export_png(chosen);
   });
-  file->addAction("Export &animation...", this, [this] {
-    const QString chosen = QFileDialog::getSaveFileName(
-        this, "Export animation (frames NAME_0000.png ..., NAME.apng)", "anim", "PNG frames (*)");
-    if (!chosen.isEmpty())
-      export_animation(QFileInfo(chosen).absolutePath(), QFileInfo(chosen).completeBaseName());
-  })->setObjectName("action_export_animation");
+  file->addAction("Export &animation...", this,
+                  [this] {
+                    const QString chosen = QFileDialog::getSaveFileName(
+                        this, "Export animation (frames NAME_0000.png ..., NAME.apng)", "anim",
+                        "PNG frames (*)");
+                    if (!chosen.isEmpty())
+                      export_animation(QFileInfo(chosen).absolutePath(),
+                                       QFileInfo(chosen).completeBaseName());
+                  })
+      ->setObjectName("action_export_animation");
   file->addSeparator();
   file->addAction("&Quit", QKeySequence::Quit, this, &QWidget::close);
   update_recent_menu();
@@ -71,9 +79,15 @@ void MainWindow::build_file_menu() {
 
 void MainWindow::build_edit_menu() {
   QMenu* edit = menuBar()->addMenu("&Edit");
-  undo_ = edit->addAction("&Undo", QKeySequence::Undo, this, [this] { document_.undo(); refresh_model(); });
+  undo_ = edit->addAction("&Undo", QKeySequence::Undo, this, [this] {
+    document_.undo();
+    refresh_model();
+  });
   undo_->setObjectName("action_undo");
-  redo_ = edit->addAction("&Redo", QKeySequence::Redo, this, [this] { document_.redo(); refresh_model(); });
+  redo_ = edit->addAction("&Redo", QKeySequence::Redo, this, [this] {
+    document_.redo();
+    refresh_model();
+  });
   redo_->setObjectName("action_redo");
 }
 
@@ -91,7 +105,8 @@ void MainWindow::build_model_menu() {
       names << QString::fromStdString(b.name + "  (" + b.section + " " + b.title + ")");
     bool ok = false;
     const QString chosen = QInputDialog::getItem(this, "Builder", "Model", names, 0, false, &ok);
-    if (ok) run_dialog(make_builder_dialog(document_, chosen.section(' ', 0, 0).toStdString(), this));
+    if (ok)
+      run_dialog(make_builder_dialog(document_, chosen.section(' ', 0, 0).toStdString(), this));
   });
   builder->setObjectName("action_builder");
   model->addSeparator();
@@ -119,9 +134,9 @@ void MainWindow::build_model_menu() {
 void MainWindow::build_select_menu() {
   QMenu* select = menuBar()->addMenu("Se&lect");
   auto* kinds = new QActionGroup(this);
-  const std::pair<const char*, PickKind> kind_list[] = {
-      {"Pick &nodes", PickKind::Node}, {"Pick &elements", PickKind::Element},
-      {"Pick element &faces", PickKind::Face}};
+  const std::pair<const char*, PickKind> kind_list[] = {{"Pick &nodes", PickKind::Node},
+                                                        {"Pick &elements", PickKind::Element},
+                                                        {"Pick element &faces", PickKind::Face}};
   for (const auto& [text, kind] : kind_list) {
     QAction* a = select->addAction(text, this, [this, k = kind] { view_->set_pick_kind(k); });
     a->setCheckable(true);
@@ -131,18 +146,25 @@ void MainWindow::build_select_menu() {
   }
   select->addAction("&Clear selection", QKeySequence(Qt::Key_Escape), this,
                     [this] { view_->clear_selection(); });
-  select->addAction("&Make set from selection...", QKeySequence(Qt::CTRL | Qt::Key_M), this, [this] {
-    bool ok = false;
-    const QString name = QInputDialog::getText(this, "Make set from selection", "Name", QLineEdit::Normal,
-                                               QString(), &ok);
-    if (ok) make_set_from_selection(name);
-  })->setObjectName("action_make_set");
-  select->addAction("New &layer from selection...", this, [this] {
-    bool ok = false;
-    const QString name = QInputDialog::getText(this, "New layer from selection", "Name",
-                                               QLineEdit::Normal, QString(), &ok);
-    if (ok) make_layer_from_selection(name);
-  })->setObjectName("action_layer_from_selection");
+  select
+      ->addAction("&Make set from selection...", QKeySequence(Qt::CTRL | Qt::Key_M), this,
+                  [this] {
+                    bool ok = false;
+                    const QString name = QInputDialog::getText(
+                        this, "Make set from selection", "Name", QLineEdit::Normal, QString(), &ok);
+                    if (ok) make_set_from_selection(name);
+                  })
+      ->setObjectName("action_make_set");
+  select
+      ->addAction("New &layer from selection...", this,
+                  [this] {
+                    bool ok = false;
+                    const QString name =
+                        QInputDialog::getText(this, "New layer from selection", "Name",
+                                              QLineEdit::Normal, QString(), &ok);
+                    if (ok) make_layer_from_selection(name);
+                  })
+      ->setObjectName("action_layer_from_selection");
 }
 
 void MainWindow::build_analysis_menu() {
@@ -156,8 +178,10 @@ void MainWindow::build_view_menu() {
   QMenu* view = menuBar()->addMenu("&View");
   auto* modes = new QActionGroup(this);
   const std::pair<const char*, render::DisplayMode> mode_list[] = {
-      {"&Nodes", render::DisplayMode::Points},      {"&Wireframe", render::DisplayMode::Wireframe},
-      {"&Hidden line", render::DisplayMode::HiddenLine}, {"&Shaded", render::DisplayMode::Shaded},
+      {"&Nodes", render::DisplayMode::Points},
+      {"&Wireframe", render::DisplayMode::Wireframe},
+      {"&Hidden line", render::DisplayMode::HiddenLine},
+      {"&Shaded", render::DisplayMode::Shaded},
       {"Shaded with &edges", render::DisplayMode::ShadedEdges}};
   for (const auto& [text, mode] : mode_list) {
     QAction* a = view->addAction(text, this, [this, m = mode] { set_display_mode(m); });
@@ -167,26 +191,32 @@ void MainWindow::build_view_menu() {
   }
   view->addSeparator();
   for (const char* name : {"iso", "+x", "-x", "+y", "-y", "+z", "-z"})
-    view->addAction(QString("View %1").arg(name), this, [this, name] { view_->set_named_view(name); });
+    view->addAction(QString("View %1").arg(name), this,
+                    [this, name] { view_->set_named_view(name); });
   view->addAction("&Fit", QKeySequence(Qt::Key_F), this, [this] { view_->fit(); });
-  QAction* perspective = view->addAction("&Perspective", this, [this](bool on) { view_->set_perspective(on); });
+  QAction* perspective =
+      view->addAction("&Perspective", this, [this](bool on) { view_->set_perspective(on); });
   perspective->setCheckable(true);
   view->addSeparator();
-  view->addAction("Fi&lter...", this, [this] {
-    FormDialog* dialog = make_filter_dialog(
-        document_.model(), document_.filter(),
-        [this](ElementDisplayFilter f) { set_filter(std::move(f)); }, this);
-    dialog->setAttribute(Qt::WA_DeleteOnClose);
-    dialog->open();
-  })->setObjectName("action_filter");
+  view->addAction("Fi&lter...", this,
+                  [this] {
+                    FormDialog* dialog = make_filter_dialog(
+                        document_.model(), document_.filter(),
+                        [this](ElementDisplayFilter f) { set_filter(std::move(f)); }, this);
+                    dialog->setAttribute(Qt::WA_DeleteOnClose);
+                    dialog->open();
+                  })
+      ->setObjectName("action_filter");
   view->addAction("&Clear filter", this, [this] { set_filter({}); })
       ->setObjectName("action_clear_filter");
-  view->addAction("New layer from &filter...", this, [this] {
-    bool ok = false;
-    const QString name = QInputDialog::getText(this, "New layer from filter", "Name",
-                                               QLineEdit::Normal, QString(), &ok);
-    if (ok) make_layer_from_filter(name);
-  })->setObjectName("action_layer_from_filter");
+  view->addAction("New layer from &filter...", this,
+                  [this] {
+                    bool ok = false;
+                    const QString name = QInputDialog::getText(
+                        this, "New layer from filter", "Name", QLineEdit::Normal, QString(), &ok);
+                    if (ok) make_layer_from_filter(name);
+                  })
+      ->setObjectName("action_layer_from_filter");
 }
 
 void MainWindow::add_recent(const QString& path) {
