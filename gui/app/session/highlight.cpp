@@ -111,7 +111,7 @@ render::PixelRect selection_region(const Scene& scene, const Selection& selectio
 std::vector<int> face_corner_nodes(const Scene& scene, int element, int face) {
   const render::SkinModel& skin = *scene.skin();
   const TElement& formulation = *skin.formulations()[element];
-  const FaceDef& def = formulation.faces()[face];
+  const FaceDef& def = skin.face_def(element, face);
   const int corners = render::face_corner_count(formulation, def);
   const int* nodes = scene.model()->element_nodes(element);
   std::vector<int> result;

@@ -50,8 +50,11 @@ void Picker::build(const render::PixelRect* region) {
         corners.push_back(scene.screen_position(n));
       if (region && !meets(corners, *region)) continue;
       const int id = int(faces_.size());
-      faces_.push_back(face);
-      const FaceDef& def = scene.skin()->formulations()[face.element]->faces()[face.face];
+      // A planar element's area is an element to pick, not a face of it (its faces are edges).
+      const bool area =
+          face.face >= int(scene.skin()->formulations()[face.element]->faces().size());
+      faces_.push_back(area ? render::SkinFace{face.element, kNoFace} : face);
+      const FaceDef& def = scene.skin()->face_def(face.element, face.face);
       const int* nodes = model.element_nodes(face.element);
       std::vector<int> all;
       for (int k : def.nodes) all.push_back(nodes[k]);

@@ -13,7 +13,8 @@
 
 namespace styk::gui {
 
-// A picker entry that is a line element (truss bar): it has an element and nodes, but no face.
+// A picker entry that is a line element (truss bar) or a planar element's area: it has an element
+// and nodes, but no face of its own to pick (a planar element's faces are its edges).
 constexpr int kNoFace = -1;
 
 class Picker {
@@ -32,7 +33,7 @@ class Picker {
   std::vector<PickedItem> pick_box(int x0, int y0, int x1, int y1, PickKind kind) const;
 
   // The skin face (element, 0-based face) drawn front-most at pixel (x, y), if any; for a line
-  // element's bar the face is kNoFace.
+  // element's bar or a planar element's area the face is kNoFace.
   std::optional<render::SkinFace> face_at(int x, int y) const;
   // Whether a node is drawn on a front-most face (a face holding it is visible within 2 pixels).
   bool node_visible(int node) const;

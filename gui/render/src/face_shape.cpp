@@ -123,7 +123,9 @@ FaceShapes::FaceShapes(const std::vector<const TElement*>& formulations) {
   for (const TElement* element : formulations) {
     if (!element || shapes_.count(element)) continue;
     std::vector<FaceShape> faces;
-    for (const FaceDef& face : element->faces()) faces.push_back(make_shape(*element, face));
+    // Placeholders (a planar element's edges, see drawn_faces) keep the face indices.
+    for (const FaceDef& face : drawn_faces(*element))
+      faces.push_back(face.nodes.empty() ? FaceShape{} : make_shape(*element, face));
     shapes_.emplace(element, std::move(faces));
   }
 }

@@ -311,6 +311,8 @@ SkinModel::SkinModel(const Model& model, const ElementRegistry& registry,
     : model_(model),
       formulations_(element_formulations(model, registry)),
       shapes_(std::make_unique<FaceShapes>(formulations_)) {
+  for (const TElement* f : formulations_)
+    if (f && !drawn_.count(f)) drawn_.emplace(f, drawn_faces(*f));
   std::vector<char> used(model.coords.size(), 0), any(model.coords.size(), 0);
   for (const Layer& layer : layers) {
     if (!layer.visible) continue;

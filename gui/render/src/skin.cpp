@@ -40,7 +40,7 @@ bool inside_triangle(const Vec3& p, const Vec3& a, const Vec3& b, const Vec3& c)
 
 FaceCorners face_corners(const TElement& element) {
   FaceCorners out;
-  for (const FaceDef& face : element.faces()) {
+  for (const FaceDef& face : drawn_faces(element)) {
     std::array<int, 4> c{-1, -1, -1, -1};
     const int n = face_corner_count(element, face);
     for (int i = 0; i < n; ++i) c[i] = face.nodes[i];
@@ -70,6 +70,23 @@ int face_corner_count(const TElement& element, const FaceDef& face) {
   return inside_triangle(xi[face.nodes[3]], xi[face.nodes[0]], xi[face.nodes[1]], xi[face.nodes[2]])
              ? 3
              : 4;
+}
+
+bool is_planar_element(const TElement& element) {
+  const std::vector<Vec3>& xi = element.natural_nodes();
+  if (element.faces().empty() || xi.size() < 3) return false;
+  for (const FaceDef& face : element.faces())
+    if (face.nodes.size() > 3) return false;  // a solid's faces have 3 corners or more
+  return std::all_of(xi.begin(), xi.end(), [](const Vec3& p) { return p[2] == 0.0; });
+}
+
+std::vector<FaceDef> drawn_faces(const TElement& element) {
+  if (!is_planar_element(element)) return element.faces();
+  FaceDef area;  // the element's own nodes, corners first as the formulation lists them
+  for (int k = 0; k < element.node_count(); ++k) area.nodes.push_back(k);
+  std::vector<FaceDef> faces(element.faces().size());  // the edges: never drawn
+  faces.push_back(area);
+  return faces;
 }
 
 bool is_line_element(const TElement& element) {
@@ -132,7 +149,8 @@ std::vector<SkinFace> extract_skin(const Model& model,
   std::vector<std::uint32_t> offset(node_count + 1, 0);
   for (std::size_t i = 0; i < elements.size(); ++i) {
     const int* nodes = model.element_nodes(elements[i]);
-    for (const auto& c : corners_of[i]->corners) ++offset[smallest_corner(face_key(nodes, c)) + 1];
+    for (const auto& c : corners_of[i]->corners)
+      if (c[0] >= 0) ++offset[smallest_corner(face_key(nodes, c)) + 1];
   }
   for (std::size_t n = 0; n < node_count; ++n) offset[n + 1] += offset[n];
 
@@ -147,7 +165,8 @@ std::vector<SkinFace> extract_skin(const Model& model,
     const int* nodes = model.element_nodes(elements[i]);
     const auto& corners = corners_of[i]->corners;
     for (std::size_t f = 0; f < corners.size(); ++f)
-      entries[fill[smallest_corner(face_key(nodes, corners[f]))]++] =
+      if (corners[f][0] >= 0)  // a planar element's edges are not drawn (drawn_faces)
+        entries[fill[smallest_corner(face_key(nodes, corners[f]))]++] =
           Entry{static_cast<std::uint32_t>(i), static_cast<std::uint32_t>(f)};
   }
 

@@ -6,6 +6,7 @@
 
 #include <array>
 #include <cstdint>
+#include <map>
 #include <memory>
 #include <vector>
 
@@ -81,10 +82,16 @@ class SkinModel {
   double size() const { return size_; }    // diagonal of that box
   const std::vector<const TElement*>& formulations() const { return formulations_; }
   const FaceShapes& shapes() const { return *shapes_; }
+  // The definition of drawn face `face` of element `element` (drawn_faces of its formulation).
+  const FaceDef& face_def(int element, int face) const {
+    return drawn_.at(formulations_[static_cast<std::size_t>(element)])
+        .at(static_cast<std::size_t>(face));
+  }
 
  private:
   const Model& model_;
   std::vector<const TElement*> formulations_;
+  std::map<const TElement*, std::vector<FaceDef>> drawn_;  // per distinct formulation
   std::unique_ptr<FaceShapes> shapes_;
   std::vector<LayerSkin> layers_;
   Vec3 centre_{};

@@ -1,6 +1,7 @@
 // Skin extraction: the faces of a set of elements that no second element of the set shares.
 // Only these are drawn (DESIGN "Headless and desktop rendering"). Face definitions come from each
-// element's TElement::faces() (corners first), so plug-in elements need nothing here.
+// element's TElement::faces() (corners first), so plug-in elements need nothing here; a planar
+// element is drawn as its own area (drawn_faces).
 #pragma once
 
 #include <cstdint>
@@ -33,6 +34,15 @@ std::vector<SkinFace> extract_skin(const Model& model,
 // Number of corners (3 or 4) of a face definition: a 4th listed node inside the triangle of the
 // first three (in natural coordinates) is a mid-edge node of a triangle, not a corner.
 int face_corner_count(const TElement& element, const FaceDef& face);
+
+// Whether a formulation is a planar element (CPS4, CPE8, ...): every natural node has zeta = 0 and
+// its faces are its edges (at most 3 nodes each).
+bool is_planar_element(const TElement& element);
+
+// The faces the renderer draws, indexed as SkinFace::face: TElement::faces(), or for a planar
+// element empty placeholders for its edges (never drawn) followed by the element's own area (all
+// its nodes, corners first) at index faces().size(), so a plane mesh shows as a filled surface.
+std::vector<FaceDef> drawn_faces(const TElement& element);
 
 // Whether a formulation is a line element (a truss such as T3D2): no faces and 2 or 3 nodes. It
 // has no skin; the renderer draws it as segments through its nodes instead.
