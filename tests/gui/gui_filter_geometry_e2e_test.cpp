@@ -34,7 +34,10 @@ gui::FormDialog* open_dialog(gui::MainWindow& w, const QString& action) {
 }
 
 void set_text(gui::FormDialog* d, const QString& key, const QString& value) {
-  if (auto* e = d->findChild<QLineEdit*>(key)) e->setText(value);
+  if (auto* e = d->findChild<QLineEdit*>(key))
+    e->setText(value);
+  else if (auto* c = d->findChild<QComboBox*>(key))
+    c->setCurrentText(value);
 }
 
 std::size_t drawn_elements(const gui::Scene& scene) {
@@ -148,6 +151,46 @@ class GuiFilterGeometry : public QObject {
       on_arc = on_arc || (std::abs(m.coords[n][0] - 14.142135623731) < 1e-9 &&
                           std::abs(m.coords[n][1] - 14.142135623731) < 1e-9);
     QVERIFY(on_arc);
+  }
+
+  // A Line object's trusses are drawn as bars in the layer's colour (unlit), and go with their
+  // layer. STYK_GUI_SCREENSHOTS=DIR writes the view (gui-bars.png).
+  void barsAreDrawnInTheView() {
+    gui::FormDialog* line = open_dialog(*window_, "action_line");
+    QVERIFY(line);
+    set_text(line, "name", "STAY");
+    set_text(line, "start", "0 3 0.5");
+    set_text(line, "end", "10 3 0.5");
+    set_text(line, "divisions", "4");
+    set_text(line, "material", "MAT");  // with a section: a part, so a layer of its own
+    line->accept();
+    QVERIFY2(!line->isVisible(), qPrintable(line->error_text()));
+    // A colour no other layer has (the palette repeats after 8 layers).
+    const render::Rgb color{0.9f, 0.1f, 0.1f};
+    window_->document().layers().set_color("STAY", color);
+    window_->set_filter({});  // redraws with the layers as they are
+    window_->view()->set_named_view("iso");
+    window_->view()->fit();
+    const auto bar_pixels = [&] {
+      const QImage image = window_->view()->grabFramebuffer();
+      int count = 0;
+      for (int y = 0; y < image.height(); ++y)
+        for (int x = 0; x < image.width(); ++x) {
+          const QColor c = image.pixelColor(x, y);
+          count += std::abs(c.red() - std::lround(255 * color.r)) <= 2 &&
+                   std::abs(c.green() - std::lround(255 * color.g)) <= 2 &&
+                   std::abs(c.blue() - std::lround(255 * color.b)) <= 2;
+        }
+      return std::make_pair(count, image);
+    };
+    const auto [shown, image] = bar_pixels();
+    const QString shots = qEnvironmentVariable("STYK_GUI_SCREENSHOTS");
+    if (!shots.isEmpty()) image.save(shots + "/gui-bars.png");
+    // The bar is 10 long and 3 px wide: a few hundred pixels of its colour on the 640 x 480 view.
+    QVERIFY2(shown > 300, qPrintable(QString::number(shown)));
+    window_->document().layers().set_visible("STAY", false);
+    window_->set_filter({});
+    QCOMPARE(bar_pixels().first, 0);
   }
 
   void cleanupTestCase() { window_.reset(); }
