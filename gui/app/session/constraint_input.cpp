@@ -7,17 +7,12 @@
 #include <sstream>
 
 #include "session/input_checks.hpp"
+#include "session/vec3_ops.hpp"
 #include "session/orientation_input.hpp"
 #include "session/validation.hpp"
 
 namespace styk::gui {
 namespace {
-
-double norm(const Vec3& v) { return std::sqrt(v[0] * v[0] + v[1] * v[1] + v[2] * v[2]); }
-Vec3 minus(const Vec3& a, const Vec3& b) { return {a[0] - b[0], a[1] - b[1], a[2] - b[2]}; }
-Vec3 cross(const Vec3& a, const Vec3& b) {
-  return {a[1] * b[2] - a[2] * b[1], a[2] * b[0] - a[0] * b[2], a[0] * b[1] - a[1] * b[0]};
-}
 
 bool prescribed(const Model& model, int node, int dof) {
   const auto hits = [&](const std::vector<Boundary>& list) {

@@ -4,15 +4,10 @@
 #include <cmath>
 
 #include "session/input_checks.hpp"
+#include "session/vec3_ops.hpp"
 
 namespace styk::gui {
 namespace {
-
-double norm(const Vec3& v) { return std::sqrt(v[0] * v[0] + v[1] * v[1] + v[2] * v[2]); }
-Vec3 minus(const Vec3& a, const Vec3& b) { return {a[0] - b[0], a[1] - b[1], a[2] - b[2]}; }
-Vec3 cross(const Vec3& a, const Vec3& b) {
-  return {a[1] * b[2] - a[2] * b[1], a[2] * b[0] - a[0] * b[2], a[0] * b[1] - a[1] * b[0]};
-}
 
 // The frictions naming `from` name `to` instead (an orientation renamed).
 void rename_in_frictions(Model& m, const std::string& from, const std::string& to) {
