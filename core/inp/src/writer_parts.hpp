@@ -9,9 +9,12 @@
 
 namespace styk::inp {
 
-// Shortest text that reads back to exactly the same double. (CalculiX reads at most 20
-// characters per field; the few doubles whose shortest exact form is longer, such as
-// 1.2246467991473532e-16, are written exactly anyway: round trip comes first.)
+// The longest number CalculiX reads in one field of a data line (it refuses the card otherwise).
+constexpr int kMaxFieldChars = 20;
+// The shortest text that reads back as exactly `value`. The few doubles whose shortest exact form
+// is longer than kMaxFieldChars, such as 1.2246467991473532e-16 or -0.0070710678118654755, are
+// written with as many significant digits as fit (13 or more: a relative rounding below 5e-13),
+// so that CalculiX reads every deck Styk writes; those values round-trip to that rounding only.
 std::string shortest_number(double value);
 
 // *ORIENTATION, *SURFACE, *SURFACE INTERACTION (+ *SURFACE BEHAVIOR, *FRICTION), *CONTACT PAIR,
