@@ -10,6 +10,7 @@
 #include <Eigen/Core>
 
 #include "prepared_model.hpp"
+#include "styk/core/local_axes.hpp"
 #include "stiffness_matrix.hpp"
 
 namespace styk::solver_detail {
@@ -39,10 +40,5 @@ class NodeRotations {
   std::vector<int> rotation_of_node_;  // per active node, -1 if not transformed
   std::vector<Eigen::Matrix3d> rotations_;
 };
-
-// The local axes of `axes` at point x (columns e1, e2, e3). Rectangular: e1 along a, e2 in the
-// plane of a and b; cylindrical: e3 along the axis a -> b, e1 radial through x, e2 = e3 x e1.
-// Returns false when they are undefined (degenerate data, or x on the cylinder axis).
-bool local_axes_at(const LocalAxes& axes, const Vec3& x, Eigen::Matrix3d& R);
 
 }  // namespace styk::solver_detail

@@ -87,6 +87,8 @@ std::vector<DatBlock> parse_dat_blocks(std::istream& in) {
           row.id = integer;
         else
           row.integration_point = static_cast<int>(integer);
+      } else if (token == "L" && !row.values.empty() && !(tokens >> std::ws).good()) {
+        row.local = true;  // the last token: ccx marks a row in a node's local system
       } else {
         double value = 0.0;
         if (!parse_number(token, value)) bad_line(line_number, "expected a number", line);

@@ -9,9 +9,12 @@
 #include <string>
 #include <vector>
 
+#include <Eigen/Core>
+
 #include "dat_contact.hpp"
 #include "dat_scalar.hpp"
 #include "fortran_format.hpp"
+#include "styk/core/local_axes.hpp"
 #include "styk/io/dat_writer.hpp"
 
 namespace styk {
@@ -48,6 +51,26 @@ class DatPrinter {
   }
 
  private:
+  // The local axes of node n when a *TRANSFORM names it, else nullptr (built on first use).
+  const Eigen::Matrix3d* local_axes(int n) {
+    if (!transforms_ready_) {
+      transforms_ready_ = true;
+      axes_of_node_.assign(model_.coords.size(), -1);
+      for (const Transform& transform : model_.transforms) {
+        const NodeSet* set = model_.find_nset(transform.nset);
+        if (set == nullptr) continue;  // the solver refuses such a deck before anything is printed
+        for (int node : set->nodes) {
+          Eigen::Matrix3d R;
+          if (!local_axes_at(transform.axes, model_.coords[node], R)) continue;
+          axes_of_node_[node] = static_cast<int>(axes_.size());
+          axes_.push_back(R);
+        }
+      }
+    }
+    const int k = axes_of_node_[n];
+    return k < 0 ? nullptr : &axes_[k];
+  }
+
   void header(const std::string& what, const std::string& set, double time) {
     out_ << "\n " << what << " for set " << set << " and time " << io::fortran_e14_7(time)
          << "\n\n";
@@ -67,14 +90,19 @@ class DatPrinter {
         throw std::runtime_error("*NODE PRINT asks for " + var + " but the results of " +
                                  increment_label(inc) + " hold no " + var + " for every node");
       header(displacement ? "displacements (vx,vy,vz)" : "forces (fx,fy,fz)", set, inc.total_time);
-      Vec3 total{0.0, 0.0, 0.0};
+      Vec3 total{0.0, 0.0, 0.0};  // global components, as ccx sums them
       for (const int n : nodes) {
         write_id(model_.node_ids[n]);
+        const Eigen::Matrix3d* R = local_axes(n);
+        Vec3 shown = field[n];
+        if (R != nullptr)  // a *TRANSFORM node: local components, marked " L" as ccx does
+          for (int k = 0; k < 3; ++k)
+            shown[k] = R->col(k).dot(Eigen::Vector3d(field[n][0], field[n][1], field[n][2]));
         for (int k = 0; k < 3; ++k) {
-          out_ << ' ' << io::fortran_e13_6(field[n][k]);
+          out_ << ' ' << io::fortran_e13_6(shown[k]);
           total[k] += field[n][k];
         }
-        out_ << '\n';
+        out_ << (R != nullptr ? " L\n" : "\n");
       }
       // ccx prints totals for forces only, whatever TOTALS= says for other variables.
       if (request.totals && !displacement) {
@@ -210,6 +238,9 @@ class DatPrinter {
 
   std::ostream& out_;
   const Model& model_;
+  bool transforms_ready_ = false;
+  std::vector<int> axes_of_node_;  // index into axes_, -1: global
+  std::vector<Eigen::Matrix3d> axes_;
 };
 
 }  // namespace

@@ -5,6 +5,7 @@
 
 #include <sstream>
 
+#include "styk/io/dat_reader.hpp"
 #include "styk/io/dat_writer.hpp"
 
 namespace styk {
@@ -87,6 +88,33 @@ TEST(DatWriter, MatchesCalculixLayout) {
       "         7   2  0.000000E+00  0.000000E+00  0.000000E+00  0.000000E+00  0.000000E+00 "
       "-1.000000E-06\n";
   EXPECT_EQ(out.str(), expected);
+}
+
+// A node named by a *TRANSFORM prints its local components with a trailing " L" (ccx 2.20 does,
+// checked live in tests/cli/ccx_crosscheck_test.cpp); the total force stays a sum of global
+// components. Node 2 at (1, 0, 0) in a system with local x = global y, local y = -global x.
+TEST(DatWriter, TransformedNodesPrintLocalComponentsMarkedL) {
+  Model model = tiny_model();
+  model.nsets["TURNED"] = NodeSet{"TURNED", {0}, {}};
+  model.transforms.push_back(
+      Transform{"TURNED", {CoordinateSystem::Rectangular, {0, 1, 0}, {-1, 0, 0}}, {}});
+  std::ostringstream out;
+  write_dat(out, model, tiny_results());
+  const std::string text = out.str();
+  EXPECT_NE(text.find("         2 -2.500000E-04 -1.000000E-03  0.000000E+00 L\n"),
+            std::string::npos)
+      << text;
+  EXPECT_NE(text.find("         2  0.000000E+00 -1.000000E+01 -5.000000E+00 L\n"),
+            std::string::npos)
+      << text;
+  EXPECT_NE(text.find("         1  0.000000E+00  0.000000E+00  0.000000E+00\n"), std::string::npos);
+  EXPECT_NE(text.find("        0.000000E+00  2.500000E+00 -5.000000E+00\n"), std::string::npos);
+  // The reader takes the marker back.
+  std::istringstream in(text);
+  const std::vector<DatBlock> blocks = parse_dat_blocks(in);
+  ASSERT_GE(blocks.size(), 2u);
+  for (const DatRow& row : blocks[0].rows) EXPECT_EQ(row.local, row.id == 2) << row.id;
+  EXPECT_DOUBLE_EQ(blocks[0].rows[1].values[0], -2.5e-4);
 }
 
 TEST(DatWriter, EveryIncrementPrintsItsStepsRequestsAtTotalTime) {

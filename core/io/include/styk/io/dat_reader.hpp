@@ -16,6 +16,7 @@ struct DatRow {
   Id id = 0;
   int integration_point = 0;
   std::vector<double> values;
+  bool local = false;  // a trailing " L": the values are in the node's *TRANSFORM system
 };
 
 // One block: "<what> for set <set> and time <time>" followed by its rows.
