@@ -16,4 +16,8 @@ void StderrProgress::info(const std::string& message) {
   if (!quiet_) fmt::print(stderr, "styk:   {}\n", message);
 }
 
+void StderrProgress::warning(const std::string& message) {
+  fmt::print(stderr, "styk:   warning: {}\n", message);
+}
+
 }  // namespace styk::cli

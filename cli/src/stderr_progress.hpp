@@ -11,6 +11,7 @@ class StderrProgress : public ProgressSink {
   void begin(const std::string& phase) override;
   void end(const std::string& phase, double seconds) override;
   void info(const std::string& message) override;
+  void warning(const std::string& message) override;  // printed even with -q
 
  private:
   bool quiet_;

@@ -9,6 +9,7 @@
 #include "contact_analysis.hpp"
 #include "linear_solver.hpp"
 #include "mechanism_check.hpp"
+#include "model_warnings.hpp"
 #include "model_constraints.hpp"
 #include "parallel.hpp"
 #include "phase_recorder.hpp"
@@ -104,6 +105,7 @@ Results run_static_analysis(const Model& model, const ElementRegistry& registry,
     conditions = accumulate_step_conditions(model, prepared);
     constraints = ModelConstraints::build(model, prepared);
     temperature_changes = step_temperature_changes(model);
+    for (const std::string& warning : model_warnings(model, prepared)) phases.warning(warning);
   }
 
   // Extrapolation operators per element type, built once for every step (SPEC §5 averaging).

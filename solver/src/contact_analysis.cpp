@@ -11,6 +11,7 @@
 #include "linear_solver.hpp"
 #include "mechanism_check.hpp"
 #include "model_constraints.hpp"
+#include "model_warnings.hpp"
 #include "parallel.hpp"
 #include "phase_recorder.hpp"
 #include "prepared_model.hpp"
@@ -151,6 +152,7 @@ Results run_contact_analysis(const Model& model, const ElementRegistry& registry
     conditions = accumulate_step_conditions(model, prepared);
     kinematic = ModelConstraints::build(model, prepared);
     temperature_changes = step_temperature_changes(model);
+    for (const std::string& warning : model_warnings(model, prepared)) phases.warning(warning);
     std::vector<std::string> notes;
     constraints = contact::build_contact_constraints(model, registry, &notes);
     for (const std::string& note : notes) phases.info(note);

@@ -16,6 +16,10 @@ class PhaseRecorder {
   void info(const std::string& message) const {
     if (sink_ != nullptr) sink_->info(message);
   }
+  void warning(const std::string& message) const {
+    if (report_ != nullptr) report_->warnings.push_back(message);
+    if (sink_ != nullptr) sink_->warning(message);
+  }
 
   // begin() on construction, end() with the elapsed seconds on destruction (also when unwinding,
   // so a GUI closes its progress bar when the phase throws).

@@ -24,6 +24,9 @@ class ProgressSink {
   virtual void begin(const std::string& phase) = 0;               // e.g. "assemble"
   virtual void end(const std::string& phase, double seconds) = 0;
   virtual void info(const std::string& message) = 0;              // one line of detail
+  // A solvable model whose answer is likely poor (locking, hourglassing, distortion): shown even
+  // where detail lines are not.
+  virtual void warning(const std::string& message) { info("warning: " + message); }
 };
 
 struct SolveOptions {
@@ -42,6 +45,7 @@ struct AnalysisReport {
   std::string linear_solver;         // e.g. "CHOLMOD supernodal (METIS node-graph ordering)"
   long long dofs = 0;                // unknowns of the (first) linear system solved
   int iterations = 0;                // CG iterations summed over the steps (iterative solver)
+  std::vector<std::string> warnings;  // what the model checks found (model_warnings), in order
 };
 
 // Runs every step of `model` as a linear static step (one increment each). Throws InputError for
