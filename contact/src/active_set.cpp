@@ -9,6 +9,8 @@
 #include <Eigen/Cholesky>
 #include <Eigen/LU>
 
+#include "dense_lu.hpp"
+
 namespace styk::contact {
 namespace {
 
@@ -184,9 +186,10 @@ bool solve_linearised(const std::vector<ContactConstraint>& constraints,
     }
     for (int c = 0; c < n + k; ++c)
       if (!(A.col(c).cwiseAbs().maxCoeff() > 1e-14)) return false;
-    const Eigen::PartialPivLU<Eigen::MatrixXd> lu(A);
+    const contact_detail::DenseLu lu(std::move(A));
+    if (!lu.factorised() || !(lu.rcond() > 1e-15)) return false;
     const Eigen::VectorXd x = lu.solve(rhs);
-    if (!x.allFinite() || !(lu.rcond() > 1e-15)) return false;
+    if (!x.allFinite()) return false;
     for (int j = 0; j < n; ++j) out.lambda[unknowns[j]] = x[j];
     out.alpha = x.tail(k);
   }
