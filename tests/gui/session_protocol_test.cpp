@@ -17,6 +17,9 @@ TEST(SolveProtocol, PhasesInfoAndErrors) {
   l = parse_solve_line("styk:   pattern: 1863 dofs, 205749 nonzeros");
   EXPECT_EQ(l.kind, SolveLine::Kind::Info);
   EXPECT_EQ(l.text, "pattern: 1863 dofs, 205749 nonzeros");
+  l = parse_solve_line("styk:   warning: 8 elements of type C3D8R0 have 27 zero-energy modes");
+  EXPECT_EQ(l.kind, SolveLine::Kind::Warning);
+  EXPECT_EQ(l.text, "8 elements of type C3D8R0 have 27 zero-energy modes");
   l = parse_solve_line("/tmp/x/model.inp:42: *CLOAD names node 999, which does not exist");
   EXPECT_EQ(l.kind, SolveLine::Kind::Error);
   EXPECT_EQ(l.where.file, "/tmp/x/model.inp");

@@ -32,6 +32,11 @@ SolveLine parse_solve_line(const std::string& raw) {
     out.kind = SolveLine::Kind::Info;
     const std::size_t first = line.find_first_not_of(' ', 5);
     out.text = first == std::string::npos ? std::string() : line.substr(first);
+    static const std::string warning = "warning: ";
+    if (out.text.rfind(warning, 0) == 0) {
+      out.kind = SolveLine::Kind::Warning;
+      out.text = out.text.substr(warning.size());
+    }
   } else if (std::regex_match(line, m, located)) {
     out.kind = SolveLine::Kind::Error;
     out.where = SourceLoc{m[1], std::atoi(m[2].str().c_str())};

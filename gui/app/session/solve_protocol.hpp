@@ -17,7 +17,8 @@ struct SolveLine {
   enum class Kind {
     PhaseBegin,  // "styk: assemble ..."
     PhaseEnd,    // "styk: assemble done in 0.017 s"
-    Info,        // "styk:   pattern: 1863 dofs, ..." and warnings
+    Info,        // "styk:   pattern: 1863 dofs, ..."
+    Warning,     // "styk:   warning: ..." (locking, hourglassing, distortion; text without it)
     Error,       // "deck.inp:12: message", "not converged: ...", "internal error: ..."
     Other,
   };

@@ -225,6 +225,13 @@ void MainWindow::on_solve_finished(bool ok, const QString& results, const QStrin
     return;
   }
   log("results: " + results);
+  if (solver_->warnings() > 0) {  // solved, but the answer may be poor: say so where it is seen
+    const QString note = QString("solved with %1 warning%2 (see the log)")
+                             .arg(solver_->warnings())
+                             .arg(solver_->warnings() == 1 ? "" : "s");
+    progress_->setFormat(note);
+    statusBar()->showMessage(note);
+  }
   if (results_->settings(mode_).field.empty()) results_->set_field("S.mises");
   refresh_model();
   emit solve_finished(true);

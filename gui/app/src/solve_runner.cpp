@@ -63,6 +63,7 @@ bool SolveRunner::start(const Model& model, const QString& job, QString* error) 
   cancelled_ = false;
   first_error_.clear();
   error_line_ = 0;
+  warnings_ = 0;
   pending_.clear();
   process_ = std::make_unique<QProcess>();
   QStringList arguments;
@@ -109,6 +110,10 @@ void SolveRunner::read_stderr() {
           error_line_ = parsed.where.line;
         }
         emit log(line);
+        break;
+      case SolveLine::Kind::Warning:
+        ++warnings_;
+        emit log("warning: " + QString::fromStdString(parsed.text));
         break;
       default:
         emit log(QString::fromStdString(parsed.text));

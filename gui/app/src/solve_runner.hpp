@@ -26,6 +26,8 @@ class SolveRunner : public QObject {
   void cancel();
   bool running() const;
   QString deck_path() const { return deck_; }
+  // The solver's warnings of the last run (locking, hourglassing, distortion), each in the log.
+  int warnings() const { return warnings_; }
 
   // STYK_CLI from the environment, else `styk` next to this program, else the build tree's, else
   // `styk` on PATH.
@@ -50,6 +52,7 @@ class SolveRunner : public QObject {
   QString pending_;
   QString first_error_;
   int error_line_ = 0;
+  int warnings_ = 0;
   bool cancelled_ = false;
 };
 
