@@ -8,6 +8,7 @@
 #include <cmath>
 #include <functional>
 
+#include "refusal.hpp"
 #include "session/block_input.hpp"
 #include "styk/core/plugin_loader.hpp"
 #include "styk/elements/builtin.hpp"
@@ -19,14 +20,7 @@ namespace {
 constexpr double kPi = 3.14159265358979323846;
 constexpr double kInner = 10.0, kOuter = 20.0, kHeight = 5.0;
 
-std::string refusal(const std::function<void()>& f) {
-  try {
-    f();
-  } catch (const InputError& e) {
-    return e.message();
-  }
-  return "(accepted)";
-}
+using test::refusal;
 
 Vec3 polar(double r, double angle, double z) {
   return {r * std::cos(angle), r * std::sin(angle), z};

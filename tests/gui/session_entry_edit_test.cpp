@@ -10,6 +10,7 @@
 #include <fstream>
 #include <functional>
 
+#include "refusal.hpp"
 #include "session/constraint_input.hpp"
 #include "session/contact_input.hpp"
 #include "session/entry_edits.hpp"
@@ -24,14 +25,7 @@
 namespace styk::gui {
 namespace {
 
-std::string refusal(const std::function<void()>& f) {
-  try {
-    f();
-  } catch (const InputError& e) {
-    return e.message();
-  }
-  return "(accepted)";
-}
+using test::refusal;
 
 template <typename T>
 bool same_entries(const std::vector<T>& a, const std::vector<T>& b) {

@@ -7,6 +7,7 @@
 #include <fstream>
 #include <functional>
 
+#include "refusal.hpp"
 #include "session/constraint_input.hpp"
 #include "session/contact_input.hpp"
 #include "session/entry_edits.hpp"
@@ -21,14 +22,7 @@
 namespace styk::gui {
 namespace {
 
-std::string refusal(const std::function<void()>& f) {
-  try {
-    f();
-  } catch (const InputError& e) {
-    return e.message();
-  }
-  return "(accepted)";
-}
+using test::refusal;
 
 // The SPEC §4.2 quarter shrink fit as the GUI walk-through builds it (coarse mesh).
 class ModelEditTest : public ::testing::Test {

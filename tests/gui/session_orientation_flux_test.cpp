@@ -10,6 +10,7 @@
 #include <functional>
 #include <sstream>
 
+#include "refusal.hpp"
 #include "session/contact_input.hpp"
 #include "session/entry_edits.hpp"
 #include "session/flux_input.hpp"
@@ -24,14 +25,7 @@
 namespace styk::gui {
 namespace {
 
-std::string refusal(const std::function<void()>& f) {
-  try {
-    f();
-  } catch (const InputError& e) {
-    return e.message();
-  }
-  return "(accepted)";
-}
+using test::refusal;
 
 std::string deck_text(const Model& model) {
   std::ostringstream out;

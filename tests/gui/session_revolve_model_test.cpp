@@ -8,6 +8,7 @@
 #include <cstdio>
 #include <functional>
 
+#include "refusal.hpp"
 #include "session/revolve.hpp"
 #include "styk/core/plugin_loader.hpp"
 #include "styk/elements/builtin.hpp"
@@ -18,14 +19,7 @@ namespace {
 
 constexpr double kPi = 3.14159265358979323846;
 
-std::string refusal(const std::function<void()>& f) {
-  try {
-    f();
-  } catch (const InputError& e) {
-    return e.message();
-  }
-  return "(accepted)";
-}
+using test::refusal;
 
 double radius(const Vec3& x) { return std::hypot(x[0], x[1]); }
 

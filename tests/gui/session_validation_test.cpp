@@ -4,6 +4,7 @@
 
 #include <algorithm>
 
+#include "refusal.hpp"
 #include "session/validation.hpp"
 #include "styk/core/plugin_loader.hpp"
 #include "styk/elements/builtin.hpp"
@@ -11,14 +12,7 @@
 namespace styk::gui {
 namespace {
 
-std::string refusal(const std::function<void()>& f) {
-  try {
-    f();
-  } catch (const InputError& e) {
-    return e.message();
-  }
-  return "(accepted)";
-}
+using test::refusal;
 
 class ValidationTest : public ::testing::Test {
  protected:
