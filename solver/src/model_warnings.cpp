@@ -47,7 +47,8 @@ bool locks(const TElement& element, const Material& material) {
 
 // min / max of the point measure (det J) over the element's full rule; 1 when it cannot be
 // evaluated (an inverted element is reported by the assembly, at its integration point).
-double measure_ratio(const Model& model, const TElement& element, int e, double cross_section) {
+double measure_ratio(const Model& model, const TElement& element, const IntegrationRule& rule,
+                     int e, double cross_section) {
   const int n = element.node_count();
   ElementGeometry g;
   g.X.resize(n, 3);
@@ -57,7 +58,6 @@ double measure_ratio(const Model& model, const TElement& element, int e, double 
   const int* nodes = model.element_nodes(e);
   for (int a = 0; a < n; ++a)
     for (int d = 0; d < 3; ++d) g.X(a, d) = model.coords[nodes[a]][d];
-  const IntegrationRule rule = element.rule(RuleKind::Full);
   if (rule.size() < 2) return 1.0;
   Eigen::VectorXd N(n);
   Eigen::MatrixXd dN(n, 3), dNdx(n, 3);
@@ -159,12 +159,15 @@ std::vector<std::string> model_warnings(const Model& model, const PreparedModel&
   }
 
   // Distortion: the worst element and how many are beyond the ratio.
+  std::map<const TElement*, IntegrationRule> rules;
   int distorted = 0, worst = -1;
   double worst_ratio = 1.0;
   for (int e = 0; e < model.element_count(); ++e) {
     const TElement& f = *prepared.formulation[e];
     if (f.section_measure() == SectionMeasure::Area) continue;  // a truss has no shape to lose
-    const double ratio = measure_ratio(model, f, e, cross_section_of(model, e));
+    auto rule = rules.find(&f);  // one rule per type, not one per element
+    if (rule == rules.end()) rule = rules.emplace(&f, f.rule(RuleKind::Full)).first;
+    const double ratio = measure_ratio(model, f, rule->second, e, cross_section_of(model, e));
     if (ratio >= kDistortedRatio) continue;
     ++distorted;
     if (ratio < worst_ratio) worst_ratio = ratio, worst = e;
