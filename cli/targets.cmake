@@ -14,7 +14,7 @@ add_executable(styk
   src/command_verify.cpp
 )
 target_include_directories(styk PRIVATE src)
-target_link_libraries(styk PRIVATE styk_solver styk_inp styk_io styk_elements styk_mesher styk_verify CLI11::CLI11 fmt::fmt
+target_link_libraries(styk PRIVATE styk_solver styk_inp styk_io styk_elements styk_mesher styk_studies CLI11::CLI11 fmt::fmt
   styk_warnings)
 # `styk render` needs the OSMesa renderer (STYK_OSMESA, on by default).
 if(TARGET styk_render_osmesa)

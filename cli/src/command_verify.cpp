@@ -10,7 +10,7 @@
 #include "exit_codes.hpp"
 #include "registry_setup.hpp"
 #include "styk/core/diagnostics.hpp"
-#include "styk/verify/report.hpp"
+#include "styk/studies/verify/report.hpp"
 #include "verify_args.hpp"
 
 namespace styk::cli {

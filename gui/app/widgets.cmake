@@ -15,6 +15,7 @@ add_library(styk_gui_widgets STATIC
   src/results_panel.cpp
   src/path_chart.cpp
   src/solve_runner.cpp
+  src/child_process_solve.cpp
   src/main_window.cpp
   src/main_window_menus.cpp
 )

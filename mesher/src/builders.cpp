@@ -4,13 +4,23 @@
 #include <cerrno>
 #include <cmath>
 #include <cstdlib>
+#include <utility>
 
 #include "builder_catalogue.hpp"
 
 namespace styk::mesher {
 
-BuilderParams::BuilderParams(std::string builder, std::map<std::string, std::string> values)
-    : builder_(std::move(builder)), values_(std::move(values)) {}
+BuilderParams::BuilderParams(std::string builder, std::map<std::string, std::string> values,
+                             StaticSolve solve)
+    : builder_(std::move(builder)), values_(std::move(values)), solve_(std::move(solve)) {}
+
+Results BuilderParams::solve(const Model& model, const std::string& option,
+                             const std::string& alternative) const {
+  if (!solve_)
+    fail(option + " needs a solve, and this program builds decks without solving; use " +
+         alternative + " (or `styk mesh`, which solves)");
+  return solve_(model);
+}
 
 void BuilderParams::fail(const std::string& message) const {
   throw InputError({"styk mesh " + builder_, 0}, message);
@@ -92,7 +102,7 @@ std::vector<BuilderInfo> builder_catalogue() {
 }
 
 BuildResult run_builder(const std::string& name, const std::map<std::string, std::string>& args,
-                        const ElementRegistry& registry) {
+                        const ElementRegistry& registry, StaticSolve solve) {
   const std::vector<BuilderInfo> all = builder_catalogue();
   const auto info =
       std::find_if(all.begin(), all.end(), [&](const BuilderInfo& b) { return b.name == name; });
@@ -112,7 +122,7 @@ BuildResult run_builder(const std::string& name, const std::map<std::string, std
     }
     values[key] = value;
   }
-  BuildResult result = info->build(BuilderParams(name, values), registry);
+  BuildResult result = info->build(BuilderParams(name, values, std::move(solve)), registry);
   result.model.source = name;
   return result;
 }

@@ -25,7 +25,6 @@
 #include "builder_support.hpp"
 #include "contact_support.hpp"
 #include "styk/mesher/merge.hpp"
-#include "styk/solver/analysis.hpp"
 
 namespace styk::mesher::detail {
 namespace {
@@ -125,7 +124,7 @@ Step preload_step(const std::string& family, const std::vector<int>& bolt_end, d
   return step;
 }
 
-BuildResult bolted_flange(const BuilderParams& p, const ElementRegistry& registry) {
+BuildResult bolted_flange(const BuilderParams& p, const ElementRegistry& /*registry*/) {
   const FlangeParams f = read_params(p);
   BuildResult r;
   Mesh& mesh = r.mesh;
@@ -206,7 +205,7 @@ BuildResult bolted_flange(const BuilderParams& p, const ElementRegistry& registr
   if (f.calibrate) {
     Model unit = r.model;
     unit.steps = {preload_step(f.family, bolt_end, 1.0)};
-    const Results solved = run_static_analysis(unit, registry, SolveOptions{}, nullptr, nullptr);
+    const Results solved = p.solve(unit, "--preload-by calibration", "--preload-by estimate");
     const double per_unit = sector_bolt_force(solved, bolt_end, 1);
     if (!(per_unit > 0))
       throw std::logic_error("bolted flange: calibration gave a bolt force of " +

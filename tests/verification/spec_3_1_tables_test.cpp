@@ -16,7 +16,7 @@
 #include "hex_model_builder.hpp"
 #include "styk/inp/writer.hpp"
 #include "styk/io/dat_reader.hpp"
-#include "styk/verify/report.hpp"
+#include "styk/studies/verify/report.hpp"
 
 namespace styk::verify {
 namespace {

@@ -1,5 +1,6 @@
 #include "model_dialogs.hpp"
 
+#include <QApplication>
 #include <QFormLayout>
 #include <QLabel>
 #include <QLineEdit>
@@ -9,14 +10,24 @@
 #include <cstdlib>
 #include <map>
 
+#include "child_process_solve.hpp"
 #include "dialog_fields.hpp"
 #include "session/entry_edits.hpp"
 #include "session/input_checks.hpp"
 #include "session/validation.hpp"
+#include "solve_runner.hpp"
 #include "styk/mesher/builders.hpp"
 
 namespace styk::gui {
 namespace {
+
+// The wait cursor for as long as it lives (a builder may calibrate with a solve).
+struct BusyCursor {
+  BusyCursor() { QApplication::setOverrideCursor(Qt::WaitCursor); }
+  ~BusyCursor() { QApplication::restoreOverrideCursor(); }
+  BusyCursor(const BusyCursor&) = delete;
+  BusyCursor& operator=(const BusyCursor&) = delete;
+};
 
 QStringList element_sets(const Model& m) { return element_set_names(m); }
 QStringList materials(const Model& m) { return material_names(m); }
@@ -142,7 +153,10 @@ FormDialog* make_builder_dialog(Document& doc, const std::string& builder, QWidg
   d->set_accept([&doc, builder, params](const FormDialog& f) {
     std::map<std::string, std::string> args;
     for (const mesher::ParamDecl& p : params) args[p.name] = f.text(QString::fromStdString(p.name));
-    mesher::BuildResult built = mesher::run_builder(builder, args, doc.registry());
+    // A calibrating builder (the bolted flange's preload) solves through `styk solve`.
+    const BusyCursor busy;
+    mesher::BuildResult built = mesher::run_builder(
+        builder, args, doc.registry(), child_process_solve(SolveRunner::locate_styk_program()));
     built.model.source = builder + ".inp";
     doc.apply(make_replace_model("Build " + builder, doc.model(), std::move(built.model)));
   });

@@ -21,6 +21,7 @@
 #include "styk/mesher/builders.hpp"
 #include "styk/mesher/quality.hpp"
 #include "styk/solver/analysis.hpp"
+#include "styk/studies/static_solve.hpp"
 
 namespace styk {
 namespace {
@@ -211,6 +212,21 @@ TEST(BoltedFlangeParameters, BadValuesAreNamed) {
   fails({{"preload-by", "guess"}}, "--preload-by");
 }
 
+// The mesher never solves: asked to calibrate without a solve from its caller, the builder
+// refuses and names the setting that needs none.
+TEST(BoltedFlangePreload, CalibrationWithoutASolveIsRefused) {
+  const test::Elements elements;
+  try {
+    mesher::run_builder("bolted-flange", {{"element", "C3D21"}}, elements.registry);
+    ADD_FAILURE() << "calibration without a solve was accepted";
+  } catch (const InputError& e) {
+    EXPECT_NE(std::string(e.what()).find("--preload-by calibration needs a solve"),
+              std::string::npos)
+        << e.what();
+    EXPECT_NE(std::string(e.what()).find("--preload-by estimate"), std::string::npos) << e.what();
+  }
+}
+
 // SPEC §4.6 step 1: preload 15 kN, the sector holding half the bolt: 7500 N. The builder
 // calibrates the shortening with one solve; the written deck, read back and solved, must give
 // -sum RF_z at the bolt's cut end = 7500 N to the contact solver's tolerance (1e-6 relative:
@@ -220,7 +236,8 @@ TEST(BoltedFlangePreload, CalibratedDeckCarriesThePreload) {
   const std::map<std::string, std::string> coarse = {
       {"element", "C3D21"},  {"ring-layers", "2"}, {"neck-layers", "1"},  {"gasket-layers", "1"},
       {"shank-layers", "1"}, {"head-layers", "1"}, {"gasket-rings", "4"}, {"neck-rings", "1"}};
-  const mesher::BuildResult r = mesher::run_builder("bolted-flange", coarse, elements.registry);
+  const mesher::BuildResult r = mesher::run_builder("bolted-flange", coarse, elements.registry,
+                                                    studies::static_solve(elements.registry));
   const std::string path = ::testing::TempDir() + "bolted_flange_preload.inp";
   {
     std::ofstream out(path);

@@ -6,7 +6,7 @@
 #include <string>
 #include <vector>
 
-#include "styk/verify/run_benchmark.hpp"
+#include "styk/studies/verify/run_benchmark.hpp"
 
 namespace styk::verify {
 

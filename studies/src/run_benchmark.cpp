@@ -1,4 +1,4 @@
-#include "styk/verify/run_benchmark.hpp"
+#include "styk/studies/verify/run_benchmark.hpp"
 
 #include <algorithm>
 #include <cmath>

@@ -11,7 +11,7 @@
 #include "styk/core/element_registry.hpp"
 #include "styk/core/model.hpp"
 #include "styk/core/results.hpp"
-#include "styk/verify/benchmark_cases.hpp"
+#include "styk/studies/verify/benchmark_cases.hpp"
 
 namespace styk::verify {
 

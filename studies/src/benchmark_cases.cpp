@@ -1,6 +1,6 @@
 // The SPEC §3.1 element tests as data. Every thesis number below is copied from SPEC.md (which
 // transcribes the thesis' Tab 3.1-3.11 and Tab 3.13); the table each block comes from is cited.
-#include "styk/verify/benchmark_cases.hpp"
+#include "styk/studies/verify/benchmark_cases.hpp"
 
 #include <cmath>
 

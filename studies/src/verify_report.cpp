@@ -1,4 +1,4 @@
-#include "styk/verify/report.hpp"
+#include "styk/studies/verify/report.hpp"
 
 #include <cmath>
 #include <cstdio>
