@@ -2,7 +2,10 @@
 
 #include <algorithm>
 #include <stdexcept>
+#include <type_traits>
 #include <utility>
+
+#include "h5_integrity.hpp"
 
 namespace styk::io::h5 {
 
@@ -15,6 +18,7 @@ herr_t take_innermost(unsigned n, const H5E_error2_t* err, void* client) {
 }
 
 constexpr std::uint64_t kChunkBytes = 1u << 20;
+constexpr unsigned kMaxCompactLinks = 65535;  // HDF5's limit for links kept in the header
 
 }  // namespace
 
@@ -22,7 +26,7 @@ void fail(const std::string& what) {
   std::string cause;
   H5Ewalk2(H5E_DEFAULT, H5E_WALK_UPWARD, take_innermost, &cause);
   H5Eclear2(H5E_DEFAULT);
-  throw std::runtime_error(cause.empty() ? what : what + ": " + cause);
+  throw Error(cause.empty() ? what : what + ": " + cause);
 }
 
 QuietErrors::QuietErrors() {
@@ -59,7 +63,14 @@ void Handle::close(const std::string& what) {
 }
 
 Handle create_group(hid_t parent, const std::string& name) {
-  return Handle(H5Gcreate2(parent, name.c_str(), H5P_DEFAULT, H5P_DEFAULT, H5P_DEFAULT), H5Gclose,
+  Handle props(H5Pcreate(H5P_GROUP_CREATE), H5Pclose, "cannot create property list");
+  // Links stay in the group's object header, which HDF5 checksums, instead of moving to the
+  // "dense" fractal heap beyond 8 links, whose blocks carry no checksum in HDF5 1.10: a flipped
+  // byte there goes unnoticed or crashes the HDF5 library while it walks the group.
+  if (file_has_checksums(parent))
+    check(H5Pset_link_phase_change(props.get(), kMaxCompactLinks, kMaxCompactLinks),
+          "cannot keep the links of " + name + " compact");
+  return Handle(H5Gcreate2(parent, name.c_str(), H5P_DEFAULT, props.get(), H5P_DEFAULT), H5Gclose,
                 "cannot create group " + name);
 }
 
@@ -94,15 +105,22 @@ std::vector<std::string> link_names(hid_t group) {
 
 void write_dataset(hid_t parent, const std::string& name, hid_t file_type, hid_t mem_type,
                    const void* data, std::uint64_t rows, std::uint64_t cols) {
+  // A file with checksums (docs/results.md) holds finite numbers only, every stored chunk carries
+  // Fletcher-32 and every dataset the CRC-32 of its values: for all datasets, whatever they hold.
+  const bool checksums = file_has_checksums(parent);
+  if (checksums && H5Tequal(mem_type, H5T_NATIVE_DOUBLE) > 0)
+    require_finite(path_of(parent) + "/" + name, static_cast<const double*>(data), rows, cols);
   const int rank = cols == 0 ? 1 : 2;
   const hsize_t dims[2] = {rows, cols};
   Handle space(H5Screate_simple(rank, dims, nullptr), H5Sclose, "cannot create dataspace");
   Handle create_props(H5Pcreate(H5P_DATASET_CREATE), H5Pclose, "cannot create property list");
+  const std::uint64_t row_bytes = H5Tget_size(file_type) * std::max<std::uint64_t>(cols, 1);
   if (rows > 0) {
-    const std::uint64_t row_bytes = H5Tget_size(file_type) * std::max<std::uint64_t>(cols, 1);
     const hsize_t chunk[2] = {std::clamp<std::uint64_t>(kChunkBytes / row_bytes, 1, rows),
                               std::max<std::uint64_t>(cols, 1)};
     check(H5Pset_chunk(create_props.get(), rank, chunk), "cannot set chunking for " + name);
+    if (checksums)
+      check(H5Pset_fletcher32(create_props.get()), "cannot set the checksum filter of " + name);
   }
   Handle dataset(H5Dcreate2(parent, name.c_str(), file_type, space.get(), H5P_DEFAULT,
                             create_props.get(), H5P_DEFAULT),
@@ -110,6 +128,9 @@ void write_dataset(hid_t parent, const std::string& name, hid_t file_type, hid_t
   if (rows > 0)
     check(H5Dwrite(dataset.get(), mem_type, H5S_ALL, H5S_ALL, H5P_DEFAULT, data),
           "cannot write dataset " + name);
+  if (checksums)
+    write_attribute(dataset.get(), kCrcAttribute,
+                    static_cast<std::int64_t>(crc32_of(data, rows * row_bytes)));
   dataset.close("cannot close dataset " + name);
 }
 
@@ -146,9 +167,11 @@ std::uint64_t read_array(hid_t parent, const std::string& name, hid_t mem_type, 
                  "cannot open dataset " + name);
   const std::uint64_t rows = checked_rows(dataset.get(), name, cols);
   out.resize(rows * std::max<std::uint64_t>(cols, 1));
-  if (rows > 0)
-    check(H5Dread(dataset.get(), mem_type, H5S_ALL, H5S_ALL, H5P_DEFAULT, out.data()),
-          "cannot read dataset " + name);
+  const std::string path = path_of(dataset.get());
+  if (rows > 0 && H5Dread(dataset.get(), mem_type, H5S_ALL, H5S_ALL, H5P_DEFAULT, out.data()) < 0)
+    fail_read(path);
+  verify_crc(dataset.get(), path, out.data(), out.size() * sizeof(T));
+  if constexpr (std::is_same_v<T, double>) require_finite(path, out.data(), rows, cols);
   return rows;
 }
 
@@ -188,9 +211,11 @@ std::vector<std::string> read_strings(hid_t parent, const std::string& name) {
   const std::uint64_t rows = checked_rows(dataset.get(), name, 0);
   std::string packed(rows * width, '\0');
   const Handle mem_type = fixed_string_type(width);
-  if (rows > 0)
-    check(H5Dread(dataset.get(), mem_type.get(), H5S_ALL, H5S_ALL, H5P_DEFAULT, packed.data()),
-          "cannot read dataset " + name);
+  const std::string path = path_of(dataset.get());
+  if (rows > 0 &&
+      H5Dread(dataset.get(), mem_type.get(), H5S_ALL, H5S_ALL, H5P_DEFAULT, packed.data()) < 0)
+    fail_read(path);
+  verify_crc(dataset.get(), path, packed.data(), packed.size());
   std::vector<std::string> out;
   out.reserve(rows);
   for (std::uint64_t i = 0; i < rows; ++i) out.push_back(trim_padding(&packed[i * width], width));
@@ -226,6 +251,7 @@ void write_attribute(hid_t object, const std::string& name, std::int64_t value) 
 }
 
 void write_attribute(hid_t object, const std::string& name, double value) {
+  if (file_has_checksums(object)) require_finite(path_of(object) + "@" + name, &value, 1, 0);
   write_scalar_attribute(object, name, H5T_IEEE_F64LE, H5T_NATIVE_DOUBLE, &value);
 }
 
@@ -252,6 +278,7 @@ double read_double_attribute(hid_t object, const std::string& name) {
   const Handle attribute = open_attribute(object, name);
   double value = 0.0;
   check(H5Aread(attribute.get(), H5T_NATIVE_DOUBLE, &value), "cannot read attribute " + name);
+  require_finite(path_of(object) + "@" + name, &value, 1, 0);
   return value;
 }
 

@@ -5,12 +5,20 @@
 #include <hdf5.h>
 
 #include <cstdint>
+#include <stdexcept>
 #include <string>
 #include <vector>
 
 namespace styk::io::h5 {
 
-// Throws std::runtime_error("<what>: <innermost HDF5 error description>").
+// HDF5 refused an operation. While reading a file that opened, this means its structure is
+// broken (HDF5 checks its own metadata checksums): readers report it as damage.
+class Error : public std::runtime_error {
+ public:
+  using std::runtime_error::runtime_error;
+};
+
+// Throws Error("<what>: <innermost HDF5 error description>").
 [[noreturn]] void fail(const std::string& what);
 inline void check(herr_t status, const std::string& what) {
   if (status < 0) fail(what);

@@ -8,8 +8,12 @@
 #include <string>
 #include <vector>
 
+#include "h5_integrity.hpp"
 #include "h5_util.hpp"
 #include "results_contact.hpp"
+#include "results_integrity.hpp"
+#include "results_open.hpp"
+#include "results_rows.hpp"
 #include "results_scalar.hpp"
 #include "results_schema.hpp"
 #include "styk/io/results_file.hpp"
@@ -168,38 +172,62 @@ void read_steps(hid_t file, const Model& model, Results& results) {
             });
 }
 
+ResultsFileContents read_contents(hid_t file, const std::string& path) {
+  ResultsFileContents contents;
+  if (!h5::has_link(file, "model") || H5Aexists(file, "format") <= 0 ||
+      h5::read_string_attribute(file, "format") != io::schema::kFormat)
+    throw std::runtime_error("not a Styk results file (root attribute format is not \"" +
+                             std::string(io::schema::kFormat) + "\")");
+  contents.schema_version = static_cast<int>(h5::read_int_attribute(file, "schema_version"));
+  if (contents.schema_version < 1 || contents.schema_version > io::schema::kSchemaVersion)
+    throw std::runtime_error("schema version " + std::to_string(contents.schema_version) +
+                             " is not one this build reads (1.." +
+                             std::to_string(io::schema::kSchemaVersion) + ")");
+  // The digest first: a dataset lost or added is found before any is decoded.
+  contents.verified = io::verify_digest(file) == io::FileIntegrity::Checksummed;
+  contents.styk_version = h5::read_string_attribute(file, "styk_version");
+  contents.model.source = h5::read_string_attribute(file, "source");
+  contents.model.heading = h5::read_string_attribute(file, "heading");
+  const SourceLoc where{path, 0};
+  {
+    const h5::Handle mesh = h5::open_group(file, "model");
+    read_nodes(mesh.get(), where, contents.model);
+    read_elements(mesh.get(), where, contents.model);
+    read_sets(mesh.get(), where, contents.model);
+  }
+  read_steps(file, contents.model, contents.results);
+  return contents;
+}
+
 }  // namespace
 
 ResultsFileContents read_results_file(const std::string& path) {
   const h5::QuietErrors quiet;
+  const SourceLoc where{path, 0};
+  h5::Handle file;
   try {
-    h5::Handle file(H5Fopen(path.c_str(), H5F_ACC_RDONLY, H5P_DEFAULT), H5Fclose, "cannot open");
-    ResultsFileContents contents;
-    if (!h5::has_link(file.get(), "model") || H5Aexists(file.get(), "format") <= 0 ||
-        h5::read_string_attribute(file.get(), "format") != io::schema::kFormat)
-      throw std::runtime_error("not a Styk results file (root attribute format is not \"" +
-                               std::string(io::schema::kFormat) + "\")");
-    contents.schema_version =
-        static_cast<int>(h5::read_int_attribute(file.get(), "schema_version"));
-    if (contents.schema_version < 1 || contents.schema_version > io::schema::kSchemaVersion)
-      throw std::runtime_error("schema version " + std::to_string(contents.schema_version) +
-                               " is not one this build reads (1.." +
-                               std::to_string(io::schema::kSchemaVersion) + ")");
-    contents.styk_version = h5::read_string_attribute(file.get(), "styk_version");
-    contents.model.source = h5::read_string_attribute(file.get(), "source");
-    contents.model.heading = h5::read_string_attribute(file.get(), "heading");
-    const SourceLoc where{path, 0};
-    {
-      const h5::Handle mesh = h5::open_group(file.get(), "model");
-      read_nodes(mesh.get(), where, contents.model);
-      read_elements(mesh.get(), where, contents.model);
-      read_sets(mesh.get(), where, contents.model);
-    }
-    read_steps(file.get(), contents.model, contents.results);
-    return contents;
+    file = io::open_results_for_reading(path);
   } catch (const std::runtime_error& e) {
-    throw std::runtime_error("cannot read results file " + path + ": " + e.what());
+    throw InputError(where, e.what());
   }
+  try {
+    return read_contents(file.get(), path);
+  } catch (const h5::NonFiniteError& e) {
+    throw InputError(where, io::describe_non_finite(file.get(), e) +
+                                " \u2014 a results file holds finite numbers only");
+  } catch (const InputError& e) {
+    throw InputError(where, e.message());
+  } catch (const h5::Error& e) {  // HDF5 found its own structure broken
+    throw InputError(where, std::string(e.what()) + " \u2014 the file is damaged");
+  } catch (const std::runtime_error& e) {
+    throw InputError(where, e.what());
+  }
+}
+
+std::string unverified_notice(const std::string& path) {
+  return path +
+         ": notice: written before Styk results files carried checksums; what it holds cannot be "
+         "verified";
 }
 
 }  // namespace styk

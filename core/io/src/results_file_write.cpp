@@ -4,8 +4,12 @@
 #include <string>
 #include <vector>
 
+#include "h5_integrity.hpp"
 #include "h5_util.hpp"
 #include "results_contact.hpp"
+#include "results_file_layout.hpp"
+#include "results_integrity.hpp"
+#include "results_rows.hpp"
 #include "results_scalar.hpp"
 #include "results_schema.hpp"
 #include "styk/io/results_file.hpp"
@@ -14,6 +18,8 @@
 namespace styk {
 
 namespace {
+
+namespace h5 = io::h5;
 
 static_assert(sizeof(Vec3) == 3 * sizeof(double), "Vec3 must be three packed doubles");
 static_assert(sizeof(Tensor6) == 6 * sizeof(double), "Tensor6 must be six packed doubles");
@@ -87,7 +93,6 @@ std::vector<std::int64_t> widen(const std::vector<int>& v) {
 }
 
 void write_mesh(hid_t file, const Model& model) {
-  namespace h5 = io::h5;
   const h5::Handle mesh = h5::create_group(file, "model");
   {
     const h5::Handle nodes = h5::create_group(mesh.get(), "nodes");
@@ -126,7 +131,6 @@ void write_mesh(hid_t file, const Model& model) {
 }
 
 void write_increment(hid_t steps, const IncrementResult& inc) {
-  namespace h5 = io::h5;
   const std::string step_name = io::schema::step_group(inc.step);
   const h5::Handle step = h5::has_link(steps, step_name) ? h5::open_group(steps, step_name)
                                                          : h5::create_group(steps, step_name);
@@ -138,11 +142,12 @@ void write_increment(hid_t steps, const IncrementResult& inc) {
   h5::write_attribute(group.get(), "increment", std::int64_t{inc.increment});
   h5::write_attribute(group.get(), "step_time", inc.step_time);
   h5::write_attribute(group.get(), "total_time", inc.total_time);
+  // The index first: a refusal of a non-finite value names its element and integration point.
+  h5::write_int64(group.get(), "ip_offsets", widen(inc.ip_offset));
   write_rows(group.get(), "U", inc.U.empty() ? nullptr : inc.U[0].data(), inc.U.size(), 3);
   write_rows(group.get(), "RF", inc.RF.empty() ? nullptr : inc.RF[0].data(), inc.RF.size(), 3);
   write_rows(group.get(), "S", inc.S.empty() ? nullptr : inc.S[0].data(), inc.S.size(), 6);
   write_rows(group.get(), "E", inc.E.empty() ? nullptr : inc.E[0].data(), inc.E.size(), 6);
-  h5::write_int64(group.get(), "ip_offsets", widen(inc.ip_offset));
   for (const io::schema::RecoveredField& field : io::schema::kRecoveredFields) {
     const std::vector<Tensor6>& values = inc.*field.member;
     write_rows(group.get(), field.name, values.empty() ? nullptr : values[0].data(), values.size(),
@@ -152,33 +157,57 @@ void write_increment(hid_t steps, const IncrementResult& inc) {
   io::write_scalar(group.get(), inc);
 }
 
+void write_contents(hid_t file, const Model& model, const Results& results) {
+  h5::write_attribute(file, "format", std::string(io::schema::kFormat));
+  h5::write_attribute(file, "schema_version", std::int64_t{io::schema::kSchemaVersion});
+  h5::write_attribute(file, "styk_version", std::string(STYK_VERSION_STRING));
+  h5::write_attribute(file, "source", model.source);
+  h5::write_attribute(file, "heading", model.heading);
+  write_mesh(file, model);
+  const h5::Handle steps = h5::create_group(file, "steps");
+  for (const IncrementResult& inc : results.increments) write_increment(steps.get(), inc);
+}
+
+h5::Handle create_file(const std::string& path, io::ResultsLayout layout) {
+  if (layout == io::ResultsLayout::Checksummed) return io::create_checksummed_file(path);
+  return h5::Handle(H5Fcreate(path.c_str(), H5F_ACC_TRUNC, H5P_DEFAULT, H5P_DEFAULT), H5Fclose,
+                    "cannot create " + path);
+}
+
 }  // namespace
 
-void write_results_file(const std::string& path, const Model& model, const Results& results) {
-  namespace h5 = io::h5;
+namespace io {
+
+void write_results_file_as(const std::string& path, const Model& model, const Results& results,
+                           ResultsLayout layout) {
   const h5::QuietErrors quiet;
   try {
     for (const IncrementResult& inc : results.increments) check_sizes(model, inc);
-    io::TempFile temp(path);
+    TempFile temp(path);
     {
-      h5::Handle file(H5Fcreate(temp.temp_path().c_str(), H5F_ACC_TRUNC, H5P_DEFAULT, H5P_DEFAULT),
-                      H5Fclose, "cannot create " + temp.temp_path());
-      h5::write_attribute(file.get(), "format", std::string(io::schema::kFormat));
-      h5::write_attribute(file.get(), "schema_version", std::int64_t{io::schema::kSchemaVersion});
-      h5::write_attribute(file.get(), "styk_version", std::string(STYK_VERSION_STRING));
-      h5::write_attribute(file.get(), "source", model.source);
-      h5::write_attribute(file.get(), "heading", model.heading);
-      write_mesh(file.get(), model);
-      {
-        const h5::Handle steps = h5::create_group(file.get(), "steps");
-        for (const IncrementResult& inc : results.increments) write_increment(steps.get(), inc);
+      h5::Handle file = create_file(temp.temp_path(), layout);
+      try {
+        write_contents(file.get(), model, results);
+      } catch (const h5::NonFiniteError& e) {
+        throw NonFiniteResultsError("cannot write results file " + path + ": " +
+                                    describe_non_finite(file.get(), e) +
+                                    "; Styk writes finite results only, so nothing was written");
       }
+      if (layout == ResultsLayout::Checksummed) write_digest(file.get());
       file.close("cannot finish " + temp.temp_path());
     }
     temp.commit();
+  } catch (const NonFiniteResultsError&) {
+    throw;
   } catch (const std::runtime_error& e) {
     throw std::runtime_error("cannot write results file " + path + ": " + e.what());
   }
+}
+
+}  // namespace io
+
+void write_results_file(const std::string& path, const Model& model, const Results& results) {
+  io::write_results_file_as(path, model, results, io::ResultsLayout::Checksummed);
 }
 
 }  // namespace styk

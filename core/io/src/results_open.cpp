@@ -1,0 +1,36 @@
+#include "results_open.hpp"
+
+#include <cerrno>
+#include <cstdio>
+#include <cstring>
+#include <filesystem>
+#include <stdexcept>
+
+namespace styk::io {
+
+h5::Handle open_results_for_reading(const std::string& path) {
+  if (FILE* probe = std::fopen(path.c_str(), "rb"))
+    std::fclose(probe);
+  else
+    throw std::runtime_error(std::string("cannot be opened: ") + std::strerror(errno));
+  std::error_code size_error;
+  const auto bytes = std::filesystem::file_size(path, size_error);
+  if (H5Fis_hdf5(path.c_str()) <= 0) {
+    H5Eclear2(H5E_DEFAULT);
+    throw std::runtime_error("is not an HDF5 file (" +
+                             (size_error ? std::string("its size is unknown")
+                                         : std::to_string(bytes) + " bytes") +
+                             ": empty, cut short before its first block, or another kind of file)");
+  }
+  const hid_t id = H5Fopen(path.c_str(), H5F_ACC_RDONLY, H5P_DEFAULT);
+  if (id < 0) {
+    try {
+      h5::fail("HDF5 cannot open it");
+    } catch (const std::runtime_error& e) {
+      throw std::runtime_error(std::string(e.what()) + " \u2014 the file is damaged");
+    }
+  }
+  return h5::Handle(id, H5Fclose, "cannot open");
+}
+
+}  // namespace styk::io

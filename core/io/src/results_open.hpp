@@ -1,0 +1,16 @@
+// Opening a results file for reading, shared by the reader and `styk check`: a missing file, a
+// file that is not HDF5 and an HDF5 file that HDF5 itself refuses (cut short, superblock broken)
+// are told apart in the message.
+#pragma once
+
+#include <string>
+
+#include "h5_util.hpp"
+
+namespace styk::io {
+
+// Opens `path` read-only. Throws std::runtime_error with a message without the path ("cannot be
+// opened: No such file or directory", "is not an HDF5 file ...", "... — the file is damaged").
+h5::Handle open_results_for_reading(const std::string& path);
+
+}  // namespace styk::io
