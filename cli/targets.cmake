@@ -6,6 +6,7 @@ add_executable(styk
   src/command_solve.cpp
   src/command_info.cpp
   src/command_export.cpp
+  src/command_check.cpp
   src/command_elements.cpp
   src/atomic_file.cpp
   src/registry_setup.cpp

@@ -45,6 +45,7 @@ int export_command(const ExportArgs& args) {
   const std::string output = args.output.empty() ? default_output(args.input) : args.output;
   if (ends_with(args.input, ".styk.h5")) {
     const ResultsFileContents contents = read_results_file(args.input);
+    if (!contents.verified) std::cerr << unverified_notice(args.input) << "\n";
     const IncrementResult& inc =
         pick_increment(contents.results, args.step, args.increment, args.input);
     write_vtu(output, contents.model, &inc);

@@ -169,11 +169,8 @@ int render_command(const RenderArgs& args) {
   ResultsFileContents contents;
   const IncrementResult* increment = nullptr;
   if (results_file) {
-    try {
-      contents = read_results_file(args.input);
-    } catch (const std::runtime_error& e) {
-      throw InputError({args.input, 0}, e.what());
-    }
+    contents = read_results_file(args.input);  // InputError "file: ..." on any damage
+    if (!contents.verified) std::cerr << unverified_notice(args.input) << "\n";
     increment = &pick_increment(contents.results, args.step, args.increment, args.input);
   } else {
     if (args.step > 0 || args.increment > 0)

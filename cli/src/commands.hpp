@@ -30,4 +30,9 @@ int export_command(const ExportArgs& args);
 
 int elements_command();
 
+struct CheckArgs {
+  std::string results;  // .styk.h5 results file
+};
+int check_command(const CheckArgs& args);
+
 }  // namespace styk::cli

@@ -10,6 +10,7 @@ enum ExitCode : int {
   kBadInput = 1,       // InputError: "file:line: message"
   kNotConverged = 2,   // NotConvergedError
   kInternalError = 3,  // anything else: a bug in Styk
+  kUnverifiable = 4,   // `styk check`: a results file written before checksums, otherwise sound
 };
 
 // Runs a command, turning the exception types of Styk into exit codes and one message on stderr.

@@ -44,6 +44,11 @@ int main(int argc, char** argv) {
   export_cmd->add_option("--inc", exp.increment, "Increment within the step (default: last)")
       ->check(CLI::NonNegativeNumber);
 
+  CheckArgs check;
+  CLI::App* check_cmd = app.add_subcommand(
+      "check", "Verify a results file: schema, checksums, finite values, consistency; exit 0 if whole");
+  check_cmd->add_option("results", check.results, "Results file (.styk.h5)")->required();
+
   MeshArgs mesh;
   CLI::App* mesh_cmd = app.add_subcommand(
       "mesh", "Build a SPEC.md model with a parametric builder and write its deck");
@@ -105,6 +110,7 @@ int main(int argc, char** argv) {
     if (*solve_cmd) return solve_command(solve);
     if (*info_cmd) return info_command(info);
     if (*export_cmd) return export_command(exp);
+    if (*check_cmd) return check_command(check);
 #ifdef STYK_WITH_RENDER
     if (*render_cmd) return render_command(render);
 #endif
