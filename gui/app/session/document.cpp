@@ -22,6 +22,7 @@ void Document::new_model() {
   layers_ = LayerTable{};  // a new model: the user layers of the old one go
   filter_ = ElementDisplayFilter{};
   open_warnings_.clear();
+  results_notice_.clear();
   changed(false);
 }
 
@@ -35,6 +36,7 @@ void Document::open_inp(const std::string& path) {
   history_.clear();
   layers_ = LayerTable{};  // a new model: the user layers of the old one go
   open_warnings_ = view.warnings;
+  results_notice_.clear();
   filter_ = apply_view_state(view.state, path, model_, layers_, open_warnings_);
   changed(false);
 }
@@ -49,6 +51,7 @@ void Document::open_results(const std::string& path) {
   layers_ = LayerTable{};  // a new model: the user layers of the old one go
   filter_ = ElementDisplayFilter{};
   open_warnings_.clear();
+  results_notice_ = contents.verified ? std::string() : unverified_notice(path);
   changed(true);
 }
 

@@ -29,7 +29,9 @@ class Document {
   // cannot take are dropped and listed in open_warnings().
   void open_inp(const std::string& path);
   // A .styk.h5 file: its mesh becomes the model (no materials or steps) and its results attach.
-  // Throws std::runtime_error on failure, document unchanged.
+  // Every checksum is verified and NaN/Inf refused: throws InputError ("file: dataset ...:
+  // checksum mismatch — the file is damaged") or std::runtime_error on failure, document
+  // unchanged. A file written before checksums opens with results_notice() set.
   void open_results(const std::string& path);
   // Writes the model as a deck (atomically: a temporary file renamed over `path`), followed by the
   // layers and the filter as comment lines (view_state.hpp).
@@ -56,6 +58,9 @@ class Document {
   void set_filter(ElementDisplayFilter filter) { filter_ = std::move(filter); }
   // "file:line: message" for each view line of the last opened deck that was dropped.
   const std::vector<std::string>& open_warnings() const { return open_warnings_; }
+  // Non-empty after open_results() of a file that cannot be verified (written before results
+  // files carried checksums): the notice to show; cleared by any other open.
+  const std::string& results_notice() const { return results_notice_; }
   const std::string& path() const { return path_; }  // the deck (or results file) opened/saved
   bool is_modified() const { return !history_.is_clean(); }
   // Increases with every change of the model or the results.
@@ -71,6 +76,7 @@ class Document {
   LayerTable layers_;
   ElementDisplayFilter filter_;
   std::vector<std::string> open_warnings_;
+  std::string results_notice_;
   UndoStack history_;
   std::string path_;
   long revision_ = 0;

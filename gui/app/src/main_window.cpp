@@ -148,6 +148,11 @@ bool MainWindow::open_file(const QString& path) {
   log("opened " + path);
   for (const std::string& warning : document_.open_warnings())
     log("view: " + QString::fromStdString(warning));
+  if (!document_.results_notice().empty()) {  // an older results file: opened, not verified
+    const QString notice = QString::fromStdString(document_.results_notice());
+    log(notice);
+    statusBar()->showMessage(notice);
+  }
   add_recent(path);
   view_->set_named_view("iso");
   if (document_.results()) results_->set_field("S.mises");
