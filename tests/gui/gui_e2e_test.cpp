@@ -13,6 +13,7 @@
 #include <QLineEdit>
 #include <QSignalSpy>
 #include <QStandardPaths>
+#include <QStatusBar>
 #include <QTest>
 #include <QTimer>
 #include <functional>
@@ -218,6 +219,27 @@ class GuiEndToEnd : public QObject {
     QCOMPARE(done.takeFirst().at(0).toBool(), false);
     QVERIFY(window_->log_text().contains("solve cancelled"));
     QVERIFY(!window_->solving());
+  }
+
+  // docs/results.md "Integrity": a results file holding Inf (written by an older Styk) is refused
+  // with the reader's message and the view keeps the results shown; an older sound file opens
+  // with its notice in the status bar.
+  void refusesResultsThatCannotBeTrusted() {
+    const QString inputs = kSource + "/tests/inputs/results/";
+    QVERIFY(window_->open_file(inputs + "legacy-cube.styk.h5"));
+    QVERIFY(window_->document().results());
+    QVERIFY2(window_->statusBar()->currentMessage().contains("cannot be verified"),
+             qPrintable(window_->statusBar()->currentMessage()));
+    QVERIFY(window_->view()->scene().field());
+    const std::string field = window_->view()->scene().field()->name;
+    QVERIFY(!window_->open_file(inputs + "legacy-overflow.styk.h5"));
+    QVERIFY2(window_->last_message().contains(
+                 "dataset /steps/step_1/increment_1/S: element 1, integration point 1"),
+             qPrintable(window_->last_message()));
+    QVERIFY(window_->document().path().find("legacy-cube") != std::string::npos);
+    QVERIFY(window_->document().results());
+    QVERIFY(window_->view()->scene().field());
+    QCOMPARE(window_->view()->scene().field()->name, field);
   }
 
   void cleanupTestCase() { window_.reset(); }
