@@ -20,7 +20,8 @@ h5::Handle open_results_for_reading(const std::string& path) {
     throw std::runtime_error("is not an HDF5 file (" +
                              (size_error ? std::string("its size is unknown")
                                          : std::to_string(bytes) + " bytes") +
-                             ": empty, cut short before its first block, or another kind of file)");
+                             "): another kind of file, or a results file damaged or cut short at "
+                             "its start");
   }
   const hid_t id = H5Fopen(path.c_str(), H5F_ACC_RDONLY, H5P_DEFAULT);
   if (id < 0) {
