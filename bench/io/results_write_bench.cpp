@@ -75,9 +75,12 @@ int main(int argc, char** argv) {
   int positional = 0;
   for (int a = 1; a < argc; ++a) {
     const std::string arg = argv[a];
-    if (arg == "--rounds" && a + 1 < argc) rounds = std::atoi(argv[++a]);
-    else if (arg == "--dir" && a + 1 < argc) dir = argv[++a];
-    else if (positional < 3) spec.box.divisions[positional++] = std::atoi(argv[a]);
+    if (arg == "--rounds" && a + 1 < argc)
+      rounds = std::atoi(argv[++a]);
+    else if (arg == "--dir" && a + 1 < argc)
+      dir = argv[++a];
+    else if (positional < 3)
+      spec.box.divisions[positional++] = std::atoi(argv[a]);
   }
   const styk::Model model = styk::mesher::make_cantilever(spec);
   const styk::Results results = fill_results(model);
@@ -102,11 +105,11 @@ int main(int argc, char** argv) {
     t = Clock::now();
     const styk::ResultsCheck report = styk::check_results_file(checked);
     check.push_back(seconds(t));
-    std::printf("round %d: write %.3f / %.3f s, read %.3f / %.3f s (before checksums / with), "
-                "check %.3f s (%s)\n",
-                r + 1, write_plain.back(), write_checked.back(), read_plain.back(),
-                read_checked.back(), check.back(),
-                report.verdict == styk::ResultsCheck::Verdict::Whole ? "whole" : "NOT WHOLE");
+    std::printf(
+        "round %d: write %.3f / %.3f s, read %.3f / %.3f s (before checksums / with), "
+        "check %.3f s (%s)\n",
+        r + 1, write_plain.back(), write_checked.back(), read_plain.back(), read_checked.back(),
+        check.back(), report.verdict == styk::ResultsCheck::Verdict::Whole ? "whole" : "NOT WHOLE");
   }
   std::printf("files: %.1f MB before checksums, %.1f MB with\n",
               std::filesystem::file_size(plain) / 1e6, std::filesystem::file_size(checked) / 1e6);
@@ -114,8 +117,7 @@ int main(int argc, char** argv) {
               median(write_plain), median(write_checked),
               median(write_checked) / median(write_plain));
   std::printf("median read:  %.3f s before checksums, %.3f s with (ratio %.2f)\n",
-              median(read_plain), median(read_checked),
-              median(read_checked) / median(read_plain));
+              median(read_plain), median(read_checked), median(read_checked) / median(read_plain));
   std::printf("median styk check: %.3f s\n", median(check));
   std::filesystem::remove(plain);
   std::filesystem::remove(checked);

@@ -14,9 +14,12 @@ int check_command(const CheckArgs& args) {
     std::cerr << args.results << ": " << problem << "\n";
   std::cout << args.results << ": " << report.summary << "\n";
   switch (report.verdict) {
-    case ResultsCheck::Verdict::Whole: return kOk;
-    case ResultsCheck::Verdict::Unverifiable: return kUnverifiable;
-    case ResultsCheck::Verdict::Damaged: break;
+    case ResultsCheck::Verdict::Whole:
+      return kOk;
+    case ResultsCheck::Verdict::Unverifiable:
+      return kUnverifiable;
+    case ResultsCheck::Verdict::Damaged:
+      break;
   }
   return kBadInput;
 }

@@ -50,7 +50,8 @@ class CliResultsIntegrity : public ::testing::Test {
   }
 
   static std::vector<Damage> damages() {
-    const std::string mismatch = "dataset " + kU + ": checksum mismatch " + kDash + " the file is damaged";
+    const std::string mismatch =
+        "dataset " + kU + ": checksum mismatch " + kDash + " the file is damaged";
     return {
         {"flipped",
          [](const std::string& p) {
@@ -111,10 +112,9 @@ TEST_F(CliResultsIntegrity, RenderRefusesEveryDamage) {
   for (const Damage& d : damages()) {
     SCOPED_TRACE(d.name);
     const std::string file = damaged(d), png = dir_ + "/" + d.name + ".png";
-    expect_refused(run_command(styk_executable() + " render '" + file + "' --field U -o '" + png +
-                                   "'",
-                               dir_),
-                   file, d.message, png);
+    expect_refused(
+        run_command(styk_executable() + " render '" + file + "' --field U -o '" + png + "'", dir_),
+        file, d.message, png);
   }
 }
 
@@ -145,9 +145,9 @@ TEST_F(CliResultsIntegrity, OlderFilesOpenWithANoticeOrAreRefusedWhenNotFinite) 
   const std::string notice = legacy +
                              ": notice: written before Styk results files carried checksums; what "
                              "it holds cannot be verified\n";
-  CommandResult r = run_command(styk_executable() + " render '" + legacy + "' -o '" + dir_ +
-                                    "/legacy.png' --size 320x240",
-                                dir_);
+  CommandResult r = run_command(
+      styk_executable() + " render '" + legacy + "' -o '" + dir_ + "/legacy.png' --size 320x240",
+      dir_);
   EXPECT_EQ(r.exit_code, 0) << r.err;
   EXPECT_EQ(r.err, notice);
   r = run_command(styk_executable() + " export '" + legacy + "' --vtu -o '" + dir_ + "/legacy.vtu'",
@@ -156,7 +156,8 @@ TEST_F(CliResultsIntegrity, OlderFilesOpenWithANoticeOrAreRefusedWhenNotFinite) 
   EXPECT_EQ(r.err, notice);
   r = run_command(styk_executable() + " check '" + legacy + "'", dir_);
   EXPECT_EQ(r.exit_code, 4) << r.err;
-  EXPECT_EQ(r.out.rfind(legacy + ": cannot be verified " + kDash + " written before", 0), 0u) << r.out;
+  EXPECT_EQ(r.out.rfind(legacy + ": cannot be verified " + kDash + " written before", 0), 0u)
+      << r.out;
 
   const std::string overflow = kInputs + "legacy-overflow.styk.h5";
   const std::string nan_message =

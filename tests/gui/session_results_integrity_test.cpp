@@ -96,8 +96,9 @@ TEST_F(SessionResultsIntegrity, OlderFileOpensWithItsNoticeUntilTheNextOpen) {
   const std::string legacy = kInputs + "legacy-cube.styk.h5";
   doc.open_results(legacy);
   EXPECT_EQ(doc.results_notice(),
-            legacy + ": notice: written before Styk results files carried checksums; what it "
-                     "holds cannot be verified");
+            legacy +
+                ": notice: written before Styk results files carried checksums; what it "
+                "holds cannot be verified");
   ASSERT_NE(doc.results(), nullptr);
   EXPECT_EQ(doc.results()->increments.size(), 2u);
   doc.open_results(good);

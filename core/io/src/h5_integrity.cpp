@@ -98,10 +98,10 @@ void fail_read(const std::string& dataset_path) {
   H5Ewalk2(H5E_DEFAULT, H5E_WALK_UPWARD, summarise, &summary);
   H5Eclear2(H5E_DEFAULT);
   if (summary.filter_failed) throw DamagedError(checksum_mismatch(dataset_path));
-  throw DamagedError("dataset " + dataset_path + ": cannot be read (" +
-                     (summary.innermost.empty() ? std::string("HDF5 gives no cause")
-                                                : summary.innermost) +
-                     ") \u2014 the file is damaged");
+  throw DamagedError(
+      "dataset " + dataset_path + ": cannot be read (" +
+      (summary.innermost.empty() ? std::string("HDF5 gives no cause") : summary.innermost) +
+      ") \u2014 the file is damaged");
 }
 
 void verify_crc(hid_t dataset, const std::string& dataset_path, const void* data,

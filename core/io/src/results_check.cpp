@@ -70,14 +70,14 @@ void scan_dataset(hid_t file, const io::DatasetEntry& d, bool checksummed, Resul
   const h5::Handle file_type(H5Dget_type(dataset.get()), H5Tclose, "cannot read a type");
   // Reals are read as native doubles, anything else in its own (native) layout: on a
   // little-endian host either is a byte-for-byte copy of what the file stores.
-  const h5::Handle memory_type(d.is_float ? H5Tcopy(H5T_NATIVE_DOUBLE)
-                                          : H5Tget_native_type(file_type.get(), H5T_DIR_ASCEND),
-                               H5Tclose, "cannot read a type");
+  const h5::Handle memory_type(
+      d.is_float ? H5Tcopy(H5T_NATIVE_DOUBLE) : H5Tget_native_type(file_type.get(), H5T_DIR_ASCEND),
+      H5Tclose, "cannot read a type");
   std::uint64_t elements = 1;
   for (const std::uint64_t n : d.shape) elements *= n;
   std::vector<unsigned char> bytes(elements * H5Tget_size(memory_type.get()));
-  if (!bytes.empty() && H5Dread(dataset.get(), memory_type.get(), H5S_ALL, H5S_ALL, H5P_DEFAULT,
-                                bytes.data()) < 0)
+  if (!bytes.empty() &&
+      H5Dread(dataset.get(), memory_type.get(), H5S_ALL, H5S_ALL, H5P_DEFAULT, bytes.data()) < 0)
     h5::fail_read(d.path);
   try {  // a mismatch is reported, and the values are still looked at
     h5::verify_crc(dataset.get(), d.path, bytes.data(), bytes.size());
@@ -158,8 +158,8 @@ herr_t scan_object_attributes(hid_t root, const char* name, const H5O_info_t*, v
 
 void scan_attributes(hid_t file, ResultsCheck& report) {
   AttributeScan scan{file, &report, "/"};
-  if (H5Ovisit2(file, H5_INDEX_NAME, H5_ITER_INC, scan_object_attributes, &scan,
-                H5O_INFO_BASIC) < 0) {
+  if (H5Ovisit2(file, H5_INDEX_NAME, H5_ITER_INC, scan_object_attributes, &scan, H5O_INFO_BASIC) <
+      0) {
     try {
       h5::fail("the attributes of " + scan.object + " cannot be read");
     } catch (const std::runtime_error& e) {
@@ -203,10 +203,11 @@ void conclude(io::FileIntegrity integrity, ResultsCheck& report) {
                      " problem(s), the first: " + report.problems.front();
   } else if (integrity == io::FileIntegrity::Legacy) {
     report.verdict = ResultsCheck::Verdict::Unverifiable;
-    report.summary = "cannot be verified \u2014 written before results files carried checksums "
-                     "(Styk " + report.styk_version + ", schema " +
-                     std::to_string(report.schema_version) + "); " + counts +
-                     " read, every value finite, counts, ids and steps consistent";
+    report.summary =
+        "cannot be verified \u2014 written before results files carried checksums "
+        "(Styk " +
+        report.styk_version + ", schema " + std::to_string(report.schema_version) + "); " + counts +
+        " read, every value finite, counts, ids and steps consistent";
   } else {
     report.verdict = ResultsCheck::Verdict::Whole;
     report.summary = "whole \u2014 schema " + std::to_string(report.schema_version) + ", Styk " +

@@ -22,9 +22,8 @@ void check_group_names(hid_t file, ResultsCheck& report) {
       const std::int64_t n = h5::read_int_attribute(group.get(), "increment");
       if (step_name != schema::step_group(static_cast<int>(k)) ||
           name != schema::increment_group(static_cast<int>(n)))
-        report.problems.push_back("group /steps/" + step_name + "/" + name +
-                                  " holds step " + std::to_string(k) + ", increment " +
-                                  std::to_string(n));
+        report.problems.push_back("group /steps/" + step_name + "/" + name + " holds step " +
+                                  std::to_string(k) + ", increment " + std::to_string(n));
     }
   }
 }
@@ -38,8 +37,7 @@ void check_times(const Results& results, ResultsCheck& report) {
         "step " + std::to_string(inc.step) + ", increment " + std::to_string(inc.increment);
     if (inc.step_time < 0.0 || inc.step_time > inc.total_time)
       report.problems.push_back(label + ": step time " + std::to_string(inc.step_time) +
-                                " is not within 0 .. total time " +
-                                std::to_string(inc.total_time));
+                                " is not within 0 .. total time " + std::to_string(inc.total_time));
     if (previous && inc.total_time < previous->total_time)
       report.problems.push_back(label + " ends at total time " + std::to_string(inc.total_time) +
                                 ", before the increment ahead of it (" +
@@ -87,11 +85,12 @@ void check_structure(hid_t file, const ResultsFileContents& contents, ResultsChe
     report.problems.push_back(std::string("the steps cannot be listed: ") + e.what());
   }
   check_times(contents.results, report);
-  check_sorted(contents.model.nsets, [](const NodeSet& s) -> const std::vector<int>& { return s.nodes; },
-               "node", report);
-  check_sorted(contents.model.elsets,
-               [](const ElementSet& s) -> const std::vector<int>& { return s.elements; }, "element",
-               report);
+  check_sorted(
+      contents.model.nsets, [](const NodeSet& s) -> const std::vector<int>& { return s.nodes; },
+      "node", report);
+  check_sorted(
+      contents.model.elsets,
+      [](const ElementSet& s) -> const std::vector<int>& { return s.elements; }, "element", report);
   check_contact_pairs(contents.results, report);
 }
 

@@ -62,9 +62,9 @@ herr_t collect_dataset_path(hid_t, const char* name, const H5O_info_t* info, voi
 
 std::vector<DatasetEntry> list_datasets(hid_t file) {
   std::vector<std::string> paths;
-  h5::check(H5Ovisit2(file, H5_INDEX_NAME, H5_ITER_INC, collect_dataset_path, &paths,
-                      H5O_INFO_BASIC),
-            "cannot walk the file");
+  h5::check(
+      H5Ovisit2(file, H5_INDEX_NAME, H5_ITER_INC, collect_dataset_path, &paths, H5O_INFO_BASIC),
+      "cannot walk the file");
   std::sort(paths.begin(), paths.end());
   std::vector<DatasetEntry> datasets;
   datasets.reserve(paths.size());
@@ -84,7 +84,8 @@ std::string digest_of(const std::vector<DatasetEntry>& datasets) {
     manifest += crc;
   }
   char text[24];
-  std::snprintf(text, sizeof text, "crc32:%08" PRIx32, h5::crc32_of(manifest.data(), manifest.size()));
+  std::snprintf(text, sizeof text, "crc32:%08" PRIx32,
+                h5::crc32_of(manifest.data(), manifest.size()));
   return text;
 }
 

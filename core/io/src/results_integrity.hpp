@@ -21,10 +21,10 @@ struct DatasetEntry {
   std::string path;                  // "/steps/step_1/increment_1/U"
   std::vector<std::uint64_t> shape;  // dimensions
   bool has_crc = false;
-  std::uint32_t crc = 0;             // its crc32 attribute
-  bool fletcher32 = false;           // chunks carry HDF5's Fletcher-32 filter
-  bool is_float = false;             // class H5T_FLOAT
-  std::uint64_t value_bytes = 0;     // elements x element size
+  std::uint32_t crc = 0;          // its crc32 attribute
+  bool fletcher32 = false;        // chunks carry HDF5's Fletcher-32 filter
+  bool is_float = false;          // class H5T_FLOAT
+  std::uint64_t value_bytes = 0;  // elements x element size
 };
 
 // Every dataset under the root, sorted by path. Throws (h5::fail) when HDF5 cannot walk the file.

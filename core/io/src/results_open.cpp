@@ -17,11 +17,11 @@ h5::Handle open_results_for_reading(const std::string& path) {
   const auto bytes = std::filesystem::file_size(path, size_error);
   if (H5Fis_hdf5(path.c_str()) <= 0) {
     H5Eclear2(H5E_DEFAULT);
-    throw std::runtime_error("is not an HDF5 file (" +
-                             (size_error ? std::string("its size is unknown")
-                                         : std::to_string(bytes) + " bytes") +
-                             "): another kind of file, or a results file damaged or cut short at "
-                             "its start");
+    throw std::runtime_error(
+        "is not an HDF5 file (" +
+        (size_error ? std::string("its size is unknown") : std::to_string(bytes) + " bytes") +
+        "): another kind of file, or a results file damaged or cut short at "
+        "its start");
   }
   const hid_t id = H5Fopen(path.c_str(), H5F_ACC_RDONLY, H5P_DEFAULT);
   if (id < 0) {

@@ -11,8 +11,16 @@
 namespace styk::io {
 namespace {
 
-enum class RowsOf { Node, Element, ElementNode, IntegrationPoint, ContactNode, ContactPair,
-                    Balance, Unknown };
+enum class RowsOf {
+  Node,
+  Element,
+  ElementNode,
+  IntegrationPoint,
+  ContactNode,
+  ContactPair,
+  Balance,
+  Unknown
+};
 
 bool ends_with(const std::string& s, const std::string& tail) {
   return s.size() >= tail.size() && s.compare(s.size() - tail.size(), tail.size(), tail) == 0;
@@ -31,13 +39,12 @@ class IdLookup {
     return offsets.empty() ? 0 : static_cast<std::uint64_t>(offsets.back());
   }
   std::string node(std::uint64_t index) { return "node " + id("/model/nodes/ids", index); }
-  std::string element(std::uint64_t index) {
-    return "element " + id("/model/elements/ids", index);
-  }
+  std::string element(std::uint64_t index) { return "element " + id("/model/elements/ids", index); }
   // Row `row` of a layout split per element by `offsets` (connectivity or integration points).
   std::string element_part(const std::string& offsets_path, const char* part, std::uint64_t row) {
     const auto& offsets = ints(offsets_path);
-    const auto it = std::upper_bound(offsets.begin(), offsets.end(), static_cast<std::int64_t>(row));
+    const auto it =
+        std::upper_bound(offsets.begin(), offsets.end(), static_cast<std::int64_t>(row));
     if (it == offsets.begin() || it == offsets.end()) return "row " + std::to_string(row);
     const auto e = static_cast<std::uint64_t>(it - offsets.begin() - 1);
     return element(e) + ", " + part + " " + std::to_string(row - offsets[e] + 1);
@@ -77,7 +84,8 @@ class IdLookup {
 RowsOf rows_of(const std::string& group, const std::string& name, std::uint64_t rows,
                IdLookup& ids) {
   if (group == "/model/nodes") return RowsOf::Node;
-  if (group == "/model/elements") return name == "connectivity" ? RowsOf::ElementNode : RowsOf::Element;
+  if (group == "/model/elements")
+    return name == "connectivity" ? RowsOf::ElementNode : RowsOf::Element;
   if (group.rfind("/model/", 0) == 0) return RowsOf::Unknown;  // sets: members, named by row
   if (ends_with(group, "/contact")) {
     if (name == "pair_force" || name == "pair_moment") return RowsOf::ContactPair;
@@ -100,9 +108,7 @@ RowsOf rows_of(const std::string& group, const std::string& name, std::uint64_t 
   return fits.size() == 1 ? fits.front() : RowsOf::Unknown;
 }
 
-std::string format_value(double v) {
-  return std::isnan(v) ? "NaN" : v > 0 ? "+Inf" : "-Inf";
-}
+std::string format_value(double v) { return std::isnan(v) ? "NaN" : v > 0 ? "+Inf" : "-Inf"; }
 
 std::string row_name(hid_t file, const std::string& dataset_path, std::uint64_t rows,
                      std::uint64_t row) {
@@ -116,20 +122,25 @@ std::string row_name(hid_t file, const std::string& dataset_path, std::uint64_t 
   const h5::QuietErrors quiet;
   IdLookup ids(file, increment);
   switch (rows_of(group, name, rows, ids)) {
-    case RowsOf::Node: return ids.node(row);
-    case RowsOf::Element: return ids.element(row);
+    case RowsOf::Node:
+      return ids.node(row);
+    case RowsOf::Element:
+      return ids.element(row);
     case RowsOf::ElementNode:
       return ids.element_part("/model/elements/offsets", "its node", row);
     case RowsOf::IntegrationPoint:
       return ids.element_part(increment + "/ip_offsets", "integration point", row);
-    case RowsOf::ContactNode: return ids.contact_node(group, row);
-    case RowsOf::ContactPair: return "contact pair " + std::to_string(row + 1);
+    case RowsOf::ContactNode:
+      return ids.contact_node(group, row);
+    case RowsOf::ContactPair:
+      return "contact pair " + std::to_string(row + 1);
     case RowsOf::Balance: {
       static const char* const kRows[] = {"applied loads", "reactions", "contact on slaves",
                                           "contact on masters"};
       return row < 4 ? std::string("the sum of ") + kRows[row] : "row " + std::to_string(row);
     }
-    case RowsOf::Unknown: break;
+    case RowsOf::Unknown:
+      break;
   }
   return "row " + std::to_string(row);
 }
@@ -160,8 +171,7 @@ std::string describe_non_finite(hid_t file, const h5::NonFiniteError& error) {
   if (at != std::string::npos)
     return "attribute " + object.substr(at + 1) + " of " + object.substr(0, at) + " is " +
            format_value(first.value) + ", not a finite number";
-  std::string text =
-      "dataset " + object + ": " + row_name(file, object, first.rows, first.row);
+  std::string text = "dataset " + object + ": " + row_name(file, object, first.rows, first.row);
   if (first.cols > 1) text += ", component " + std::to_string(first.column + 1);
   text += " is " + format_value(first.value);
   if (first.count > 1)

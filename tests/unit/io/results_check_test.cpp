@@ -30,8 +30,8 @@ std::string joined(const std::vector<std::string>& lines) {
 class ResultsCheckTest : public ::testing::Test {
  protected:
   void SetUp() override {
-    dir_ = io_test::fresh_dir(
-        std::string("check_") + ::testing::UnitTest::GetInstance()->current_test_info()->name());
+    dir_ = io_test::fresh_dir(std::string("check_") +
+                              ::testing::UnitTest::GetInstance()->current_test_info()->name());
     good_ = damage::write_cube_results(dir_ + "/good.styk.h5");
   }
   std::string copy(const std::string& name) {
@@ -80,7 +80,8 @@ TEST_F(ResultsCheckTest, ZeroedChunkAndTruncation) {
   damage::zero_bytes(zeroed, chunk.offset, chunk.size);
   ResultsCheck report = check_results_file(zeroed);
   EXPECT_EQ(report.verdict, ResultsCheck::Verdict::Damaged);
-  EXPECT_EQ(joined(report.problems), "dataset " + kU + ": checksum mismatch \u2014 the file is damaged\n");
+  EXPECT_EQ(joined(report.problems),
+            "dataset " + kU + ": checksum mismatch \u2014 the file is damaged\n");
 
   const std::string cut = copy("cut.styk.h5");
   damage::truncate_file(cut, damage::file_size(cut) / 2);
@@ -97,9 +98,11 @@ TEST_F(ResultsCheckTest, NanRewrittenBehindTheChecksums) {
   const ResultsCheck report = check_results_file(path);
   EXPECT_EQ(report.verdict, ResultsCheck::Verdict::Damaged);
   // The CRC-32 disagrees, and the value is named too.
-  EXPECT_EQ(joined(report.problems),
-            "dataset " + kU + ": checksum mismatch \u2014 the file is damaged\n"
-            "dataset " + kU + ": node 4, component 2 is NaN, not a finite number\n");
+  EXPECT_EQ(joined(report.problems), "dataset " + kU +
+                                         ": checksum mismatch \u2014 the file is damaged\n"
+                                         "dataset " +
+                                         kU +
+                                         ": node 4, component 2 is NaN, not a finite number\n");
 }
 
 TEST(ResultsCheckLegacy, OlderFilesCannotBeVerified) {
@@ -132,8 +135,8 @@ TEST_F(ResultsCheckTest, UnknownDatasetsAreScannedToo) {
     const hid_t file = H5Fopen(path.c_str(), H5F_ACC_RDWR, H5P_DEFAULT);
     const hsize_t dims[2] = {rows, 3};
     const hid_t space = H5Screate_simple(2, dims, nullptr);
-    const hid_t d = H5Dcreate2(file, name, H5T_IEEE_F64LE, space, H5P_DEFAULT, H5P_DEFAULT,
-                               H5P_DEFAULT);
+    const hid_t d =
+        H5Dcreate2(file, name, H5T_IEEE_F64LE, space, H5P_DEFAULT, H5P_DEFAULT, H5P_DEFAULT);
     std::vector<double> values(rows * 3, 0.5);
     values[bad] = std::nan("");
     H5Dwrite(d, H5T_NATIVE_DOUBLE, H5S_ALL, H5S_ALL, H5P_DEFAULT, values.data());

@@ -139,18 +139,20 @@ TEST_F(ResultsIntegrity, EveryDatasetIsChecksummedAsDocumented) {
   }
   char expected_digest[20];
   std::snprintf(expected_digest, sizeof expected_digest, "crc32:%08lx",
-                static_cast<unsigned long>(crc32_z(0L, reinterpret_cast<const Bytef*>(manifest.data()),
-                                                   manifest.size())));
+                static_cast<unsigned long>(
+                    crc32_z(0L, reinterpret_cast<const Bytef*>(manifest.data()), manifest.size())));
   EXPECT_EQ(digest, expected_digest);
   EXPECT_TRUE(read_results_file(good_).verified);
 }
 
-// The issue's message, exactly: "file: dataset /steps/2/U: checksum mismatch — the file is damaged".
+// The issue's message, exactly: "file: dataset /steps/2/U: checksum mismatch — the file is
+// damaged".
 TEST_F(ResultsIntegrity, FlippedByteInAChunkIsAChecksumMismatchNamingTheDataset) {
   const std::string path = copy("flipped.styk.h5");
   const damage::StoredBytes chunk = damage::first_chunk(path, kU);
   damage::flip_byte(path, chunk.offset + chunk.size / 2);
-  EXPECT_EQ(refusal(path), path + ": dataset " + kU + ": checksum mismatch \u2014 the file is damaged");
+  EXPECT_EQ(refusal(path),
+            path + ": dataset " + kU + ": checksum mismatch \u2014 the file is damaged");
 }
 
 // Generic over datasets: one flipped byte in the stored values of any dataset, whatever its name
@@ -189,7 +191,8 @@ TEST_F(ResultsIntegrity, ZeroedChunkPassesFletcherButNotTheCrc) {
     H5Dclose(d);
     H5Fclose(file);
   }
-  EXPECT_EQ(refusal(path), path + ": dataset " + kU + ": checksum mismatch \u2014 the file is damaged");
+  EXPECT_EQ(refusal(path),
+            path + ": dataset " + kU + ": checksum mismatch \u2014 the file is damaged");
 }
 
 // Damage that does not hit values: a zeroed 4 KiB block at the start (the superblock and the root
@@ -228,7 +231,8 @@ TEST_F(ResultsIntegrity, ValueRewrittenBehindTheChecksumsIsRefused) {
   for (const double value : {std::nan(""), 0.125}) {
     const std::string path = copy("rewritten.styk.h5");
     damage::set_value(path, kU, 3, 1, value);
-    EXPECT_EQ(refusal(path), path + ": dataset " + kU + ": checksum mismatch \u2014 the file is damaged");
+    EXPECT_EQ(refusal(path),
+              path + ": dataset " + kU + ": checksum mismatch \u2014 the file is damaged");
   }
 }
 
@@ -248,7 +252,8 @@ TEST_F(ResultsIntegrity, LostOrAddedDatasetBreaksTheDigest) {
   {
     const hid_t file = H5Fopen(moved.c_str(), H5F_ACC_RDWR, H5P_DEFAULT);
     ASSERT_GE(H5Lmove(file, "/steps/step_2/increment_1/S_centroid", file,
-                      "/steps/step_2/increment_1/E_centroid_copy", H5P_DEFAULT, H5P_DEFAULT), 0);
+                      "/steps/step_2/increment_1/E_centroid_copy", H5P_DEFAULT, H5P_DEFAULT),
+              0);
     H5Fclose(file);
   }
   EXPECT_NE(refusal(moved).find("does not match its datasets"), std::string::npos);
@@ -275,8 +280,8 @@ bool same_contents(const ResultsFileContents& a, const ResultsFileContents& b) {
         x.contact_pairs.size() != y.contact_pairs.size())
       return false;
     for (std::size_t c = 0; c < x.contact.size(); ++c)
-      if (x.contact[c].pressure != y.contact[c].pressure || x.contact[c].node != y.contact[c].node ||
-          x.contact[c].force != y.contact[c].force)
+      if (x.contact[c].pressure != y.contact[c].pressure ||
+          x.contact[c].node != y.contact[c].node || x.contact[c].force != y.contact[c].force)
         return false;
   }
   return true;
@@ -298,7 +303,8 @@ TEST_F(ResultsIntegrity, RandomByteFlipsAreRefusedOrChangeNothing) {
     damage::flip_byte(path, at);
     try {
       const ResultsFileContents read = read_results_file(path);
-      EXPECT_TRUE(same_contents(read, original)) << "a flip at byte " << at << " changed the contents";
+      EXPECT_TRUE(same_contents(read, original))
+          << "a flip at byte " << at << " changed the contents";
       ++intact;
     } catch (const InputError& e) {
       EXPECT_EQ(e.where().file, path);
@@ -328,7 +334,10 @@ TEST_F(ResultsIntegrity, WriterRefusesNonFiniteValuesNamingTheEntity) {
        "dataset /steps/step_2/increment_1/U: node 4, component 2 is NaN, not a finite number"},
       {[&](Results& r) { r.increments[0].S[2][5] = -inf; },
        "dataset /steps/step_1/increment_1/S: element 1, integration point 3, component 6 is -Inf"},
-      {[&](Results& r) { r.increments[0].S_nodal_I[7][0] = inf; r.increments[0].S_nodal_I[6][0] = inf; },
+      {[&](Results& r) {
+         r.increments[0].S_nodal_I[7][0] = inf;
+         r.increments[0].S_nodal_I[6][0] = inf;
+       },
        "dataset /steps/step_1/increment_1/S_nodal_I: node 7, component 1 is +Inf (2 values of "
        "the dataset are not finite numbers)"},
       {[&](Results& r) { r.increments[1].contact[2].pressure = nan; },
@@ -364,15 +373,18 @@ TEST(ResultsIntegrityLegacy, OlderFileOpensUnverifiedWithANotice) {
   for (int n = 0; n < 4; ++n) EXPECT_EQ(contents.results.increments[0].U[n], (Vec3{0, 0, 0}));
   for (int n = 4; n < 8; ++n) EXPECT_GT(contents.results.increments[0].U[n][2], 0.0);  // pulled up
   EXPECT_EQ(unverified_notice(path),
-            path + ": notice: written before Styk results files carried checksums; what it holds "
-                   "cannot be verified");
+            path +
+                ": notice: written before Styk results files carried checksums; what it holds "
+                "cannot be verified");
 }
 
 // ... and one from a failed solve, holding Inf and NaN, is refused with dataset and entity named.
 TEST(ResultsIntegrityLegacy, OlderFileWithNonFiniteStressesIsRefused) {
   const std::string path = kFixtures + "legacy-overflow.styk.h5";
   const std::string message = refusal(path);
-  EXPECT_EQ(message.rfind(path + ": dataset /steps/step_1/increment_1/S: element 1, integration point ", 0), 0u)
+  EXPECT_EQ(message.rfind(
+                path + ": dataset /steps/step_1/increment_1/S: element 1, integration point ", 0),
+            0u)
       << message;
   EXPECT_NE(message.find(" \u2014 a results file holds finite numbers only"), std::string::npos)
       << message;
