@@ -23,7 +23,11 @@ h5::Handle open_results_for_reading(const std::string& path) {
         "): another kind of file, or a results file damaged or cut short at "
         "its start");
   }
-  const hid_t id = H5Fopen(path.c_str(), H5F_ACC_RDONLY, H5P_DEFAULT);
+  // Closing the file closes whatever HDF5 left open inside it while failing on damaged metadata;
+  // otherwise those objects outlive the file and HDF5 complains when the program ends.
+  const h5::Handle access(H5Pcreate(H5P_FILE_ACCESS), H5Pclose, "cannot create property list");
+  h5::check(H5Pset_fclose_degree(access.get(), H5F_CLOSE_STRONG), "cannot set the close degree");
+  const hid_t id = H5Fopen(path.c_str(), H5F_ACC_RDONLY, access.get());
   if (id < 0) {
     try {
       h5::fail("HDF5 cannot open it");
