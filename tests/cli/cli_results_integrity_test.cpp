@@ -4,6 +4,7 @@
 // short, a zeroed block, a NaN written behind the checksums — and on the files of an older Styk.
 // Each damaged file: exit 1, "file: dataset ...: ... — the file is damaged" on stderr, no output
 // left behind. And `styk solve` refuses to write results that overflowed to Inf/NaN (exit 2).
+#include <cctype>
 #include <gtest/gtest.h>
 
 #include <algorithm>
@@ -34,7 +35,12 @@ struct Damage {
 class CliResultsIntegrity : public ::testing::Test {
  protected:
   static void SetUpTestSuite() {
-    dir_ = scratch_dir("results_integrity");
+    // ctest runs each test of the suite as its own process, in parallel: each gets its own
+    // directory (named after the gtest filter ctest passes), so no two solves share a file.
+    std::string name = ::testing::GTEST_FLAG(filter);
+    for (char& c : name)
+      if (!std::isalnum(static_cast<unsigned char>(c))) c = '_';
+    dir_ = scratch_dir("results_integrity_" + name);
     const CommandResult solved = run_command(
         styk_executable() + " solve -q '" + kInputs + "cube.inp' -o '" + dir_ + "'", dir_);
     ASSERT_EQ(solved.exit_code, 0) << solved.err;

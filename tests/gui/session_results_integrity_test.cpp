@@ -22,7 +22,9 @@ const std::string kInputs = std::string(STYK_SOURCE_DIR) + "/tests/inputs/result
 const std::string kU = "/steps/step_2/increment_1/U";
 
 std::string scratch(const std::string& name) {
-  const std::string dir = std::string(STYK_BINARY_DIR) + "/tests/gui/scratch_integrity";
+  // One directory per test: ctest runs the suite's tests as parallel processes.
+  const std::string dir = std::string(STYK_BINARY_DIR) + "/tests/gui/scratch_integrity/" +
+                          ::testing::UnitTest::GetInstance()->current_test_info()->name();
   std::filesystem::create_directories(dir);
   return dir + "/" + name;
 }
