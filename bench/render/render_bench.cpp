@@ -71,7 +71,8 @@ OrbitTimes time_orbit(const styk::render::Frame& frame, styk::render::OsmesaRend
   // left is the per-vertex and per-triangle work.
   Frame small = culled;
   small.width = 400, small.height = 300;
-  small.overlay = build_overlay(OverlayContent{}, small.width, small.height);
+  Typeface typeface;
+  small.overlay = build_overlay(OverlayContent{}, small.width, small.height, typeface);
   auto start = Clock::now();
   for (int k = 0; k < blocks * per_block; ++k)
     turn(), small.camera = culled.camera, renderer.render_view(small);
