@@ -176,7 +176,8 @@ void Scene::update_title() {
       title_lines_.push_back(
           "Field: " + name +
           (point_field_
-               ? "  at " + std::to_string(point_field_->values.size()) + " integration points"
+               ? "  at " + std::to_string(render::visible_point_count(*skin_, *point_field_)) +
+                     " integration points"
            : averaged ? "  Averaging: " + render::averaging_name(settings_.averaging)
                       : std::string()) +
           "  Min: " + format(range[0]) + "  Max: " + format(range[1]));

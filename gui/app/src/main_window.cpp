@@ -385,7 +385,13 @@ DisplaySettings MainWindow::display_settings() const {
   settings.filter = document_.filter();
   settings.labels = labels_;
   settings.labels_of_selection = labels_of_selection_;
+  settings.samples = smooth_edges_ ? 4 : 1;
   return settings;
+}
+
+void MainWindow::set_smooth_edges(bool on) {
+  smooth_edges_ = on;
+  refresh_scene();
 }
 
 void MainWindow::set_labels(bool nodes, bool elements, bool selection_only) {

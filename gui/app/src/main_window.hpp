@@ -42,6 +42,8 @@ class MainWindow : public QMainWindow {
   void set_display_mode(render::DisplayMode mode);
   // View > Numbers: node and element numbers of the seen entities (or of the selection only).
   void set_labels(bool nodes, bool elements, bool selection_only);
+  // View > Smooth edges: the model drawn with 4 samples per pixel (slower to orbit).
+  void set_smooth_edges(bool on);
   void set_field(const QString& field);  // selects it in the results panel and redraws
   // The selection in the view as a node set / element set / surface (undoable); errors go to
   // a message box. Returns success.
@@ -109,6 +111,7 @@ class MainWindow : public QMainWindow {
   render::DisplayMode mode_ = render::DisplayMode::Shaded;
   render::LabelRequest labels_;
   bool labels_of_selection_ = false;
+  bool smooth_edges_ = false;
   QAction* node_numbers_ = nullptr;
   QAction* element_numbers_ = nullptr;
   QAction* numbers_of_selection_ = nullptr;

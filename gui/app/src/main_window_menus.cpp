@@ -210,6 +210,10 @@ void MainWindow::build_view_menu() {
   numbers_of_selection_ = view->addAction("Numbers of the selection &only", this, numbers);
   numbers_of_selection_->setObjectName("action_numbers_of_selection");
   for (QAction* a : {node_numbers_, element_numbers_, numbers_of_selection_}) a->setCheckable(true);
+  QAction* smooth =
+      view->addAction("S&mooth edges", this, [this](bool on) { set_smooth_edges(on); });
+  smooth->setObjectName("action_smooth_edges");
+  smooth->setCheckable(true);
   view->addSeparator();
   view->addAction("Fi&lter...", this,
                   [this] {

@@ -173,6 +173,13 @@ void add_integration_points(const SkinModel& skin, const PointField& field,
     }
 }
 
+std::size_t visible_point_count(const SkinModel& skin, const PointField& field) {
+  std::size_t count = 0;
+  for (const SkinModel::LayerSkin& layer : skin.layers())
+    for (int e : layer.elements) count += static_cast<std::size_t>(field.count(e));
+  return count;
+}
+
 std::array<double, 2> point_field_range(const SkinModel& skin, const PointField& field) {
   double lo = std::numeric_limits<double>::max(), hi = -lo;
   for (const SkinModel::LayerSkin& layer : skin.layers())

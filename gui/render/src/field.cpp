@@ -93,7 +93,8 @@ std::string held_data(const char* q, const TensorArrays& a) {
   if (!a.nodal_II->empty()) held.push_back(std::string("averaging II (") + q + "_nodal_II)");
   if (!a.centroid->empty()) held.push_back(std::string("averaging centroid (") + q + "_centroid)");
   if (!a.points->empty())
-    held.push_back(std::string("integration-point ") + q + " only (not drawable)");
+    held.push_back(std::string("integration-point ") + q +
+                   " (drawn at the points: --ip-values, or \"Values at integration points\")");
   return held.empty() ? std::string("no ") + q + " data at all" : join(held, ", ");
 }
 

@@ -128,7 +128,7 @@ class LayerTessellator {
     const FacePatch* chosen = discrete                                          ? &shape.split
                               : needs_curved(shape, conn, corner, field_varies) ? &shape.curved
                                                                                 : &shape.flat;
-    if (field_varies && !discrete && shape.curved_segments > 1) {
+    if (field_varies && !discrete && shape.curved_segments > 1 && rq_.refine) {
       const int level = refinement_level(shape, sf, conn, *field);
       if (level > 0)
         chosen = &skin_.shapes().refined(skin_.formulations()[sf.element], sf.face, level);

@@ -328,7 +328,8 @@ std::vector<std::string> RenderJob::title_lines() const {
   } else if (field_ || point_field_) {
     const NumberFormat format = number_format(colors_);
     const std::string where =
-        point_field_ ? "  at " + std::to_string(point_field_->values.size()) + " integration points"
+        point_field_ ? "  at " + std::to_string(visible_point_count(*skin_, *point_field_)) +
+                           " integration points"
         : field_->uses_averaging ? "  Averaging: " + averaging_name(options_.averaging)
                                  : std::string();
     lines.push_back("Field: " + (point_field_ ? point_field_->name : field_->name) + where + pair +

@@ -64,24 +64,26 @@ void plane_axes(const V& n, UnrolledSurface& out) {
   out.second = to_vec(second);
 }
 
+// The axis point: in the plane normal to `a`, the centre c of the circles the surface's points
+// lie on, their radius changing linearly along the axis (a cone; constant: a cylinder). With p
+// the point's in-plane position and s its axial one, |p - c|^2 = (r0 + k s)^2 is linear in
+// (c, r0^2 - |c|^2, 2 r0 k, k^2): |p|^2 = 2 c.p + A + B s + C s^2, solved by least squares.
+// Exact for points on a cylinder or cone, whatever the faces' normals (a quadratic face's normals
+// lean off the radius by up to 1e-3 rad, a point no fit of normal lines would give exactly).
 void fit_axis_point(const Samples& s, const V& a, UnrolledSurface& out) {
-  // Least squares: the point of the plane normal to `a` nearest to every normal's line.
-  Eigen::Matrix3d A = Eigen::Matrix3d::Zero();
-  V b = V::Zero(), centre = V::Zero();
+  V e1 = V::UnitX() - a.x() * a;
+  if (e1.norm() < 0.1) e1 = V::UnitY() - a.y() * a;
+  e1.normalize();
+  const V e2 = a.cross(e1);
+  Eigen::MatrixXd M(s.points.size(), 5);
+  Eigen::VectorXd rhs(s.points.size());
   for (std::size_t i = 0; i < s.points.size(); ++i) {
-    centre += s.points[i] / double(s.points.size());
-    V m = s.normals[i] - s.normals[i].dot(a) * a;
-    if (m.norm() < 0.1) continue;
-    m.normalize();
-    const Eigen::Matrix3d P = Eigen::Matrix3d::Identity() - m * m.transpose();
-    A += P;
-    b += P * s.points[i];
+    const double x = s.points[i].dot(e1), y = s.points[i].dot(e2), z = s.points[i].dot(a);
+    M.row(static_cast<Eigen::Index>(i)) << 2 * x, 2 * y, 1.0, z, z * z;
+    rhs(static_cast<Eigen::Index>(i)) = x * x + y * y;
   }
-  // Fix the free axial coordinate at the centre's.
-  const double weight = std::max(1.0, A.trace());
-  A += weight * a * a.transpose();
-  b += weight * a * a.dot(centre);
-  out.axis.point = to_vec(A.ldlt().solve(b));
+  const Eigen::VectorXd c = M.colPivHouseholderQr().solve(rhs);
+  out.axis.point = to_vec(c(0) * e1 + c(1) * e2);
 }
 
 // A fitted axis carries the error of the fit (curved faces are drawn from polynomial shapes: a

@@ -40,6 +40,8 @@ void add_integration_points(const SkinModel& skin, const PointField& field,
                             const ColorScale& colors, const GeometryRequest& request,
                             FrameGeometry& geometry);
 
+// How many integration points the visible elements have.
+std::size_t visible_point_count(const SkinModel& skin, const PointField& field);
 // Minimum and maximum of a point field over the visible elements ({0, 0} when none).
 std::array<double, 2> point_field_range(const SkinModel& skin, const PointField& field);
 

@@ -107,6 +107,9 @@ struct GeometryRequest {
   // With a field that has values at some nodes only (contact output): leave out the faces it
   // does not cover instead of drawing them neutral grey.
   bool hide_undefined_faces = false;
+  // Draw higher-order faces with a field on grids fine enough for the field (see geometry.cpp);
+  // false: on their base grids (2 x degree per direction), e.g. to measure what refining costs.
+  bool refine = true;
   bool points = true;                   // fill FrameGeometry::points
   bool outline = false;                 // fill FrameGeometry::outline (undeformed)
   double feature_angle_degrees = 30.0;  // crease angle of feature lines
