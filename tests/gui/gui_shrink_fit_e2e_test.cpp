@@ -22,6 +22,7 @@
 #include <QCheckBox>
 #include <QComboBox>
 #include <QDir>
+#include <QFile>
 #include <QLabel>
 #include <QLineEdit>
 #include <QMouseEvent>
@@ -340,6 +341,14 @@ class ShrinkFitWalkThrough : public QObject {
     QVERIFY2(ripple(20.0) > 0.10, qPrintable(QString::number(ripple(20.0))));
     QVERIFY2(ripple(30.0) < 0.03, qPrintable(QString::number(ripple(30.0))));
     if (!shots_.isEmpty()) window_->grab().save(shots_ + "/gui-shrink-unrolled.png");
+    // File > Export view as PNG or BMP: the map as a BMP (by the extension).
+    const QString bmp = QDir::temp().filePath("styk_gui_shrink_unrolled.bmp");
+    QVERIFY(window_->export_png(bmp));
+    QFile file(bmp);
+    QVERIFY(file.open(QIODevice::ReadOnly));
+    QCOMPARE(file.read(2), QByteArray("BM"));
+    file.close();
+    QFile::remove(bmp);
     unrolled->setChecked(false);
     QVERIFY(!window_->view()->scene().unrolled());
   }
