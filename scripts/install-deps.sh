@@ -10,7 +10,8 @@ packages=(
   petsc-dev
   libhdf5-dev libcli11-dev libfmt-dev nlohmann-json3-dev
   libgtest-dev
-  libosmesa6-dev libgl-dev libglx-dev libpng-dev zlib1g-dev qt6-base-dev libqt6opengl6-dev qt6-charts-dev
+  libosmesa6-dev libgl-dev libglx-dev libpng-dev libstb-dev zlib1g-dev qt6-base-dev libqt6opengl6-dev qt6-charts-dev
+  libfreetype-dev fonts-dejavu-core
 )
 if [[ "${1:-}" == "--test" ]]; then
   packages+=(calculix-ccx time python3 xvfb xauth)

@@ -34,6 +34,41 @@ double seconds_since(Clock::time_point start) {
 // retained geometry (render_view), each with and without culling. The ways take turns in blocks
 // so that a change in the machine's load hits them alike. Then the retained orbit in a small
 // picture, and fixed_ms: the per-frame cost without any model (clear, overlay, read-back).
+// What multisampling and the refined contours cost, each against its absence in the same run
+// (blocks taking turns, so a change of load hits both): frame time with 4 samples / 1 sample
+// (retained geometry, drawn and read back), tessellation time with the refined grids / the base
+// grids, and the triangles each gives.
+struct FeatureCosts {
+  double msaa_ratio = 0, refine_ratio = 0;
+  std::size_t base_triangles = 0, refined_triangles = 0;
+};
+
+FeatureCosts time_features(const styk::render::RenderJob& job, const styk::render::Frame& frame,
+                           styk::render::OsmesaRenderer& renderer,
+                           const styk::render::GeometryRequest& request) {
+  using namespace styk::render;
+  FeatureCosts costs;
+  Frame one = frame, four = frame;
+  one.samples = 1, four.samples = 4;
+  renderer.set_geometry(frame.geometry);
+  double draw[2] = {}, build[2] = {};
+  GeometryRequest base = request;
+  base.refine = false;
+  for (int block = 0; block < 3; ++block)
+    for (int way = 0; way < 2; ++way) {
+      auto start = Clock::now();
+      for (int k = 0; k < 5; ++k) renderer.render_view(way == 0 ? one : four);
+      draw[way] += seconds_since(start);
+      start = Clock::now();
+      const FrameGeometry g = build_geometry(job.skin(), way == 0 ? base : request);
+      build[way] += seconds_since(start);
+      (way == 0 ? costs.base_triangles : costs.refined_triangles) = g.triangles.size() / 3;
+    }
+  costs.msaa_ratio = draw[1] / draw[0];
+  costs.refine_ratio = build[1] / build[0];
+  return costs;
+}
+
 struct OrbitTimes {
   double old_fps = 0, upload_fps = 0, retained_no_cull_fps = 0, retained_fps = 0,
          retained_small_fps = 0, fixed_ms = 0;
@@ -71,7 +106,8 @@ OrbitTimes time_orbit(const styk::render::Frame& frame, styk::render::OsmesaRend
   // left is the per-vertex and per-triangle work.
   Frame small = culled;
   small.width = 400, small.height = 300;
-  small.overlay = build_overlay(OverlayContent{}, small.width, small.height);
+  Typeface typeface;
+  small.overlay = build_overlay(OverlayContent{}, small.width, small.height, typeface);
   auto start = Clock::now();
   for (int k = 0; k < blocks * per_block; ++k)
     turn(), small.camera = culled.camera, renderer.render_view(small);
@@ -98,7 +134,7 @@ int main(int argc, char** argv) {
       "elements,nodes,skin_faces,mesh_s,skin_s,job_s,geometry_s,draw_read_s,png_s,"
       "render_total_s,triangles,results_file_s,styk_render_s,closed,orbit_old_fps,"
       "orbit_upload_fps,orbit_retained_no_cull_fps,orbit_retained_fps,orbit_retained_400x300_fps,"
-      "frame_fixed_ms\n");
+      "frame_fixed_ms,msaa_ratio,refine_ratio,base_triangles,refined_triangles\n");
   for (int n : sizes) {
     auto start = Clock::now();
     Model model;
@@ -162,13 +198,22 @@ int main(int argc, char** argv) {
     cli::render_command(args);
     const double cli_s = seconds_since(start);
     const OrbitTimes orbit = time_orbit(frame, renderer);
+    render::GeometryRequest request;  // the job's own: the field, deformed, undeformed outline
+    request.displacement = &inc.U;
+    request.scale = job.deformation_scale();
+    request.outline = true;
+    request.points = false;
+    request.field = job.field();
+    request.colors = &job.colors();
+    const FeatureCosts costs = time_features(job, frame, renderer, request);
     std::printf(
         "%zu,%zu,%zu,%.3f,%.3f,%.3f,%.3f,%.3f,%.3f,%.3f,%zu,%.3f,%.3f,%d,%.2f,%.2f,%.2f,%.2f,"
-        "%.2f,%.1f\n",
+        "%.2f,%.1f,%.2f,%.2f,%zu,%zu\n",
         model.elements.size(), model.coords.size(), skin.size(), mesh_s, skin_s, job_s, geometry_s,
         draw_s, png_s, total_s, frame.geometry.triangles.size() / 3, write_s, cli_s,
         int(frame.geometry.closed), orbit.old_fps, orbit.upload_fps, orbit.retained_no_cull_fps,
-        orbit.retained_fps, orbit.retained_small_fps, orbit.fixed_ms);
+        orbit.retained_fps, orbit.retained_small_fps, orbit.fixed_ms, costs.msaa_ratio,
+        costs.refine_ratio, costs.base_triangles, costs.refined_triangles);
     std::fflush(stdout);
   }
   return 0;

@@ -3,6 +3,8 @@
 #include <sys/wait.h>
 #include <unistd.h>
 
+#include <array>
+#include <cctype>
 #include <cerrno>
 #include <cstdio>
 #include <cstdlib>
@@ -34,7 +36,8 @@ bool ends_with(const std::string& s, const std::string& suffix) {
 }
 
 std::string strip_extension(const std::string& path) {
-  for (const char* ext : {".styk.h5", ".inp", ".INP", ".png", ".gif", ".mp4"})
+  for (const char* ext :
+       {".styk.h5", ".inp", ".INP", ".png", ".bmp", ".PNG", ".BMP", ".gif", ".mp4"})
     if (ends_with(path, ext)) return path.substr(0, path.size() - std::string(ext).size());
   return path;
 }
@@ -76,6 +79,32 @@ const IncrementResult& pick_increment(const Results& results, int step, int incr
   return *found;
 }
 
+std::array<double, 2> parse_range(const std::string& text) {
+  std::string cleaned = text;
+  for (char& c : cleaned)
+    if (c == ',') c = ' ';
+  std::istringstream in(cleaned);
+  std::array<double, 2> range{};
+  std::string extra;
+  if (!(in >> range[0] >> range[1]) || (in >> extra))
+    throw InputError({}, "bad colour range '" + text + "'; write MIN,MAX, e.g. 0,250");
+  return range;
+}
+
+render::LabelRequest parse_labels(const std::string& text) {
+  render::LabelRequest labels;
+  for (std::string item : split_list(text)) {
+    for (char& c : item) c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
+    if (item == "nodes" || item == "node")
+      labels.nodes = true;
+    else if (item == "elements" || item == "element")
+      labels.elements = true;
+    else
+      throw InputError({}, "unknown labels '" + item + "'; use nodes, elements or nodes,elements");
+  }
+  return labels;
+}
+
 render::RenderOptions make_options(const RenderArgs& args, bool has_results) {
   render::RenderOptions o;
   parse_size(args.size, o.width, o.height);
@@ -84,7 +113,18 @@ render::RenderOptions make_options(const RenderArgs& args, bool has_results) {
   o.averaging = render::parse_averaging(args.averaging);
   o.bands = args.bands;
   o.smooth = args.smooth;
-  o.only_field_faces = args.contact_only;
+  if (args.contact_only && args.all_faces)
+    throw InputError({}, "--contact-only and --all-faces exclude each other");
+  o.field_faces = args.contact_only ? render::FieldFaces::Only
+                  : args.all_faces  ? render::FieldFaces::All
+                                    : render::FieldFaces::Auto;
+  o.contact_pair = args.contact_pair;
+  if (!args.range.empty()) o.range = parse_range(args.range);
+  o.ip_values = args.ip_values;
+  o.labels = parse_labels(args.labels);
+  o.unroll = args.unroll || !args.unroll_axis.empty();
+  if (!args.unroll_axis.empty()) o.unroll_axis = render::parse_unroll_axis(args.unroll_axis);
+  o.samples = args.samples;
   o.deform =
       render::parse_deform(args.deform.empty() ? (has_results ? "auto" : "none") : args.deform);
   o.undeformed_outline = !args.no_outline;
@@ -124,7 +164,7 @@ int render_job(const RenderArgs& args, const render::RenderJob& job, const std::
   const render::RenderOptions& o = job.options();
   render::OsmesaRenderer renderer(o.width, o.height);
   if (args.animate <= 0) {
-    render::write_png(output, renderer.render(job.frame(1.0)));
+    render::write_picture(output, renderer.render(job.frame(1.0)));
     std::cout << "wrote " << output << "\n";
     return 0;
   }
@@ -134,15 +174,17 @@ int render_job(const RenderArgs& args, const render::RenderJob& job, const std::
                              " needs ffmpeg, which is not on PATH; "
                              "write a PNG sequence with -o NAME.png instead");
   const std::string stem = strip_extension(output);
+  const std::string picture_extension =
+      render::picture_format(output).empty() ? "png" : render::picture_format(output);
   std::vector<std::string> frames;
   for (int i = 0; i < args.animate; ++i) {
     const double fraction = args.animate == 1 ? 1.0 : double(i) / (args.animate - 1);
-    frames.push_back(fmt::format("{}_{:04d}.png", stem, i));
-    render::write_png(frames.back(), renderer.render(job.frame(fraction)));
+    frames.push_back(fmt::format("{}_{:04d}.{}", stem, i, video ? "png" : picture_extension));
+    render::write_picture(frames.back(), renderer.render(job.frame(fraction)));
   }
   if (!video) {
-    std::cout << "wrote " << frames.size() << " frames " << stem << "_0000.png .. " << frames.back()
-              << "\n";
+    std::cout << "wrote " << frames.size() << " frames " << frames.front() << " .. "
+              << frames.back() << "\n";
     return 0;
   }
   std::vector<std::string> command = {"ffmpeg",     "-y", "-loglevel", "error",
@@ -163,6 +205,15 @@ int render_command(const RenderArgs& args) {
   if (args.animate < 0) throw InputError({}, "--animate needs a number of frames >= 1");
   const std::string output =
       args.output.empty() ? strip_extension(args.input) + ".png" : args.output;
+  const bool video = ends_with(output, ".gif") || ends_with(output, ".mp4");
+  if (render::picture_format(output).empty() && !(video && args.animate > 0))
+    throw InputError({args.input, 0}, "cannot write the picture " + output +
+                                          ": write .png or .bmp" +
+                                          (args.animate > 0 ? " (or .gif/.mp4 with ffmpeg)" : ""));
+  if (args.unroll || !args.unroll_axis.empty()) {
+    if (args.animate > 0)
+      throw InputError({args.input, 0}, "--animate moves the 3D view; the unrolled map is still");
+  }
   PluginLibraries libraries;  // outlives the registry: plug-in code lives in it
   const ElementRegistry registry = make_registry(libraries);
   const bool results_file = ends_with(args.input, ".styk.h5");

@@ -59,9 +59,9 @@ int main(int argc, char** argv) {
 
 #ifdef STYK_WITH_RENDER
   RenderArgs render;
-  CLI::App* render_cmd = app.add_subcommand("render", "Draw a results file (or a deck's mesh) headless into a PNG");
+  CLI::App* render_cmd = app.add_subcommand("render", "Draw a results file (or a deck's mesh) headless into a PNG or BMP");
   render_cmd->add_option("input", render.input, "Results file (.styk.h5) or deck (.inp, mesh only)")->required();
-  render_cmd->add_option("-o,--output", render.output, "Picture (.png; .gif/.mp4 with --animate and ffmpeg); default: input name with .png");
+  render_cmd->add_option("-o,--output", render.output, "Picture (.png or .bmp; .gif/.mp4 with --animate and ffmpeg); default: input name with .png");
   render_cmd->add_option("--step", render.step, "Step number (default: last)")->check(CLI::NonNegativeNumber);
   render_cmd->add_option("--inc", render.increment, "Increment within the step (default: last)")->check(CLI::NonNegativeNumber);
   render_cmd->add_option("--field", render.field, "Contour field: U, U.x, RF.mag, S.mises, S.p1, S.11, E.22, ... (default: none)");
@@ -70,6 +70,15 @@ int main(int argc, char** argv) {
   render_cmd->add_flag("--smooth", render.smooth, "Continuous colours instead of bands");
   render_cmd->add_flag("--contact-only", render.contact_only,
                        "With a contact field: draw only the faces that carry contact output");
+  render_cmd->add_flag("--all-faces", render.all_faces,
+                       "With a contact field: draw every face even where the contact faces are hidden");
+  render_cmd->add_option("--contact-pair", render.contact_pair, "With a contact field: one *CONTACT PAIR's output, by its slave surface or number (1, 2, ...)");
+  render_cmd->add_option("--range", render.range, "Colour scale MIN,MAX (default: the field's range over the shown elements)");
+  render_cmd->add_flag("--ip-values", render.ip_values, "Draw the field's integration-point values as coloured points over the mesh");
+  render_cmd->add_option("--labels", render.labels, "Numbers of the seen entities: nodes, elements or nodes,elements");
+  render_cmd->add_flag("--unroll", render.unroll, "Unrolled map of a contact field over (angle, axial position), or (x, y) on a flat surface");
+  render_cmd->add_option("--unroll-axis", render.unroll_axis, "The fit's axis for --unroll: PX,PY,PZ,DX,DY,DZ (default: fitted)");
+  render_cmd->add_option("--samples", render.samples, "Samples per pixel smoothing the edges, 1..16 (default: 4)")->check(CLI::Range(1, 16));
   render_cmd->add_option("--deform", render.deform, "Deformation scale: auto, none or a factor (default: auto with results)");
   render_cmd->add_flag("--no-outline", render.no_outline, "No undeformed outline under the deformed shape");
   render_cmd->add_option("--mode", render.mode, "points, wireframe, hidden, shaded, shaded-edges (default: shaded)");

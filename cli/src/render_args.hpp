@@ -7,8 +7,8 @@ namespace styk::cli {
 
 struct RenderArgs {
   std::string input;             // results file (.styk.h5) or deck (.inp, mesh only)
-  std::string output;            // .png (or .gif / .mp4 with --animate and ffmpeg); default:
-                                 // input name with .png
+  std::string output;            // .png or .bmp (or .gif / .mp4 with --animate and ffmpeg);
+                                 // default: input name with .png
   int step = 0;                  // 0 = last step
   int increment = 0;             // 0 = last increment of the step
   std::string field;             // e.g. S.mises, U, U.z, RF.mag, S.p1, E.11; empty = mesh colours
@@ -16,6 +16,14 @@ struct RenderArgs {
   int bands = 12;                // 2..24 contour colours
   bool smooth = false;           // continuous colours instead of bands
   bool contact_only = false;     // with a contact field: draw only the faces carrying it
+  bool all_faces = false;        // ... every face, even where those faces are hidden
+  std::string contact_pair;      // a slave surface: that pair's contact output only
+  std::string range;             // MIN,MAX of the colour scale; empty = the field's range
+  bool ip_values = false;        // the field at the integration points, as coloured points
+  std::string labels;            // nodes, elements or nodes,elements
+  bool unroll = false;           // unrolled map of a contact field
+  std::string unroll_axis;       // PX,PY,PZ,DX,DY,DZ; empty = fitted
+  int samples = 4;               // multisampling, 1..16
   std::string deform;            // auto | none | factor; empty = auto for results, none for a deck
   bool no_outline = false;       // no undeformed outline under a deformed shape
   std::string mode = "shaded";   // points | wireframe | hidden | shaded | shaded-edges

@@ -2,7 +2,9 @@
 // window through the dialogs only (material with expansion, two revolves sharing the fit
 // cylinder, the frictional contact pair, two steps, symmetry and support conditions, the
 // heating, the axial pressure, a node set along the sleeve bore), solved through `styk solve`,
-// shown as CPRESS and charted along the sleeve. With STYK_GUI_SCREENSHOTS=dir the pictures of
+// shown as CPRESS (the bore alone: hidden under the shaft in the iso view), unrolled over angle and
+// axial position, Mises at the integration points with element numbers and the probe, and CPRESS
+// charted along the sleeve. With STYK_GUI_SCREENSHOTS=dir the pictures of
 // docs/gui.md are written there (docs/images/gui-shrink-*.png).
 //
 // Expected (SPEC §4.2): heating the shaft by 100 with alpha 2e-5 makes a radial interference of
@@ -20,7 +22,10 @@
 #include <QCheckBox>
 #include <QComboBox>
 #include <QDir>
+#include <QFile>
+#include <QLabel>
 #include <QLineEdit>
+#include <QMouseEvent>
 #include <QSignalSpy>
 #include <QStandardPaths>
 #include <QTest>
@@ -33,6 +38,7 @@
 #include "model_tree.hpp"
 #include "results_panel.hpp"
 #include "session/element_setup.hpp"
+#include "session/picking.hpp"
 
 using namespace styk;
 
@@ -277,19 +283,125 @@ class ShrinkFitWalkThrough : public QObject {
     window_->set_field("CPRESS");
     QVERIFY(window_->view()->scene().field());
     QCOMPARE(QString::fromStdString(window_->view()->scene().field()->name), QString("CPRESS"));
-    // Hide the shaft (its layer's check box) to look at the sleeve bore through the cut planes.
-    auto* tree = window_->findChild<gui::ModelTree*>();
-    QTreeWidgetItem* shaft = tree->find_item("SHAFT — ");
-    QVERIFY(shaft);
-    shaft->setCheckState(0, Qt::Unchecked);
+    // Both bodies shown, undeformed, seen from -y: the sleeve's bore lies on the shaft, behind
+    // the shaft's cut face, so the first frame draws the bore alone (its concave side towards
+    // the eye) and says so in the title block.
     for (QCheckBox* box : window_->results_panel()->findChildren<QCheckBox*>())
       if (box->text() == "Deformed shape") box->setChecked(false);
-    window_->view()->set_named_view("-x");  // from -x: into the bore (y = 0..10), cut face x = 0
-    window_->view()->fit();
-    QVERIFY(window_->view()->scene().field());
+    window_->view()->set_named_view("-y");
+    window_->findChild<QAction*>("action_smooth_edges")->trigger();  // pictures for the report
     window_->view()->repaint();
     QTest::qWait(50);
+    const gui::Scene& scene = window_->view()->scene();
+    QCOMPARE(scene.last_frame().samples, 4);
+    QVERIFY(scene.field_faces_only());
+    QVERIFY2(QString::fromStdString(scene.note()).startsWith("CPRESS on its faces alone"),
+             scene.note().c_str());
     if (!shots_.isEmpty()) window_->grab().save(shots_ + "/gui-shrink-cpress.png");
+  }
+
+  // The unrolled map of the bore: the shaft's axis (z), radius 10, a quarter turn, 20 mm long.
+  void unrollsTheContactPressure() {
+    auto* unrolled = window_->results_panel()->findChild<QCheckBox*>("unrolled");
+    QVERIFY(unrolled);
+    unrolled->setChecked(true);
+    window_->view()->repaint();
+    QTest::qWait(50);
+    const render::UnrolledSurface* map = window_->view()->scene().unrolled();
+    QVERIFY(map);
+    QCOMPARE(int(map->kind), int(render::UnrolledSurface::Kind::Revolved));
+    QVERIFY2(std::abs(map->radius - 10.0) < 0.01, qPrintable(QString::number(map->radius)));
+    QVERIFY(std::abs(std::abs(map->axis.direction[2]) - 1.0) < 1e-9);
+    QVERIFY(std::abs(map->v_range[0] - 20.0) < 1e-9 && std::abs(map->v_range[1] - 40.0) < 1e-9);
+    QVERIFY2(std::abs(render::map_degrees(*map, map->u_range[0])) < 1e-3 &&
+                 std::abs(render::map_degrees(*map, map->u_range[1]) - 90.0) < 1e-3,
+             qPrintable(QString("%1 .. %2")
+                            .arg(render::map_degrees(*map, map->u_range[0]))
+                            .arg(render::map_degrees(*map, map->u_range[1]))));
+    // What the map shows near the lower edge is in the nodal values: around the ring at z = 20 the
+    // pressure alternates between the C3D21 faces' corner nodes (every 15 degrees) and their
+    // mid-edge nodes (7.5 degrees off); at mid-length it is uniform around.
+    const Model& m = window_->document().model();
+    const IncrementResult& last = window_->document().results()->increments.back();
+    const auto ripple = [&](double z) {
+      double corner = 0, mid = 0;
+      int corners = 0, mids = 0;
+      for (const ContactNodeResult& c : last.contact) {
+        const Vec3& x = m.coords[c.node];
+        if (std::abs(x[2] - z) > 1e-6) continue;
+        const double degrees = std::atan2(x[1], x[0]) * 180.0 / 3.14159265358979;
+        const bool at_corner = std::abs(std::remainder(degrees, 15.0)) < 1e-3;
+        (at_corner ? corner : mid) += c.pressure;
+        ++(at_corner ? corners : mids);
+      }
+      return std::abs(corner / corners - mid / mids) / (0.5 * (corner / corners + mid / mids));
+    };
+    qInfo("corner/mid-edge pressure ripple around the bore: z = 20: %.3f, z = 30: %.4f",
+          ripple(20.0), ripple(30.0));  // measured 0.131 and 0.0169
+    QVERIFY2(ripple(20.0) > 0.10, qPrintable(QString::number(ripple(20.0))));
+    QVERIFY2(ripple(30.0) < 0.03, qPrintable(QString::number(ripple(30.0))));
+    if (!shots_.isEmpty()) window_->grab().save(shots_ + "/gui-shrink-unrolled.png");
+    // File > Export view as PNG or BMP: the map as a BMP (by the extension).
+    const QString bmp = QDir::temp().filePath("styk_gui_shrink_unrolled.bmp");
+    QVERIFY(window_->export_png(bmp));
+    QFile file(bmp);
+    QVERIFY(file.open(QIODevice::ReadOnly));
+    QCOMPARE(file.read(2), QByteArray("BM"));
+    file.close();
+    QFile::remove(bmp);
+    unrolled->setChecked(false);
+    QVERIFY(!window_->view()->scene().unrolled());
+  }
+
+  // Mises at the integration points with the element numbers of the seen elements; hovering over
+  // an element reports its points' values in the status bar.
+  void showsIntegrationPointValuesAndNumbers() {
+    window_->set_field("S.mises");
+    auto* points = window_->results_panel()->findChild<QCheckBox*>("ip_values");
+    QVERIFY(points);
+    points->setChecked(true);
+    window_->findChild<QAction*>("action_element_numbers")->trigger();
+    // The sleeve alone (the shaft's layer unticked), from the iso direction.
+    QTreeWidgetItem* shaft = window_->findChild<gui::ModelTree*>()->find_item("SHAFT — ");
+    QVERIFY(shaft);
+    shaft->setCheckState(0, Qt::Unchecked);
+    window_->view()->set_named_view("iso");
+    window_->view()->repaint();
+    QTest::qWait(50);
+    const gui::Scene& scene = window_->view()->scene();
+    QVERIFY(scene.point_field());
+    QVERIFY(!scene.last_frame().overlay.labels.empty());
+    // The 48 sleeve elements' points (the shaft's layer is hidden).
+    QCOMPARE(int(scene.last_frame().geometry.ip_points.size()), 48 * 27);
+    // C3D21 and C3D20 elements: 27 points each (3 x 3 x 3 Gauss).
+    const auto probe = scene.element_probe(0);
+    QVERIFY(probe && probe->points.size() == 27);
+    // Hover over a pixel where an element is drawn (found with the view's own picker).
+    QPoint over;
+    {
+      const gui::Picker picker(scene);
+      const qreal ratio = window_->view()->devicePixelRatioF();
+      const QRect r = window_->view()->rect();
+      for (int y = r.center().y(); y < r.bottom() && over.isNull(); y += 4)
+        for (int x = r.left() + 10; x < r.right() && over.isNull(); x += 4)
+          if (picker.face_at(int(x * ratio), int(y * ratio))) over = QPoint(x, y);
+    }
+    QVERIFY(!over.isNull());
+    // Delivered directly: a pointer moved by QTest may not reach a window without focus.
+    QMouseEvent move(QEvent::MouseMove, QPointF(over), window_->view()->mapToGlobal(QPointF(over)),
+                     Qt::NoButton, Qt::NoButton, Qt::NoModifier);
+    QApplication::sendEvent(window_->view(), &move);
+    QApplication::processEvents();
+    QString status;
+    for (QLabel* label : window_->findChildren<QLabel*>())
+      if (label->text().startsWith("element ")) status = label->text();
+    QVERIFY2(status.contains("S.mises at 27 integration points"),
+             qPrintable("status: '" + status + "'"));
+    if (!shots_.isEmpty()) window_->grab().save(shots_ + "/gui-shrink-ip.png");
+    window_->findChild<QAction*>("action_element_numbers")->trigger();
+    points->setChecked(false);
+    shaft->setCheckState(0, Qt::Checked);
+    window_->set_field("CPRESS");
   }
 
   void chartsThePressureAlongTheSleeve() {

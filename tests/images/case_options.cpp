@@ -1,5 +1,6 @@
 #include "case_options.hpp"
 
+#include <array>
 #include <fstream>
 #include <sstream>
 #include <stdexcept>
@@ -44,7 +45,32 @@ render::RenderOptions options_for(const ImageCase& c, int width, int height) {
     else if (key == "smooth")
       o.smooth = value == "1";
     else if (key == "field_faces_only")
-      o.only_field_faces = value == "1";
+      o.field_faces = value == "1" ? render::FieldFaces::Only : render::FieldFaces::Auto;
+    else if (key == "all_faces")
+      o.field_faces = value == "1" ? render::FieldFaces::All : render::FieldFaces::Auto;
+    else if (key == "range") {
+      const std::vector<std::string> ends = split(value, ',');
+      if (ends.size() != 2) throw std::invalid_argument(c.name + ": range=MIN,MAX");
+      o.range = std::array<double, 2>{std::stod(ends[0]), std::stod(ends[1])};
+    } else if (key == "samples")
+      o.samples = std::stoi(value);
+    else if (key == "labels") {
+      for (const std::string& item : split(value, ',')) {
+        if (item == "nodes")
+          o.labels.nodes = true;
+        else if (item == "elements")
+          o.labels.elements = true;
+        else
+          throw std::invalid_argument(c.name + ": labels=nodes,elements");
+      }
+    } else if (key == "ip_values")
+      o.ip_values = value == "1";
+    else if (key == "unroll")
+      o.unroll = value == "1";
+    else if (key == "unroll_axis")
+      o.unroll = true, o.unroll_axis = render::parse_unroll_axis(value);
+    else if (key == "contact_pair")
+      o.contact_pair = value;
     else if (key == "deform")
       o.deform = render::parse_deform(value);
     else if (key == "view")

@@ -50,7 +50,8 @@ std::map<Colour, int> colours_in(const render::Image& image, const render::Pixel
 }
 
 double read_number(const render::Image& image, const render::TextItem& item) {
-  const std::string text = read_text(image, item.x, item.y, item.scale);
+  render::Typeface typeface;
+  const std::string text = read_text(image, typeface, item);
   char* end = nullptr;
   const double value = std::strtod(text.c_str(), &end);
   EXPECT_EQ(*end, '\0') << "legend text '" << text << "'";
@@ -117,8 +118,9 @@ TEST_F(ContactRender, StatusPictureShowsExactlyTheStatusColoursOfTheResults) {
   render::RenderOptions options;
   options.width = 640, options.height = 480;
   options.field = "CSTATUS";
-  options.only_field_faces = true;
+  options.field_faces = render::FieldFaces::Only;
   options.view.name = "-z";
+  options.samples = 1;  // exact colours: multisampling would blend them along the edges
   const Rendered r = render(options);
   std::set<Colour> seen;
   for (const auto& [colour, count] : colours_in(r.image, r.overlay.model, 10)) seen.insert(colour);
@@ -129,7 +131,8 @@ TEST_F(ContactRender, StatusPictureShowsExactlyTheStatusColoursOfTheResults) {
   for (int i = 0; i < 3; ++i) {
     const render::TextItem& label = r.overlay.legend_labels[i];
     EXPECT_EQ(label.text, names[i]);
-    EXPECT_EQ(read_text(r.image, label.x, label.y, label.scale), names[i]);
+    render::Typeface typeface;
+    EXPECT_EQ(read_text(r.image, typeface, label), names[i]);
   }
 
   // Drop the sticking nodes from a copy of the results: their colour must leave the picture.
@@ -159,8 +162,9 @@ TEST_F(ContactRender, PressureLegendLimitsAreTheResultsPressureRange) {
   options.width = 640, options.height = 480;
   options.field = "CPRESS";
   options.bands = 8;
-  options.only_field_faces = true;
+  options.field_faces = render::FieldFaces::Only;
   options.view.name = "-z";
+  options.samples = 1;  // exact colours: multisampling would blend them along the edges
   const render::RenderJob job(model(), *registry_, &increment(), options);
   EXPECT_DOUBLE_EQ(job.colors().min, lo);
   EXPECT_DOUBLE_EQ(job.colors().max, hi);
@@ -168,8 +172,10 @@ TEST_F(ContactRender, PressureLegendLimitsAreTheResultsPressureRange) {
   const render::Frame frame = job.frame(1.0);
   const render::Image image = renderer.render(frame);
   ASSERT_EQ(frame.overlay.legend_labels.size(), 9u);
-  EXPECT_NEAR(read_number(image, frame.overlay.legend_labels.front()), hi, 5e-4 * std::abs(hi));
-  EXPECT_NEAR(read_number(image, frame.overlay.legend_labels.back()), lo, 5e-4 * std::abs(hi));
+  // The legend prints as many digits as the band width needs: half a unit of the last digit.
+  const render::NumberFormat format = render::number_format(job.colors());
+  EXPECT_NEAR(read_number(image, frame.overlay.legend_labels.front()), hi, format.resolution(hi));
+  EXPECT_NEAR(read_number(image, frame.overlay.legend_labels.back()), lo, format.resolution(lo));
 
   std::set<Colour> bands;
   for (int i = 0; i < 8; ++i) bands.insert(bytes(job.colors().band_color(i)));
@@ -192,6 +198,7 @@ TEST_F(ContactRender, OtherFacesAreNeutralGreyOrHidden) {
   options.layers = {"SLAB", "BLOCK"};
   options.hidden_layers = {"SLAB"};
   options.view.elevation = -75;  // iso, turned to look from below
+  options.samples = 1;           // multisampled edges would blend ink and paper into greys
   const auto grey_pixels = [](const Rendered& r) {
     int count = 0;
     const render::PixelRect& m = r.overlay.model;
@@ -203,7 +210,7 @@ TEST_F(ContactRender, OtherFacesAreNeutralGreyOrHidden) {
     return count;
   };
   EXPECT_GT(grey_pixels(render(options)), 5000);
-  options.only_field_faces = true;
+  options.field_faces = render::FieldFaces::Only;
   options.undeformed_outline = false;
   EXPECT_EQ(grey_pixels(render(options)), 0);
 }

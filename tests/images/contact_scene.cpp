@@ -1,6 +1,7 @@
 #include "contact_scene.hpp"
 
 #include "contact_model_kit.hpp"  // tests/verification
+#include "styk/mesher/builders.hpp"
 #include "styk/solver/analysis.hpp"
 
 namespace styk::render_test {
@@ -27,6 +28,16 @@ Model contact_block_model() {
 }
 
 IncrementResult solve_contact_block(const Model& model, const ElementRegistry& registry) {
+  return solve_model(model, registry);
+}
+
+Model cylinders_model(const ElementRegistry& registry) {
+  Model model = mesher::run_builder("cylinders", {{"element", "C3D21"}}, registry).model;
+  model.source = "spec-3.2.2-cylinders-c3d21.inp";
+  return model;
+}
+
+IncrementResult solve_model(const Model& model, const ElementRegistry& registry) {
   Results results = run_static_analysis(model, registry, SolveOptions{}, nullptr, nullptr);
   return std::move(results.increments.back());
 }

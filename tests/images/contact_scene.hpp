@@ -18,4 +18,10 @@ Model contact_block_model();
 // Solves it (run_static_analysis) and returns the last increment.
 IncrementResult solve_contact_block(const Model& model, const ElementRegistry& registry);
 
+// SPEC §3.2.2: two concentric cylinders (Lamé), plane strain, quarter model, built by the mesher's
+// `cylinders` builder with C3D21 contact layers (96 elements); analytic contact pressure 3.294.
+Model cylinders_model(const ElementRegistry& registry);
+// Solves a model (run_static_analysis) and returns its last increment.
+IncrementResult solve_model(const Model& model, const ElementRegistry& registry);
+
 }  // namespace styk::render_test

@@ -5,7 +5,9 @@
 
 #include <string>
 
+#include "styk/render/font.hpp"
 #include "styk/render/image.hpp"
+#include "styk/render/overlay.hpp"
 
 namespace styk::render_test {
 
@@ -19,9 +21,11 @@ struct CompareResult {
 CompareResult compare_images(const render::Image& actual, const render::Image& expected,
                              int channel_threshold);
 
-// Reads the text a TextItem-like label shows: cells of 6 x 7 font pixels at magnification
-// `scale` from (x, y), each matched against the glyph table; stops at the first blank cell or
-// after `max_chars`. Unmatched cells read '?'.
-std::string read_text(const render::Image& image, int x, int y, int scale, int max_chars = 24);
+// Reads back the text a TextItem shows in the picture (dark ink on light paper): from the item's
+// pen position, the printable ASCII character whose glyph (the renderer's typeface, same size)
+// best matches the picture's darkness over its cell, then the next at that glyph's advance; stops
+// at the first blank cell or after `max_chars`.
+std::string read_text(const render::Image& image, render::Typeface& typeface,
+                      const render::TextItem& item, int max_chars = 24);
 
 }  // namespace styk::render_test

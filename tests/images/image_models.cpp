@@ -3,6 +3,8 @@
 #include <cmath>
 #include <stdexcept>
 
+#include <Eigen/Core>
+
 #include "contact_scene.hpp"
 #include "styk/elements/builtin.hpp"
 #include "styk/mesher/box_mesh.hpp"
@@ -45,7 +47,13 @@ Vec3 ring_point(double xi, double eta, double zeta) {
   return {radius * std::cos(angle), radius * std::sin(angle), 0.5 * (zeta + 1.0)};
 }
 
-void add_ring(Model& model, const TElement& element, int divisions) {
+// A flat plate: xi -> x 0..4, eta -> y 0..4, zeta -> z 0..1 (S1 faces at z = 0).
+Vec3 plate_point(double xi, double eta, double zeta) {
+  return {2.0 * (xi + 1.0), 2.0 * (eta + 1.0), 0.5 * (zeta + 1.0)};
+}
+
+template <class Shape>
+void add_patch(Model& model, const TElement& element, int divisions, const Shape& shape) {
   // Elements over a divisions x divisions patch of (xi, eta), one layer in zeta. Nodes are merged
   // by position so neighbouring elements share them.
   const SourceLoc here{"render test", 0};
@@ -56,7 +64,7 @@ void add_ring(Model& model, const TElement& element, int divisions) {
       for (const Vec3& n : natural) {
         const double xi = -1.0 + (2.0 * a + n[0] + 1.0) / divisions;
         const double eta = -1.0 + (2.0 * b + n[1] + 1.0) / divisions;
-        const Vec3 p = ring_point(xi, eta, n[2]);
+        const Vec3 p = shape(xi, eta, n[2]);
         int found = -1;
         for (int k = 0; k < model.node_count() && found < 0; ++k) {
           const Vec3& q = model.coords[k];
@@ -73,7 +81,38 @@ void add_ring(Model& model, const TElement& element, int divisions) {
   for (int e = 0; e < model.element_count(); ++e) all.elements.push_back(e);
 }
 
+void add_ring(Model& model, const TElement& element, int divisions) {
+  add_patch(model, element, divisions, ring_point);
+}
+
 }  // namespace
+
+double plate_field(const Vec3& x) {
+  const double u = 0.8 * x[0] + 0.6 * x[1];
+  return u * u;
+}
+
+void fill_point_results(const Model& model, const ElementRegistry& registry, IncrementResult& inc) {
+  inc.ip_offset.assign(1, 0);
+  inc.S.clear();
+  Eigen::VectorXd N;
+  Eigen::MatrixXd dN;
+  for (int e = 0; e < model.element_count(); ++e) {
+    const TElement& element = *registry.find(model.elements[e].type);
+    const int* conn = model.element_nodes(e);
+    N.resize(element.node_count());
+    dN.resize(element.node_count(), 3);
+    for (const Vec3& xi : element.rule(RuleKind::Full).points) {
+      element.der(xi, N, dN);
+      Vec3 x{0, 0, 0};
+      for (int a = 0; a < element.node_count(); ++a)
+        for (int k = 0; k < 3; ++k) x[k] += N(a) * model.coords[conn[a]][k];
+      inc.S.push_back(with_jump(stress_at(x), e));
+    }
+    inc.ip_offset.push_back(static_cast<int>(inc.S.size()));
+  }
+  for (const Tensor6& s : inc.S) inc.E.push_back(scaled(s, 1.0 / 2e5));
+}
 
 void fill_results(const Model& model, IncrementResult& inc) {
   const std::size_t nodes = model.coords.size(), elements = model.elements.size();
@@ -140,6 +179,24 @@ TestScene make_scene(const std::string& name, const ElementRegistry& registry) {
     add_ring(model, *element, 2);
     model.source = name + "-ring.inp";
     scene.has_results = true;
+  } else if (name == "plate_c3d20" || name == "plate_c3d21" || name == "plate_c3d28") {
+    const std::string type = name == "plate_c3d20"   ? "C3D20"
+                             : name == "plate_c3d21" ? "C3D21"
+                                                     : "C3D28";
+    const TElement* element = registry.find(type);
+    if (!element) throw std::invalid_argument("element " + type + " missing for scene " + name);
+    add_patch(model, *element, 2, plate_point);
+    model.source = name + ".inp";
+    fill_results(model, scene.increment);
+    for (std::size_t n = 0; n < model.coords.size(); ++n)
+      scene.increment.U[n] = {plate_field(model.coords[n]), 0.0, 0.0};
+    scene.has_results = true;
+    return scene;
+  } else if (name == "cylinders_c3d21") {
+    model = cylinders_model(registry);
+    scene.increment = solve_model(model, registry);
+    scene.has_results = true;
+    return scene;
   } else if (name == "contact_block") {
     model = contact_block_model();
     scene.increment = solve_contact_block(model, registry);
@@ -148,7 +205,10 @@ TestScene make_scene(const std::string& name, const ElementRegistry& registry) {
   } else {
     throw std::invalid_argument("unknown test scene " + name);
   }
-  if (scene.has_results) fill_results(model, scene.increment);
+  if (scene.has_results) {
+    fill_results(model, scene.increment);
+    fill_point_results(model, registry, scene.increment);
+  }
   return scene;
 }
 

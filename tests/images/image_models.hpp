@@ -32,6 +32,10 @@ struct TestScene {
 // "c3d28":    2 x 2 curved C3D28 elements, same shape, results.
 // "contact_block": the solved contact model of contact_scene.hpp (element sets SLAB, BLOCK),
 //             results from the solver (U, S, contact output).
+// "plate_c3d20", "plate_c3d21", "plate_c3d28": 2 x 2 flat elements over [0,4] x [0,4] x [0,1]
+//             (S1 faces at z = 0, seen from -z), U.x = plate_field (other results synthetic).
+// "cylinders_c3d21": the SPEC §3.2.2 concentric cylinders (mesher builder `cylinders`, C3D21
+//             contact layers), solved (contact_scene.hpp).
 // Throws std::invalid_argument for another name.
 TestScene make_scene(const std::string& name, const ElementRegistry& registry);
 
@@ -44,5 +48,13 @@ double element_jump(int e);
 
 // Fills U, RF, S_element_nodes, S_centroid, S_nodal_I, S_nodal_II (and E_* = S / 2e5).
 void fill_results(const Model& model, IncrementResult& increment);
+// Fills the integration-point values S (and E = S / 2e5) and ip_offset: stress_at the points of
+// each element's full rule, with the element's jump.
+void fill_point_results(const Model& model, const ElementRegistry& registry,
+                        IncrementResult& increment);
+
+// The plates' U.x: (0.8 x + 0.6 y)^2, a quadratic the 8-, 9- and 16-node faces interpolate
+// exactly, whose contours are straight lines at right angles to (0.8, 0.6).
+double plate_field(const Vec3& x);
 
 }  // namespace styk::render_test

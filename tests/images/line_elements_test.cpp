@@ -79,6 +79,7 @@ class LineElements : public ::testing::Test {
     render::RenderOptions o;
     o.width = 640, o.height = 480;
     o.layers = {"BLOCK", "BARS"};
+    o.samples = 1;  // exact colours: the 1 px outline is not blended with the paper
     return o;
   }
 

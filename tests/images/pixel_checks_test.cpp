@@ -85,6 +85,7 @@ TEST_F(PixelChecks, BandedLinearFieldShowsExactlyTheRequestedBandColours) {
     options.field = "U.x";
     options.bands = bands;
     options.view.name = "+z";
+    options.samples = 1;  // exact colours: multisampling would blend them along the edges
     const Rendered r = render_scene(scene, registry_, options);
     std::set<Colour> seen;
     for (const auto& [colour, count] : colours_in(r.image, r.overlay.model))
@@ -127,9 +128,9 @@ TEST_F(PixelChecks, HiddenLayerColourDoesNotAppear) {
   EXPECT_EQ(pixels_of_hue(one.image, one.overlay.model, right), 0);
 }
 
-// The legend's first and last numbers, read back from the pixels with the glyph table, are the
-// field's maximum and minimum, computed here straight from the results arrays, for every
-// averaging method (4 significant digits: tolerance 5e-4 of the magnitude).
+// The legend's first and last numbers, read back from the pixels (each glyph matched against the
+// typeface's), are the field's maximum and minimum, computed here straight from the results
+// arrays, for every averaging method, to the legend's last printed digit.
 TEST_F(PixelChecks, LegendNumbersMatchTheFieldRangeForEveryAveraging) {
   const TestScene scene = make_scene("box", registry_);
   const IncrementResult& inc = scene.increment;
@@ -151,15 +152,17 @@ TEST_F(PixelChecks, LegendNumbersMatchTheFieldRangeForEveryAveraging) {
     ASSERT_EQ(r.overlay.legend_labels.size(), 9u);
     const render::TextItem& top = r.overlay.legend_labels.front();
     const render::TextItem& bottom = r.overlay.legend_labels.back();
-    const std::string top_text = read_text(r.image, top.x, top.y, top.scale);
-    const std::string bottom_text = read_text(r.image, bottom.x, bottom.y, bottom.scale);
+    render::Typeface typeface;
+    const std::string top_text = read_text(r.image, typeface, top);
+    const std::string bottom_text = read_text(r.image, typeface, bottom);
+    const render::NumberFormat format = render::number_format(lo, hi, 8);
     char* end = nullptr;
     const double top_value = std::strtod(top_text.c_str(), &end);
     EXPECT_EQ(*end, '\0') << "legend text '" << top_text << "'";
     const double bottom_value = std::strtod(bottom_text.c_str(), &end);
     EXPECT_EQ(*end, '\0') << "legend text '" << bottom_text << "'";
-    EXPECT_NEAR(top_value, hi, 5e-4 * std::abs(hi)) << e.averaging << ": '" << top_text << "'";
-    EXPECT_NEAR(bottom_value, lo, 5e-4 * std::abs(lo))
+    EXPECT_NEAR(top_value, hi, format.resolution(hi)) << e.averaging << ": '" << top_text << "'";
+    EXPECT_NEAR(bottom_value, lo, format.resolution(lo))
         << e.averaging << ": '" << bottom_text << "'";
   }
   // The jumps of +-20 make the unaveraged range the widest: averaging must change the picture.

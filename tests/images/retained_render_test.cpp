@@ -87,7 +87,8 @@ TEST_F(RetainedRender, ViewsOfUploadedGeometryMatchOneShotPicturesPixelForPixel)
   Frame relabelled = turned(frame, 40.0);
   render::OverlayContent content;
   content.title_lines = {"Model: renamed"};
-  relabelled.overlay = render::build_overlay(content, 320, 240);
+  render::Typeface typeface;
+  relabelled.overlay = render::build_overlay(content, 320, 240, typeface);
   EXPECT_EQ(differing(retained.render_view(relabelled), one_shot.render(relabelled)), 0);
 }
 
@@ -135,7 +136,7 @@ TEST_F(RetainedRender, ClosedSkinsTurnClockwiseSeenFromOutside) {
   // Faces left out (contact output on the slave faces only): an open skin, never culled.
   const TestScene contact = make_scene("contact_block", registry_);
   render::RenderOptions only = options("CPRESS");
-  only.only_field_faces = true;
+  only.field_faces = render::FieldFaces::Only;
   const Frame open = render::RenderJob(contact.model, registry_, &contact.increment, only).frame();
   EXPECT_FALSE(open.geometry.triangles.empty());
   EXPECT_FALSE(open.geometry.closed);

@@ -12,9 +12,13 @@
 #include "session/document.hpp"
 #include "session/element_filter.hpp"
 #include "session/selection.hpp"
+#include "styk/render/font.hpp"
 #include "styk/render/frame.hpp"
 #include "styk/render/geometry.hpp"
+#include "styk/render/point_field.hpp"
 #include "styk/render/render_job.hpp"
+#include "styk/render/unroll.hpp"
+#include "styk/render/visibility.hpp"
 
 namespace styk::gui {
 
@@ -35,6 +39,18 @@ struct DisplaySettings {
   std::optional<std::array<std::array<float, 3>, 2>> camera_box;  // lower, upper (frame origin)
   // View > Filter: only the passing elements of each visible layer are drawn (element_filter.hpp).
   ElementDisplayFilter filter;
+  // A field that lives on surfaces (contact output): which faces show it. Auto draws its faces
+  // alone, with a note in the title block, when they are hidden in the view of the first frame
+  // drawn after the rebuild (the slave surface under its master body).
+  render::FieldFaces field_faces = render::FieldFaces::Auto;
+  bool ip_values = false;  // the field at the integration points (S.*, E.*, HFL.*, ECD.*)
+  bool unrolled = false;   // the unrolled map of a surface field instead of the 3D view
+  // Node / element numbers of the seen entities, or of the selected ones only.
+  render::LabelRequest labels;
+  bool labels_of_selection = false;
+  // Multisampling of the model's edges (1 = none). Off by default in the view: with llvmpipe 4
+  // samples make a frame 2.7 to 3.9 times slower (bench/render, msaa_ratio); View > Smooth edges.
+  int samples = 1;
 };
 
 // The camera as the mouse moves it: a named view turned by azimuth/elevation, zoomed, and panned
@@ -51,6 +67,15 @@ struct ProbeResult {
   Vec3 position{};              // undeformed coordinates
   std::optional<double> value;  // the contour field at the node, when a field is shown
   std::string field;
+};
+
+// The integration-point values of the element under the cursor (integration-point display).
+struct ElementProbe {
+  int element = -1;
+  Id element_id = 0;
+  std::string type;
+  std::string field;
+  std::vector<render::PointValue> points;
 };
 
 class Scene {
@@ -91,6 +116,13 @@ class Scene {
   // normalised depth (-1 near .. 1 far) of a node in the last frame().
   std::array<double, 3> screen_position(int node) const;
   const render::ScalarField* field() const { return field_ ? &*field_ : nullptr; }
+  const render::PointField* point_field() const { return point_field_ ? &*point_field_ : nullptr; }
+  // The unrolled map shown instead of the 3D view (DisplaySettings::unrolled), if any.
+  const render::UnrolledSurface* unrolled() const { return unrolled_ ? &*unrolled_ : nullptr; }
+  // Whether only the faces carrying a surface field are drawn, and the title block's note when
+  // that was chosen because they were hidden.
+  bool field_faces_only() const { return field_faces_only_; }
+  const std::string& note() const { return note_; }
   const render::ColorScale& colors() const { return colors_; }
   const IncrementResult* increment() const { return increment_; }
   std::size_t triangle_count() const { return frame_.geometry.triangles.size() / 3; }
@@ -102,15 +134,30 @@ class Scene {
   // mean over the visible elements around the node. Empty without a field or for a node no
   // visible element uses.
   std::optional<double> value_at_node(int node) const;
+  // With integration-point values shown: those of element `element` (index), numbered as the
+  // rule orders them; empty otherwise.
+  std::optional<ElementProbe> element_probe(int element) const;
 
  private:
   void build_geometry();
+  void build_map();
+  void choose_field_faces(const render::Camera& camera, double aspect);
+  void update_title();
+  void fit_camera_box();
 
   const Model* model_ = nullptr;
   const IncrementResult* increment_ = nullptr;
   std::unique_ptr<render::SkinModel> skin_;
   std::optional<render::ScalarField> field_;
+  std::optional<render::PointField> point_field_;
   render::ColorScale colors_;
+  DisplaySettings settings_;
+  const ElementRegistry* registry_ = nullptr;
+  bool field_faces_only_ = false;
+  bool faces_decided_ = true;  // the Auto choice is made on the first frame after a rebuild
+  std::string note_;
+  std::optional<render::UnrolledSurface> unrolled_;
+  render::FrameGeometry map_;
   double scale_ = 0.0;
   double fraction_ = 1.0;
   long geometry_revision_ = 0;
@@ -118,9 +165,11 @@ class Scene {
   std::array<std::array<float, 3>, 2> camera_box_{};
   Selection selection_;
   std::vector<std::string> title_lines_;
+  std::string model_name_;
   std::string legend_heading_;
   std::vector<int> visible_nodes_;
   render::Frame frame_;
+  std::unique_ptr<render::Typeface> typeface_;  // the overlay's font, loaded on the first frame
 };
 
 }  // namespace styk::gui

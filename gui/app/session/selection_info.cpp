@@ -1,5 +1,6 @@
 #include "session/selection_info.hpp"
 
+#include <algorithm>
 #include <cstdio>
 
 #include "session/results_navigation.hpp"
@@ -70,6 +71,25 @@ std::string selection_summary(const Scene& scene, const Selection& selection) {
     return lines.empty() ? std::string() : lines.front();
   }
   return std::to_string(selection.size()) + " " + pick_kind_name(selection.kind()) + "s selected";
+}
+
+std::string element_probe_summary(const ElementProbe& probe) {
+  std::string text = "element " + std::to_string(probe.element_id) + " " + probe.type + ": " +
+                     probe.field + " at " + std::to_string(probe.points.size()) +
+                     " integration points";
+  if (probe.points.empty()) return text;
+  double lo = probe.points.front().value, hi = lo;
+  for (const render::PointValue& p : probe.points)
+    lo = std::min(lo, p.value), hi = std::max(hi, p.value);
+  return text + ", " + render::format_legend_value(lo) + " .. " + render::format_legend_value(hi);
+}
+
+std::vector<std::string> describe_element_probe(const ElementProbe& probe) {
+  std::vector<std::string> lines;
+  for (const render::PointValue& p : probe.points)
+    lines.push_back("point " + std::to_string(p.number) + " " + point(p.natural) + " at " +
+                    point(p.position) + ": " + render::format_legend_value(p.value));
+  return lines;
 }
 
 }  // namespace styk::gui

@@ -20,4 +20,10 @@ std::vector<std::string> describe_selection(const Scene& scene, const Selection&
 // A one-line summary for the status bar: "3 nodes selected" / "node 12 (...) ...".
 std::string selection_summary(const Scene& scene, const Selection& selection);
 
+// The integration-point values of one element (the probe of the integration-point display):
+// "element 5 C3D20: S.mises at 27 integration points, 1.234E+02 .. 2.345E+02" ...
+std::string element_probe_summary(const ElementProbe& probe);
+// ... and one line per point: "point 1 (-0.7746, -0.7746, -0.7746) at (x, y, z): 1.2346E+02".
+std::vector<std::string> describe_element_probe(const ElementProbe& probe);
+
 }  // namespace styk::gui

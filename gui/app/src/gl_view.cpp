@@ -11,6 +11,7 @@
 
 #include "session/apng.hpp"
 #include "session/picking.hpp"
+#include "session/selection_info.hpp"
 
 namespace styk::gui {
 namespace {
@@ -39,7 +40,7 @@ GlView::GlView(QWidget* parent) : QOpenGLWidget(parent) {
   format.setVersion(3, 3);
   format.setProfile(QSurfaceFormat::CoreProfile);
   format.setDepthBufferSize(24);
-  format.setSamples(0);  // the renderer's pixels are deterministic without multisampling
+  format.setSamples(0);  // the renderer multisamples the model itself (FrameView::samples)
   setFormat(format);
   setMouseTracking(true);
   setMinimumSize(320, 240);
@@ -112,7 +113,7 @@ void GlView::clear_selection() {
 }
 
 void GlView::pick_at(const QPoint& p, Qt::KeyboardModifiers modifiers) {
-  if (scene_.empty()) return;
+  if (scene_.empty() || scene_.unrolled()) return;
   const qreal ratio = devicePixelRatioF();
   scene_.frame(std::max(16, int(std::lround(width() * ratio))),
                std::max(16, int(std::lround(height() * ratio))), view_);
@@ -129,7 +130,7 @@ void GlView::pick_at(const QPoint& p, Qt::KeyboardModifiers modifiers) {
 }
 
 void GlView::pick_box(const QRect& box, Qt::KeyboardModifiers modifiers) {
-  if (scene_.empty()) return;
+  if (scene_.empty() || scene_.unrolled()) return;
   const qreal ratio = devicePixelRatioF();
   scene_.frame(std::max(16, int(std::lround(width() * ratio))),
                std::max(16, int(std::lround(height() * ratio))), view_);
@@ -181,8 +182,9 @@ void GlView::mouseMoveEvent(QMouseEvent* event) {
     view_.pan_right += d.x() * per_pixel;
     view_.pan_up -= d.y() * per_pixel;
     update();
-  } else if (event->buttons() & Qt::LeftButton) {
-    // Half a turn across the widget's width; elevation stays within +-89 degrees.
+  } else if ((event->buttons() & Qt::LeftButton) && !scene_.unrolled()) {
+    // Half a turn across the widget's width; elevation stays within +-89 degrees. (The unrolled
+    // map is flat: it pans and zooms but does not turn.)
     view_.spec.azimuth -= 180.0 * d.x() / std::max(1, width());
     view_.spec.elevation =
         std::clamp(view_.spec.elevation + 180.0 * d.y() / std::max(1, height()), -89.0, 89.0);
@@ -193,7 +195,16 @@ void GlView::mouseMoveEvent(QMouseEvent* event) {
 }
 
 void GlView::probe_at(const QPoint& p) {
+  if (scene_.unrolled()) return;  // the map's points are not the model's
   const qreal ratio = devicePixelRatioF();
+  // Integration-point values shown: the element under the cursor reports its points' values.
+  if (scene_.point_field()) {
+    const Picker picker(scene_);
+    const auto face = picker.face_at(int(p.x() * ratio), int(p.y() * ratio));
+    const auto probe = face ? scene_.element_probe(face->element) : std::nullopt;
+    emit probed(probe ? QString::fromStdString(element_probe_summary(*probe)) : QString());
+    return;
+  }
   const auto hit = scene_.probe(int(p.x() * ratio), int(p.y() * ratio), int(8 * ratio));
   if (!hit) {
     emit probed(QString());

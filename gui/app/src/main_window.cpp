@@ -9,6 +9,7 @@
 #include <QMessageBox>
 #include <QPlainTextEdit>
 #include <QProgressBar>
+#include <QSignalBlocker>
 #include <QStatusBar>
 #include <QTextBrowser>
 
@@ -175,8 +176,10 @@ bool MainWindow::save_file(const QString& path) {
 
 bool MainWindow::export_png(const QString& path) {
   const QImage picture = view_->grab_picture();
-  if (picture.isNull() || !picture.save(path, "PNG")) {
-    show_error("Export PNG", "cannot write " + path);
+  // PNG, or BMP (the thesis' picture format) by the file's extension.
+  const char* format = path.endsWith(".bmp", Qt::CaseInsensitive) ? "BMP" : "PNG";
+  if (picture.isNull() || !picture.save(path, format)) {
+    show_error("Export picture", "cannot write " + path);
     return false;
   }
   log("view written to " + path);
@@ -323,6 +326,15 @@ void MainWindow::show_selection() {
                      .arg(QString::fromStdString(pick_kind_name(selection.kind())));
   for (const std::string& line : describe_selection(view_->scene(), selection))
     html += QString::fromStdString(line).toHtmlEscaped() + "<br>";
+  // With integration-point values shown: those of the (first) selected element.
+  int element = selection.elements().empty() ? -1 : selection.elements().front();
+  if (element < 0 && !selection.faces().empty()) element = selection.faces().front().element;
+  if (const auto probe = view_->scene().element_probe(element)) {
+    html += "<br><b>" + QString::fromStdString(element_probe_summary(*probe)).toHtmlEscaped() +
+            "</b><br>";
+    for (const std::string& line : describe_element_probe(*probe))
+      html += QString::fromStdString(line).toHtmlEscaped() + "<br>";
+  }
   properties_->setHtml(html);
 }
 
@@ -371,7 +383,28 @@ bool MainWindow::make_layer_from_selection(const QString& name) {
 DisplaySettings MainWindow::display_settings() const {
   DisplaySettings settings = results_->settings(mode_);
   settings.filter = document_.filter();
+  settings.labels = labels_;
+  settings.labels_of_selection = labels_of_selection_;
+  settings.samples = smooth_edges_ ? 4 : 1;
   return settings;
+}
+
+void MainWindow::set_smooth_edges(bool on) {
+  smooth_edges_ = on;
+  refresh_scene();
+}
+
+void MainWindow::set_labels(bool nodes, bool elements, bool selection_only) {
+  labels_.nodes = nodes;
+  labels_.elements = elements;
+  labels_of_selection_ = selection_only;
+  for (auto [action, on] : {std::pair{node_numbers_, nodes}, std::pair{element_numbers_, elements},
+                            std::pair{numbers_of_selection_, selection_only}})
+    if (action) {
+      const QSignalBlocker block(action);
+      action->setChecked(on);
+    }
+  refresh_scene();
 }
 
 void MainWindow::refresh_scene() {
@@ -388,8 +421,20 @@ void MainWindow::refresh_scene() {
   } catch (const InputError& e) {
     log("view: " + QString::fromStdString(e.message()));
     last_message_ = QString::fromStdString(e.message());
-    settings.field.clear();
-    view_->scene().rebuild(document_, settings);
+    // An unrolled map of a field that does not live on surfaces: the 3D view of the field;
+    // otherwise no field.
+    if (settings.unrolled) {
+      settings.unrolled = false;
+    } else {
+      settings.field.clear();
+      settings.ip_values = false;
+    }
+    try {
+      view_->scene().rebuild(document_, settings);
+    } catch (const InputError&) {
+      settings.field.clear();
+      view_->scene().rebuild(document_, settings);
+    }
   }
   view_->update();
 }

@@ -35,11 +35,15 @@ class MainWindow : public QMainWindow {
   // .inp or .styk.h5; errors go to a message box (and the log). Returns success.
   bool open_file(const QString& path);
   bool save_file(const QString& path);
-  bool export_png(const QString& path);
+  bool export_png(const QString& path);  // PNG, or BMP when the path ends in .bmp
   void start_solve();
   void cancel_solve();
   bool solving() const;
   void set_display_mode(render::DisplayMode mode);
+  // View > Numbers: node and element numbers of the seen entities (or of the selection only).
+  void set_labels(bool nodes, bool elements, bool selection_only);
+  // View > Smooth edges: the model drawn with 4 samples per pixel (slower to orbit).
+  void set_smooth_edges(bool on);
   void set_field(const QString& field);  // selects it in the results panel and redraws
   // The selection in the view as a node set / element set / surface (undoable); errors go to
   // a message box. Returns success.
@@ -77,8 +81,8 @@ class MainWindow : public QMainWindow {
   void build_select_menu();
   void build_analysis_menu();
   void build_view_menu();
-  void refresh_model();  // after any model or results change
-  void refresh_scene();  // after a display setting change
+  void refresh_model();                      // after any model or results change
+  void refresh_scene();                      // after a display setting change
   DisplaySettings display_settings() const;  // the results panel's, with the filter
   void log(const QString& line);
   void show_error(const QString& title, const QString& message);
@@ -105,6 +109,12 @@ class MainWindow : public QMainWindow {
   QAction* cancel_ = nullptr;
   std::unique_ptr<SolveRunner> solver_;
   render::DisplayMode mode_ = render::DisplayMode::Shaded;
+  render::LabelRequest labels_;
+  bool labels_of_selection_ = false;
+  bool smooth_edges_ = false;
+  QAction* node_numbers_ = nullptr;
+  QAction* element_numbers_ = nullptr;
+  QAction* numbers_of_selection_ = nullptr;
   QString last_message_;
 };
 

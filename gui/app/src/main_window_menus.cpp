@@ -57,9 +57,9 @@ void MainWindow::build_file_menu() {
         QFileDialog::getSaveFileName(this, "Save deck", QString(), "Decks (*.inp)");
     if (!chosen.isEmpty()) save_file(chosen);
   });
-  file->addAction("&Export view as PNG...", this, [this] {
-    const QString chosen =
-        QFileDialog::getSaveFileName(this, "Export PNG", "view.png", "PNG (*.png)");
+  file->addAction("&Export view as PNG or BMP...", this, [this] {
+    const QString chosen = QFileDialog::getSaveFileName(this, "Export picture", "view.png",
+                                                        "PNG (*.png);;BMP (*.bmp)");
     if (!chosen.isEmpty()) export_png(chosen);
   });
   file->addAction("Export &animation...", this,
@@ -197,6 +197,23 @@ void MainWindow::build_view_menu() {
   QAction* perspective =
       view->addAction("&Perspective", this, [this](bool on) { view_->set_perspective(on); });
   perspective->setCheckable(true);
+  view->addSeparator();
+  // Numbers of the seen nodes / elements (docs/gui.md "Numbers and integration points").
+  const auto numbers = [this] {
+    set_labels(node_numbers_->isChecked(), element_numbers_->isChecked(),
+               numbers_of_selection_->isChecked());
+  };
+  node_numbers_ = view->addAction("&Node numbers", this, numbers);
+  node_numbers_->setObjectName("action_node_numbers");
+  element_numbers_ = view->addAction("&Element numbers", this, numbers);
+  element_numbers_->setObjectName("action_element_numbers");
+  numbers_of_selection_ = view->addAction("Numbers of the selection &only", this, numbers);
+  numbers_of_selection_->setObjectName("action_numbers_of_selection");
+  for (QAction* a : {node_numbers_, element_numbers_, numbers_of_selection_}) a->setCheckable(true);
+  QAction* smooth =
+      view->addAction("S&mooth edges", this, [this](bool on) { set_smooth_edges(on); });
+  smooth->setObjectName("action_smooth_edges");
+  smooth->setCheckable(true);
   view->addSeparator();
   view->addAction("Fi&lter...", this,
                   [this] {

@@ -27,6 +27,14 @@ ResultsPanel::ResultsPanel(QWidget* parent) : QWidget(parent) {
   bands_->setRange(render::kMinBands, render::kMaxBands);
   bands_->setValue(render::kDefaultBands);
   smooth_ = new QCheckBox("Smooth colours");
+  ip_values_ = new QCheckBox("Values at integration points");
+  ip_values_->setObjectName("ip_values");
+  contact_faces_ = new QComboBox;
+  contact_faces_->setObjectName("contact_faces");
+  // The order of render::FieldFaces.
+  contact_faces_->addItems({"automatic", "contact faces only", "all faces"});
+  unrolled_ = new QCheckBox("Unrolled contact map");
+  unrolled_->setObjectName("unrolled");
   deformed_ = new QCheckBox("Deformed shape");
   deformed_->setChecked(true);
   auto_scale_ = new QCheckBox("Automatic scale");
@@ -54,6 +62,9 @@ ResultsPanel::ResultsPanel(QWidget* parent) : QWidget(parent) {
   form->addRow("Averaging", averaging_);
   form->addRow("Colours", bands_);
   form->addRow(QString(), smooth_);
+  form->addRow(QString(), ip_values_);
+  form->addRow("Contact faces", contact_faces_);
+  form->addRow(QString(), unrolled_);
   form->addRow(QString(), deformed_);
   form->addRow(QString(), auto_scale_);
   form->addRow("Scale factor", scale_);
@@ -74,8 +85,9 @@ ResultsPanel::ResultsPanel(QWidget* parent) : QWidget(parent) {
   });
   connect(averaging_, &QComboBox::currentIndexChanged, this, &ResultsPanel::changed);
   connect(bands_, &QSpinBox::valueChanged, this, &ResultsPanel::changed);
-  for (QCheckBox* c : {smooth_, deformed_, auto_scale_})
+  for (QCheckBox* c : {smooth_, deformed_, auto_scale_, ip_values_, unrolled_})
     connect(c, &QCheckBox::toggled, this, &ResultsPanel::changed);
+  connect(contact_faces_, &QComboBox::currentIndexChanged, this, &ResultsPanel::changed);
   connect(scale_, &QLineEdit::editingFinished, this, &ResultsPanel::changed);
   connect(chart_, &QPushButton::clicked, this,
           [this] { emit chart_requested(path_->currentText()); });
@@ -142,6 +154,9 @@ DisplaySettings ResultsPanel::settings(render::DisplayMode mode) const {
   s.averaging = render::parse_averaging(averaging_->currentText().toStdString());
   s.bands = bands_->value();
   s.smooth = smooth_->isChecked();
+  s.ip_values = ip_values_->isChecked();
+  s.field_faces = static_cast<render::FieldFaces>(contact_faces_->currentIndex());
+  s.unrolled = unrolled_->isChecked();
   s.deformed = deformed_->isChecked();
   s.auto_scale = auto_scale_->isChecked();
   bool ok = false;

@@ -1,7 +1,8 @@
 // The results controls (issue priority 5, issue 7): increment ("step 2, increment 3, time 0.6"),
-// the fields that increment holds, averaging, bands or smooth colours, deformed shape with an
-// editable scale, the path chart, the value-vs-increment chart of the picked node, and the
-// animation (kind, frames, play). Emits changed() on every display edit.
+// the fields that increment holds, averaging, bands or smooth colours, values at the integration
+// points, which faces show a contact field and its unrolled map, deformed shape with an editable
+// scale, the path chart, the value-vs-increment chart of the picked node, and the animation
+// (kind, frames, play). Emits changed() on every display edit.
 #pragma once
 
 #include <QWidget>
@@ -54,6 +55,9 @@ class ResultsPanel : public QWidget {
   QComboBox* path_ = nullptr;
   QPushButton* chart_ = nullptr;
   QPushButton* history_ = nullptr;
+  QCheckBox* ip_values_ = nullptr;
+  QComboBox* contact_faces_ = nullptr;
+  QCheckBox* unrolled_ = nullptr;
   QComboBox* animation_kind_ = nullptr;
   QSpinBox* animation_frames_ = nullptr;
   QPushButton* animate_ = nullptr;

@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
+#include <cstdlib>
 
 #include "styk/core/diagnostics.hpp"
 
@@ -64,6 +65,50 @@ std::string format_legend_value(double value) {
   char buffer[32];
   std::snprintf(buffer, sizeof buffer, "%.3E", value);
   return buffer;
+}
+
+namespace {
+
+int decade(double value) { return static_cast<int>(std::floor(std::log10(value))); }
+
+}  // namespace
+
+std::string NumberFormat::operator()(double value) const {
+  char buffer[48];
+  std::snprintf(buffer, sizeof buffer, scientific ? "%.*E" : "%.*f", decimals, value);
+  std::string text = buffer;
+  // A value that rounds to zero prints without a sign ("0.00", not "-0.00").
+  if (text[0] == '-' && std::strtod(text.c_str(), nullptr) == 0.0) text.erase(0, 1);
+  return text;
+}
+
+double NumberFormat::resolution(double value) const {
+  const double unit = std::pow(10.0, -decimals);
+  if (!scientific || value == 0.0) return 0.5 * unit;
+  return 0.5 * unit * std::pow(10.0, decade(std::abs(value)));
+}
+
+NumberFormat number_format(double min, double max, int intervals) {
+  NumberFormat format;
+  const double magnitude = std::max(std::abs(min), std::abs(max));
+  if (!(magnitude > 0) || !std::isfinite(magnitude)) {
+    format.decimals = 0;
+    return format;
+  }
+  double step = (max - min) / std::max(1, intervals);
+  // A field uniform to 1e-7 (round-off): 4 digits, not the noise.
+  if (!(step > 1e-7 * magnitude)) step = 1e-3 * magnitude;
+  // The last digit printed: a tenth of the step's leading digit, and never coarser than the third
+  // significant digit of the magnitude.
+  const int last = std::min(decade(step) - 1, decade(magnitude) - 2);
+  format.scientific = magnitude < 1e-3 || magnitude >= 1e6 || last < -6;
+  format.decimals =
+      format.scientific ? std::clamp(decade(magnitude) - last, 2, 8) : std::max(0, -last);
+  return format;
+}
+
+NumberFormat number_format(const ColorScale& scale) {
+  return number_format(scale.min, scale.max, scale.bands);
 }
 
 void check_band_count(int bands) {

@@ -19,9 +19,12 @@ bool is_contact_quantity(const std::string& quantity);
 std::vector<std::string> contact_field_names();
 
 // Evaluates contact field `quantity`.`suffix` (suffix lower-case, may be empty). `drawable` lists
-// the other fields the increment holds, for the message when it holds no contact output.
+// the other fields the increment holds, for the message when it holds no contact output. A
+// non-empty `pair` (the slave surface of one *CONTACT PAIR line, case-insensitive) keeps that
+// pair's output only; an unknown one is an InputError listing the pairs' slave surfaces. The
+// field carries the faces of the slave surfaces (ScalarField::support).
 ScalarField evaluate_contact_field(const Model& model, const IncrementResult& increment,
                                    const std::string& quantity, const std::string& suffix,
-                                   const std::string& drawable);
+                                   const std::string& drawable, const std::string& pair = "");
 
 }  // namespace styk::render

@@ -119,6 +119,19 @@ FaceShape make_shape(const TElement& element, const FaceDef& face) {
 
 }  // namespace
 
+const FacePatch& FaceShapes::refined(const TElement* element, int face, int level) const {
+  const auto key = std::make_tuple(element, face, level);
+  auto it = refined_.find(key);
+  if (it == refined_.end()) {
+    const FaceShape& shape = get(element, face);
+    const std::vector<Vec3>& xi = element->natural_nodes();
+    const std::array<Vec3, 4> c = {xi[shape.corners[0]], xi[shape.corners[1]], xi[shape.corners[2]],
+                                   xi[shape.corners[3]]};
+    it = refined_.emplace(key, make_patch(*element, c, shape.curved_segments << level)).first;
+  }
+  return it->second;
+}
+
 FaceShapes::FaceShapes(const std::vector<const TElement*>& formulations) {
   for (const TElement* element : formulations) {
     if (!element || shapes_.count(element)) continue;

@@ -6,6 +6,7 @@
 
 #include <array>
 #include <map>
+#include <tuple>
 #include <utility>
 #include <vector>
 
@@ -35,24 +36,31 @@ struct FaceShape {
   std::vector<int> extra_nodes;
   std::vector<std::array<double, 2>> extra_st;
   FacePatch flat;    // segments = 1
-  FacePatch curved;  // segments = curved_segments
+  FacePatch curved;  // segments = curved_segments (refinement level 0)
   // At least 2 segments per direction (= curved when that has 2 or more): a discrete field gives
   // each grid cell the value of the face node nearest to it in (s, t), so every face node needs
   // cells of its own.
   FacePatch split;
 };
 
+// The finest refinement level of a field's tessellation: curved_segments x 2^level per direction.
+constexpr int kMaxRefinement = 3;
+
 // Face shapes of the formulations of one model, built eagerly for every face of every formulation
-// passed in (a handful), then read-only.
+// passed in (a handful). Finer grids for fields that curve more than the base grid follows
+// (refined()) are made on first use and kept.
 class FaceShapes {
  public:
   explicit FaceShapes(const std::vector<const TElement*>& formulations);
   const FaceShape& get(const TElement* element, int face) const {
     return shapes_.at(element)[static_cast<std::size_t>(face)];
   }
+  // The grid of curved_segments x 2^level (level 1..kMaxRefinement) of a higher-order face.
+  const FacePatch& refined(const TElement* element, int face, int level) const;
 
  private:
   std::map<const TElement*, std::vector<FaceShape>> shapes_;
+  mutable std::map<std::tuple<const TElement*, int, int>, FacePatch> refined_;
 };
 
 }  // namespace styk::render

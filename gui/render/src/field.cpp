@@ -10,6 +10,7 @@
 
 #include "contact_field.hpp"
 #include "styk/core/diagnostics.hpp"
+#include "styk/render/point_field.hpp"
 
 namespace styk::render {
 namespace {
@@ -92,7 +93,8 @@ std::string held_data(const char* q, const TensorArrays& a) {
   if (!a.nodal_II->empty()) held.push_back(std::string("averaging II (") + q + "_nodal_II)");
   if (!a.centroid->empty()) held.push_back(std::string("averaging centroid (") + q + "_centroid)");
   if (!a.points->empty())
-    held.push_back(std::string("integration-point ") + q + " only (not drawable)");
+    held.push_back(std::string("integration-point ") + q +
+                   " (drawn at the points: --ip-values, or \"Values at integration points\")");
   return held.empty() ? std::string("no ") + q + " data at all" : join(held, ", ");
 }
 
@@ -204,6 +206,28 @@ ScalarField scalar_field_quantity(const Model& model, const IncrementResult& inc
 
 }  // namespace
 
+bool ScalarField::carries(int element, int face, const std::vector<int>& nodes,
+                          const Vec3& outward) const {
+  const bool all_defined =
+      std::all_of(nodes.begin(), nodes.end(), [&](int n) { return defined_at(n); });
+  if (!on_surfaces() || !all_defined) return all_defined;
+  const auto faces_the_normals = [&] {
+    if (normals.empty()) return true;
+    Vec3 mean{};
+    for (int n : nodes)
+      for (int k = 0; k < 3; ++k) mean[k] += normals[n][k];
+    const double length = std::sqrt(mean[0] * mean[0] + mean[1] * mean[1] + mean[2] * mean[2]);
+    const double along = mean[0] * outward[0] + mean[1] * outward[1] + mean[2] * outward[2];
+    return length > 0 && along > 0.5 * length;  // within 60 degrees
+  };
+  if (!support.empty()) {
+    if (std::binary_search(support.begin(), support.end(), std::make_pair(element, face)))
+      return true;
+    return node_surfaces && faces_the_normals();
+  }
+  return faces_the_normals();
+}
+
 Averaging parse_averaging(const std::string& text) {
   const std::string t = lower(text);
   if (t == "none" || t == "0") return Averaging::None;
@@ -247,7 +271,7 @@ std::vector<std::string> field_names() {
 }
 
 ScalarField evaluate_field(const Model& model, const IncrementResult& inc, const std::string& name,
-                           Averaging averaging) {
+                           Averaging averaging, const std::string& contact_pair) {
   const std::size_t dot = name.find('.');
   std::string quantity = name.substr(0, dot);
   for (char& c : quantity) c = static_cast<char>(std::toupper(static_cast<unsigned char>(c)));
@@ -258,7 +282,8 @@ ScalarField evaluate_field(const Model& model, const IncrementResult& inc, const
 
   // Contact output (DESIGN "Data flow": pressure, shear, slip, gap, status) at the slave nodes.
   if (is_contact_quantity(quantity))
-    return evaluate_contact_field(model, inc, quantity, suffix, drawable_data(model, inc));
+    return evaluate_contact_field(model, inc, quantity, suffix, drawable_data(model, inc),
+                                  contact_pair);
 
   if (quantity == "U" || quantity == "RF") {
     const int component = vector_component(suffix);
@@ -318,6 +343,50 @@ ColorScale color_scale_for(const ScalarField& field, const std::array<double, 2>
   for (int k = 0; k < count; ++k) scale.palette.push_back(contact_status_color(k));
   scale.labels = field.categories;
   return scale;
+}
+
+PointField evaluate_point_field(const Model& model, const IncrementResult& inc,
+                                const std::string& name) {
+  const std::size_t dot = name.find('.');
+  const std::string quantity = to_upper(name.substr(0, dot));
+  const std::string suffix = dot == std::string::npos ? "" : lower(name.substr(dot + 1));
+  const auto refuse = [&](const std::string& why) {
+    return InputError({}, "field '" + name + "' " + why +
+                              "; values at the integration points: S.* and E.* (components, "
+                              "mises, tresca, p1..p3), HFL.* and ECD.*");
+  };
+  PointField field;
+  field.offset = inc.ip_offset;
+  if (quantity == "S" || quantity == "E") {
+    const TensorFunction f = tensor_function(suffix, quantity == "S");
+    if (!f) throw refuse("is unknown");
+    const std::vector<Tensor6>& data = quantity == "S" ? inc.S : inc.E;
+    if (data.empty()) throw refuse("has no integration-point values in this increment");
+    field.name = quantity + "." + suffix;
+    field.values.resize(data.size());
+    std::transform(data.begin(), data.end(), field.values.begin(), f);
+  } else if (quantity == "HFL" || quantity == "ECD") {
+    const int component = vector_component(suffix);
+    const bool heat = quantity == "HFL";
+    if (component < 0) throw refuse("is unknown");
+    if (inc.scalar.kind !=
+            (heat ? ScalarFieldResult::Kind::Temperature : ScalarFieldResult::Kind::Potential) ||
+        inc.scalar.flux.empty())
+      throw refuse("has no integration-point values in this increment");
+    field.name = quantity + "." + (component == 3 ? "mag" : std::string(1, "xyz"[component]));
+    for (const Vec3& v : inc.scalar.flux)
+      field.values.push_back(component == 3 ? std::sqrt(v[0] * v[0] + v[1] * v[1] + v[2] * v[2])
+                                            : v[component]);
+  } else {
+    throw refuse("has no values at the integration points");
+  }
+  if (field.offset.size() != model.elements.size() + 1 ||
+      field.offset.back() != static_cast<int>(field.values.size()))
+    throw InputError({}, "the integration-point layout (ip_offset) of step " +
+                             std::to_string(inc.step) + " increment " +
+                             std::to_string(inc.increment) + " does not match the model's " +
+                             std::to_string(model.elements.size()) + " elements");
+  return field;
 }
 
 double max_displacement(const IncrementResult& inc, const std::vector<int>& nodes) {

@@ -115,7 +115,7 @@ class LayerTessellator {
     // entirely; the others are neutral grey, or left out on request.
     const ScalarField* field = rq_.field;
     Rgb color = layer_color;
-    if (field && !covers(*field, shape.curved, conn)) {
+    if (field && !carries(*field, sf)) {
       if (rq_.hide_undefined_faces) return;
       field = nullptr;
       color = neutral_face_color();
@@ -125,9 +125,15 @@ class LayerTessellator {
         place_(conn[shape.corners[0]]), place_(conn[shape.corners[1]]),
         place_(conn[shape.corners[2]]), place_(conn[shape.corners[3]])};
     const bool field_varies = field && field->location != FieldLocation::Element;
-    const FacePatch& patch = discrete                                          ? shape.split
-                             : needs_curved(shape, conn, corner, field_varies) ? shape.curved
-                                                                               : shape.flat;
+    const FacePatch* chosen = discrete                                          ? &shape.split
+                              : needs_curved(shape, conn, corner, field_varies) ? &shape.curved
+                                                                                : &shape.flat;
+    if (field_varies && !discrete && shape.curved_segments > 1 && rq_.refine) {
+      const int level = refinement_level(shape, sf, conn, *field);
+      if (level > 0)
+        chosen = &skin_.shapes().refined(skin_.formulations()[sf.element], sf.face, level);
+    }
+    const FacePatch& patch = *chosen;
 
     const std::size_t count = patch.nodes.size();
     local_x_.resize(count);
@@ -239,12 +245,51 @@ class LayerTessellator {
     return false;
   }
 
-  // Whether every node of the face has a value of the field.
-  static bool covers(const ScalarField& field, const FacePatch& patch, const int* conn) {
-    if (field.defined.empty()) return true;
-    for (int a : patch.nodes)
-      if (!field.defined[conn[a]]) return false;
-    return true;
+  // Whether the field colours this face (contact output: the faces of the slave surfaces).
+  bool carries(const ScalarField& field, const SkinFace& sf) const {
+    if (field.defined.empty() && !field.on_surfaces()) return true;
+    return face_carries(skin_, field, sf);
+  }
+
+  // How much finer than its base grid a higher-order face is drawn for the field, so that the
+  // piecewise-linear drawing follows the field's interpolation (the face's own shape functions)
+  // to 1/128 of a band (1/512 of the scale for smooth colours): band limits then run where the
+  // field puts them, without teeth at the grid's diagonals. The drawing's error on the base grid is
+  // measured where it is largest, at the cells' centres and edge midpoints (the field there, from
+  // the shape functions, against the mean of the two grid values the triangles interpolate); it
+  // falls fourfold with each halving of the cells.
+  int refinement_level(const FaceShape& shape, const SkinFace& sf, const int* conn,
+                       const ScalarField& field) const {
+    const ColorScale& scale = *rq_.colors;
+    const double tolerance =
+        (scale.max - scale.min) / (scale.smooth ? 512.0 : 128.0 * std::max(1, scale.bands));
+    if (!(tolerance > 0)) return 0;
+    const TElement* formulation = skin_.formulations()[sf.element];
+    const FacePatch& fine = skin_.shapes().refined(formulation, sf.face, 1);
+    const int first = skin_.model().elements[sf.element].first_node;
+    const std::size_t count = fine.nodes.size();
+    fine_values_.assign(static_cast<std::size_t>(fine.points()), 0.0);
+    for (std::size_t a = 0; a < count; ++a) {
+      const int local = fine.nodes[a];
+      const double v = field.location == FieldLocation::Node ? field.values[conn[local]]
+                                                             : field.values[first + local];
+      for (int p = 0; p < fine.points(); ++p) fine_values_[p] += fine.N[p * count + a] * v;
+    }
+    const int m = fine.segments, n = shape.curved_segments;
+    const auto at = [&](int i, int j) { return fine_values_[std::size_t(j) * (m + 1) + i]; };
+    double error = 0.0;
+    for (int j = 0; j < n; ++j)
+      for (int i = 0; i < n; ++i) {
+        const int x = 2 * i, y = 2 * j;
+        error = std::max({error, std::abs(at(x + 1, y + 1) - 0.5 * (at(x, y) + at(x + 2, y + 2))),
+                          std::abs(at(x + 1, y) - 0.5 * (at(x, y) + at(x + 2, y))),
+                          std::abs(at(x, y + 1) - 0.5 * (at(x, y) + at(x, y + 2))),
+                          std::abs(at(x + 2, y + 1) - 0.5 * (at(x + 2, y) + at(x + 2, y + 2))),
+                          std::abs(at(x + 1, y + 2) - 0.5 * (at(x, y + 2) + at(x + 2, y + 2)))});
+      }
+    int level = 0;
+    while (level < kMaxRefinement && error > tolerance) error /= 4.0, ++level;
+    return level;
   }
 
   // The value of the face node nearest to (s, t) (corners at the unit square's corners, the other
@@ -269,6 +314,7 @@ class LayerTessellator {
   FrameGeometry& g_;
   std::vector<V3> local_x_;
   std::vector<double> local_v_;
+  mutable std::vector<double> fine_values_;  // the field on the refined grid (refinement_level)
   bool oriented_ = true;
 };
 
@@ -414,6 +460,32 @@ FrameGeometry build_geometry(const SkinModel& skin, const GeometryRequest& rq) {
   grow(g, g.bars);
   if (g.lower[0] > g.upper[0]) g.lower = g.upper = {0, 0, 0};
   return g;
+}
+
+bool face_carries(const SkinModel& skin, const ScalarField& field, const SkinFace& face) {
+  const Model& model = skin.model();
+  const int* conn = model.element_nodes(face.element);
+  std::vector<int> nodes;
+  for (int a : skin.face_def(face.element, face.face).nodes) nodes.push_back(conn[a]);
+  if (!std::all_of(nodes.begin(), nodes.end(), [&](int n) { return field.defined_at(n); }))
+    return false;
+  // The corners' normal, turned away from the element's centre.
+  const FaceShape& shape = skin.shapes().get(skin.formulations()[face.element], face.face);
+  const auto at = [&](int local) {
+    const Vec3& x = model.coords[conn[local]];
+    return V3{x[0], x[1], x[2]};
+  };
+  const V3 c0 = at(shape.corners[0]), c1 = at(shape.corners[1]), c2 = at(shape.corners[2]),
+           c3 = at(shape.corners[3]);
+  V3 normal = cross(c2 - c0, c3 - c1);
+  V3 centre;
+  const int count = model.elements[face.element].node_count;
+  for (int k = 0; k < count; ++k) centre = centre + (1.0 / count) * at(k);
+  if (dot(normal, 0.25 * (c0 + c1 + c2 + c3) - centre) < 0) normal = -1.0 * normal;
+  const double length = norm(normal);
+  const Vec3 outward =
+      length > 0 ? Vec3{normal.x / length, normal.y / length, normal.z / length} : Vec3{0, 0, 0};
+  return field.carries(face.element, face.face, nodes, outward);
 }
 
 std::array<double, 2> field_range(const SkinModel& skin, const ScalarField& field) {

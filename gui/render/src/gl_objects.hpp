@@ -1,6 +1,6 @@
-// Private: owners of GL object names (buffers, vertex arrays, programs). Each deletes its name
-// through the renderer's own function table when it dies, so the table must outlive it and the
-// context must be current then (GlRenderer's contract).
+// Private: owners of GL object names (buffers, vertex arrays, programs, textures, framebuffers,
+// renderbuffers). Each deletes its name through the renderer's own function table when it dies,
+// so the table must outlive it and the context must be current then (GlRenderer's contract).
 #pragma once
 
 #include <glad/gl.h>
@@ -18,6 +18,15 @@ struct GlVertexArrayKind {
 };
 struct GlProgramKind {
   static void destroy(const GladGLContext& gl, GLuint name) { gl.DeleteProgram(name); }
+};
+struct GlTextureKind {
+  static void destroy(const GladGLContext& gl, GLuint name) { gl.DeleteTextures(1, &name); }
+};
+struct GlFramebufferKind {
+  static void destroy(const GladGLContext& gl, GLuint name) { gl.DeleteFramebuffers(1, &name); }
+};
+struct GlRenderbufferKind {
+  static void destroy(const GladGLContext& gl, GLuint name) { gl.DeleteRenderbuffers(1, &name); }
 };
 
 // A GL object name owned like a unique_ptr: movable, not copyable, 0 = none.
@@ -52,6 +61,9 @@ class GlObject {
 using GlBuffer = GlObject<GlBufferKind>;
 using GlVertexArray = GlObject<GlVertexArrayKind>;
 using GlProgram = GlObject<GlProgramKind>;
+using GlTexture = GlObject<GlTextureKind>;
+using GlFramebuffer = GlObject<GlFramebufferKind>;
+using GlRenderbuffer = GlObject<GlRenderbufferKind>;
 
 inline GlBuffer make_buffer(const GladGLContext& gl) {
   GLuint name = 0;
@@ -63,6 +75,24 @@ inline GlVertexArray make_vertex_array(const GladGLContext& gl) {
   GLuint name = 0;
   gl.GenVertexArrays(1, &name);
   return GlVertexArray(gl, name);
+}
+
+inline GlTexture make_texture(const GladGLContext& gl) {
+  GLuint name = 0;
+  gl.GenTextures(1, &name);
+  return GlTexture(gl, name);
+}
+
+inline GlFramebuffer make_framebuffer(const GladGLContext& gl) {
+  GLuint name = 0;
+  gl.GenFramebuffers(1, &name);
+  return GlFramebuffer(gl, name);
+}
+
+inline GlRenderbuffer make_renderbuffer(const GladGLContext& gl) {
+  GLuint name = 0;
+  gl.GenRenderbuffers(1, &name);
+  return GlRenderbuffer(gl, name);
 }
 
 }  // namespace styk::render

@@ -9,7 +9,11 @@
 #include <string>
 
 #include "gl_objects.hpp"
+#include "gl_program.hpp"
+#include "gl_targets.hpp"
+#include "gl_text.hpp"
 #include "gpu_geometry.hpp"
+#include "label_placement.hpp"
 #include "shaders.hpp"
 
 namespace styk::render {
@@ -20,50 +24,11 @@ GLADapiproc load_through(void* user, const char* name) {
   return reinterpret_cast<GLADapiproc>(loader(name));
 }
 
-GLuint compile(const GladGLContext& gl, GLenum kind, const char* source) {
-  const GLuint shader = gl.CreateShader(kind);
-  gl.ShaderSource(shader, 1, &source, nullptr);
-  gl.CompileShader(shader);
-  GLint ok = 0;
-  gl.GetShaderiv(shader, GL_COMPILE_STATUS, &ok);
-  if (!ok) {
-    char log[2048] = {};
-    gl.GetShaderInfoLog(shader, sizeof log, nullptr, log);
-    gl.DeleteShader(shader);
-    throw std::runtime_error(std::string("renderer: shader does not compile: ") + log);
-  }
-  return shader;
-}
-
-// `geometry` may be null: a program of a vertex and a fragment stage.
-GlProgram link(const GladGLContext& gl, const char* vertex, const char* fragment,
-               const char* geometry = nullptr) {
-  const GLuint vs = compile(gl, GL_VERTEX_SHADER, vertex);
-  const GLuint fs = compile(gl, GL_FRAGMENT_SHADER, fragment);
-  const GLuint gs = geometry ? compile(gl, GL_GEOMETRY_SHADER, geometry) : 0;
-  GlProgram program(gl, gl.CreateProgram());
-  gl.AttachShader(program.get(), vs);
-  gl.AttachShader(program.get(), fs);
-  if (gs) gl.AttachShader(program.get(), gs);
-  gl.LinkProgram(program.get());
-  gl.DeleteShader(vs);
-  gl.DeleteShader(fs);
-  if (gs) gl.DeleteShader(gs);
-  GLint ok = 0;
-  gl.GetProgramiv(program.get(), GL_LINK_STATUS, &ok);
-  if (!ok) {
-    char log[2048] = {};
-    gl.GetProgramInfoLog(program.get(), sizeof log, nullptr, log);
-    throw std::runtime_error(std::string("renderer: shader program does not link: ") + log);
-  }
-  return program;
-}
-
 // The uniforms of the scene and bar programs, looked up once after linking (-1 for those a
 // program does not have: setting them does nothing).
 struct SceneUniforms {
   GLint view, projection, point_size, smooth, bands, palette;
-  GLint lit, use_field, use_override, override_color, line_shade;
+  GLint lit, use_field, use_override, override_color, line_shade, round_points;
   GLint viewport, line_width;  // bar program only
 
   SceneUniforms(const GladGLContext& gl, GLuint p)
@@ -78,6 +43,7 @@ struct SceneUniforms {
         use_override(gl.GetUniformLocation(p, "u_use_override")),
         override_color(gl.GetUniformLocation(p, "u_override")),
         line_shade(gl.GetUniformLocation(p, "u_line_shade")),
+        round_points(gl.GetUniformLocation(p, "u_round_points")),
         viewport(gl.GetUniformLocation(p, "u_viewport")),
         line_width(gl.GetUniformLocation(p, "u_line_width")) {}
 };
@@ -105,11 +71,16 @@ struct GlRenderer::Impl {
   std::optional<GpuGeometry> geometry;  // the retained vertex arrays of the model
   GlVertexArray overlay_array;
   GlBuffer overlay_buffer;
+  std::optional<GlText> text;
+  std::optional<OffscreenTargets> targets;
 
   void init() {
-    scene_program = link(gl, shaders::kSceneVertex, shaders::kSceneFragment);
-    overlay_program = link(gl, shaders::kOverlayVertex, shaders::kOverlayFragment);
-    bar_program = link(gl, shaders::kBarVertex, shaders::kSceneFragment, shaders::kBarGeometry);
+    scene_program = link_program(gl, shaders::kSceneVertex, shaders::kSceneFragment);
+    overlay_program = link_program(gl, shaders::kOverlayVertex, shaders::kOverlayFragment);
+    bar_program =
+        link_program(gl, shaders::kBarVertex, shaders::kSceneFragment, shaders::kBarGeometry);
+    text.emplace(gl);
+    targets.emplace(gl);
     scene_uniforms.emplace(gl, scene_program.get());
     bar_uniforms.emplace(gl, bar_program.get());
     overlay_size = gl.GetUniformLocation(overlay_program.get(), "u_size");
@@ -134,6 +105,19 @@ struct GlRenderer::Impl {
     gl.Uniform1i(u.use_override, style.override_color);
     gl.Uniform3f(u.override_color, style.color.r, style.color.g, style.color.b);
     gl.Uniform1f(u.line_shade, style.line_shade);
+    gl.Uniform1i(u.round_points, 0);
+  }
+
+  // Integration points as round dots of their value's colour, depth-tested among themselves and
+  // against the faces drawn (the see-through modes draw none).
+  void draw_ip_points(const FrameView& f) {
+    if (geometry->empty(Primitives::IpPoints)) return;
+    set_style(*scene_uniforms, Style{false, true, false, {}, 1.0f});
+    gl.Uniform1i(scene_uniforms->round_points, 1);
+    gl.Uniform1f(scene_uniforms->point_size, f.ip_point_size);
+    geometry->draw(Primitives::IpPoints);
+    gl.Uniform1i(scene_uniforms->round_points, 0);
+    gl.Uniform1f(scene_uniforms->point_size, f.point_size);
   }
 
   void draw_lines(Primitives lines, const Style& style) {
@@ -225,10 +209,20 @@ struct GlRenderer::Impl {
     // in the contour colours.
     if (f.mode != DisplayMode::Points) draw_bars(f, Style{false, field, false, {}, 1.0f});
     draw_lines(Primitives::Outline, Style{false, false, true, kOutline, 1.0f});
+    draw_ip_points(f);
   }
 
-  void draw_overlay(const FrameView& f) {
-    const std::vector<OverlayVertex>& v = f.overlay.triangles;
+  // Shapes, then text blended over them; then the scene labels whose anchors the depth shows.
+  void draw_overlay(const FrameView& f, const std::vector<float>* depth) {
+    draw_triangles(f, f.overlay.triangles);
+    text->draw(f.overlay.glyphs, f.overlay.atlas, f.width, f.height);
+    if (!depth) return;
+    const PlacedLabels labels = place_labels(f, *depth);
+    draw_triangles(f, labels.markers);
+    text->draw(labels.glyphs, f.overlay.atlas, f.width, f.height);
+  }
+
+  void draw_triangles(const FrameView& f, const std::vector<OverlayVertex>& v) {
     if (v.empty()) return;
     gl.Viewport(0, 0, f.width, f.height);
     gl.Disable(GL_DEPTH_TEST);
@@ -259,15 +253,37 @@ void GlRenderer::set_geometry(const FrameGeometry& geometry) { impl_->geometry->
 
 void GlRenderer::draw_view(const FrameView& view) {
   Impl& r = *impl_;
-  r.gl.Disable(GL_MULTISAMPLE);  // deterministic pixels: no multisampling, no blending
+  // The caller's framebuffer (0 for OSMesa, the widget's for Qt) receives the picture.
+  GLint bound = 0;
+  r.gl.GetIntegerv(GL_DRAW_FRAMEBUFFER_BINDING, &bound);
+  const auto target = static_cast<GLuint>(bound);
+  // Multisampling, or scene labels (which need the depth of the drawn picture), draw the scene
+  // off screen first; otherwise it goes straight into the caller's framebuffer.
+  const bool labels = !view.overlay.labels.empty();
+  const bool offscreen = view.samples > 1 || labels;
+  if (offscreen) {
+    r.targets->prepare(view.width, view.height, view.samples);
+    r.targets->bind_scene();
+  }
   r.gl.Disable(GL_BLEND);
   r.gl.Viewport(0, 0, view.width, view.height);
   r.gl.ClearColor(kBackground.r, kBackground.g, kBackground.b, 1.0f);
   r.gl.ClearDepth(1.0);
   r.gl.Clear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT);
   r.gl.Enable(GL_PROGRAM_POINT_SIZE);
+  if (offscreen && r.targets->samples() > 1)
+    r.gl.Enable(GL_MULTISAMPLE);
+  else
+    r.gl.Disable(GL_MULTISAMPLE);
   r.draw_scene(view);
-  r.draw_overlay(view);
+  r.gl.Disable(GL_MULTISAMPLE);
+  std::vector<float> depth;
+  if (offscreen) {
+    r.targets->resolve();
+    if (labels) depth = r.targets->read_depth(view.overlay.model, view.height);
+    r.targets->copy_to(target);
+  }
+  r.draw_overlay(view, labels ? &depth : nullptr);
   r.gl.BindVertexArray(0);
 }
 

@@ -60,6 +60,7 @@ void GpuGeometry::upload(const FrameGeometry& g) {
   put(Primitives::Outline, g.outline);
   put(Primitives::Points, g.points);
   put(Primitives::Bars, g.bars);
+  put(Primitives::IpPoints, g.ip_points);
   List& faces = lists_[index(Primitives::Faces)];
   gl_.BindVertexArray(faces.vertex_array.get());
   fill(gl_, GL_ELEMENT_ARRAY_BUFFER, g.triangles);
@@ -77,6 +78,7 @@ void GpuGeometry::draw(Primitives which) const {
       gl_.DrawElements(GL_TRIANGLES, list.count, GL_UNSIGNED_INT, nullptr);
       break;
     case Primitives::Points:
+    case Primitives::IpPoints:
       gl_.DrawArrays(GL_POINTS, 0, list.count);
       break;
     default:

@@ -1,7 +1,8 @@
 // Private: the GL copy of a FrameGeometry. Each primitive list (faces with their index buffer,
-// mesh edges, feature lines, undeformed outline, node points, line elements) has its own vertex
-// array object and buffers, made once; upload() replaces their contents, draw() only binds and
-// draws. This is what lets the desktop view orbit without sending the model to the GL again.
+// mesh edges, feature lines, undeformed outline, node points, line elements, integration points)
+// has its own vertex array object and buffers, made once; upload() replaces their contents, draw()
+// only binds and draws. This is what lets the desktop view orbit without sending the model to the
+// GL again.
 #pragma once
 
 #include <array>
@@ -11,7 +12,7 @@
 
 namespace styk::render {
 
-enum class Primitives { Faces, Edges, Features, Outline, Points, Bars };
+enum class Primitives { Faces, Edges, Features, Outline, Points, Bars, IpPoints };
 
 class GpuGeometry {
  public:
@@ -37,7 +38,7 @@ class GpuGeometry {
   static std::size_t index(Primitives which) { return static_cast<std::size_t>(which); }
 
   const GladGLContext& gl_;
-  std::array<List, 6> lists_;
+  std::array<List, 7> lists_;
   bool closed_ = false;
 };
 

@@ -8,6 +8,7 @@
 #include <limits>
 
 #include "styk/core/diagnostics.hpp"
+#include "styk/render/visibility.hpp"
 
 namespace styk::render {
 namespace {
@@ -92,43 +93,20 @@ DeformSpec parse_deform(const std::string& text) {
 RenderJob::RenderJob(const Model& model, const ElementRegistry& registry,
                      const IncrementResult* increment, RenderOptions options)
     : model_(model), increment_(increment), options_(std::move(options)) {
-  if (options_.width < 16 || options_.height < 16 || options_.width > 16384 ||
-      options_.height > 16384)
-    throw InputError({}, "picture size " + std::to_string(options_.width) + "x" +
-                             std::to_string(options_.height) + " is outside 16..16384 pixels");
-  check_band_count(options_.bands);
-  check_view_name(options_.view.name);
-  if (!(options_.view.zoom > 0)) throw InputError({}, "zoom must be > 0");
-
+  check_options();
+  typeface_ = std::make_unique<Typeface>();
   skin_ =
       std::make_unique<SkinModel>(model, registry, make_layers(model, options_), options_.filter);
   if (skin_->visible_nodes().empty())
     throw InputError({},
                      "nothing to draw: the shown layers and the element filter select no element");
-
-  if (!options_.field.empty()) {
-    if (!increment_)
-      throw InputError({}, "field '" + options_.field +
-                               "' needs a results file; this input is a "
-                               "mesh only");
-    field_ = std::make_unique<ScalarField>(
-        evaluate_field(model, *increment_, options_.field, options_.averaging));
-    if (!field_->defined.empty()) {
-      const std::vector<int> shown = skin_->visible_nodes();
-      if (std::none_of(shown.begin(), shown.end(), [&](int n) { return field_->defined_at(n); }))
-        throw InputError({}, "field '" + field_->name +
-                                 "' has no value at the nodes shown (for contact output: the "
-                                 "slave surfaces are hidden or filtered out)");
-    }
-    const std::array<double, 2> range = field_range(*skin_, *field_);
-    colors_ = color_scale_for(*field_, range, options_.bands, options_.smooth);
-  }
+  evaluate_fields();
 
   // A steady heat / electric-potential increment has no displacements: the automatic default
   // draws it undeformed (an explicit factor still asks for U and is refused below).
   const bool scalar_only = increment_ && increment_->U.empty() &&
                            increment_->scalar.kind != ScalarFieldResult::Kind::None;
-  if (options_.deform.kind != DeformSpec::Kind::None &&
+  if (options_.deform.kind != DeformSpec::Kind::None && !options_.unroll &&
       !(scalar_only && options_.deform.kind == DeformSpec::Kind::Auto)) {
     if (!increment_)
       throw InputError({}, "a deformed shape needs a results file; this input is a mesh only");
@@ -143,25 +121,115 @@ RenderJob::RenderJob(const Model& model, const ElementRegistry& registry,
       scale_ = largest > 0 ? options_.deform.auto_fraction * skin_->size() / largest : 0.0;
     }
   }
-
-  OverlayContent content;
-  content.title_lines = title_lines();
-  if (field_) {
-    content.colors = &colors_;
-    content.legend_heading =
-        field_->name +
-        (field_->uses_averaging ? " (" + averaging_name(options_.averaging) + ")" : "");
+  if (options_.unroll) {
+    build_map();
+    return;
   }
-  overlay_ = build_overlay(content, options_.width, options_.height);
+  field_faces_only_ = options_.field_faces == FieldFaces::Only && field_ && field_->on_surfaces();
+  if (options_.field_faces == FieldFaces::Only && field_ && !field_->defined.empty())
+    field_faces_only_ = true;
+  choose_field_faces();
+}
 
-  // One camera for every fraction of the deformation: fit the undeformed and the full shape.
+RenderJob::~RenderJob() = default;
+
+void RenderJob::check_options() const {
+  const RenderOptions& o = options_;
+  if (o.width < 16 || o.height < 16 || o.width > 16384 || o.height > 16384)
+    throw InputError({}, "picture size " + std::to_string(o.width) + "x" +
+                             std::to_string(o.height) + " is outside 16..16384 pixels");
+  check_band_count(o.bands);
+  check_view_name(o.view.name);
+  if (!(o.view.zoom > 0)) throw InputError({}, "zoom must be > 0");
+  if (o.samples < 1 || o.samples > 16)
+    throw InputError({}, "samples per pixel must be 1..16, not " + std::to_string(o.samples));
+  if (o.range && !(std::isfinite((*o.range)[0]) && std::isfinite((*o.range)[1]) &&
+                   (*o.range)[0] < (*o.range)[1]))
+    throw InputError({}, "the colour range needs MIN < MAX");
+  if ((o.range || o.ip_values || o.unroll || !o.contact_pair.empty()) && o.field.empty())
+    throw InputError({}, std::string(o.range       ? "--range"
+                                     : o.ip_values ? "--ip-values"
+                                     : o.unroll    ? "--unroll"
+                                                   : "--contact-pair") +
+                             " needs a field (--field)");
+  if (o.unroll && o.ip_values)
+    throw InputError({}, "--ip-values draws points in the 3D view, not on the unrolled map");
+  if (o.unroll && (o.labels.nodes || o.labels.elements))
+    throw InputError({}, "--labels are drawn in the 3D view, not on the unrolled map");
+  if (o.unroll && o.mode != DisplayMode::Shaded && o.mode != DisplayMode::ShadedEdges)
+    throw InputError({}, "the unrolled map is drawn shaded (--mode shaded or shaded-edges), not " +
+                             display_mode_name(o.mode));
+  if (o.unroll_axis && !o.unroll) throw InputError({}, "--unroll-axis needs --unroll");
+}
+
+void RenderJob::evaluate_fields() {
+  if (options_.field.empty()) return;
+  if (!increment_)
+    throw InputError({}, "field '" + options_.field +
+                             "' needs a results file; this input is a "
+                             "mesh only");
+  std::array<double, 2> range{};
+  if (options_.ip_values) {
+    if (!options_.contact_pair.empty())
+      throw InputError({}, "--contact-pair applies to contact fields, not to --ip-values");
+    point_field_ =
+        std::make_unique<PointField>(evaluate_point_field(model_, *increment_, options_.field));
+    range = point_field_range(*skin_, *point_field_);
+    colors_ = ColorScale{range[0], range[1], options_.bands, options_.smooth};
+  } else {
+    field_ = std::make_unique<ScalarField>(evaluate_field(
+        model_, *increment_, options_.field, options_.averaging, options_.contact_pair));
+    if (!options_.contact_pair.empty() && field_->defined.empty())
+      throw InputError({},
+                       "--contact-pair applies to contact fields (CPRESS, CSHEAR, CSLIP, "
+                       "CGAP, CSTATUS), not to " +
+                           field_->name);
+    if (!field_->defined.empty()) {
+      const std::vector<int> shown = skin_->visible_nodes();
+      if (std::none_of(shown.begin(), shown.end(), [&](int n) { return field_->defined_at(n); }))
+        throw InputError({}, "field '" + field_->name +
+                                 "' has no value at the nodes shown (for contact output: the "
+                                 "slave surfaces are hidden or filtered out)");
+    }
+    if (options_.unroll && field_->defined.empty())
+      throw InputError({},
+                       "--unroll lays out a field that lives on surfaces (contact output: "
+                       "CPRESS, CSHEAR, CSLIP, CGAP, CSTATUS), not " +
+                           field_->name);
+    range = field_range(*skin_, *field_);
+    colors_ = color_scale_for(*field_, range, options_.bands, options_.smooth);
+  }
+  field_min_max_ = range;
+  if (options_.range && colors_.labels.empty()) {
+    colors_.min = (*options_.range)[0];
+    colors_.max = (*options_.range)[1];
+  }
+}
+
+GeometryRequest RenderJob::request(double fraction) const {
+  GeometryRequest request;
+  const double scale = fraction * scale_;
+  if (scale > 0) {
+    request.displacement = &increment_->U;
+    request.scale = scale;
+    request.outline = options_.undeformed_outline;
+  }
+  request.field = field_.get();
+  request.colors = field_ ? &colors_ : nullptr;
+  request.hide_undefined_faces = field_faces_only_;
+  request.points = options_.mode == DisplayMode::Points;
+  return request;
+}
+
+// The camera for the model area: it fits the undeformed and the fully deformed shape of the
+// visible nodes (only those where the field has a value when only its faces are drawn).
+Camera RenderJob::fit(const PixelRect& area) const {
   const float big = std::numeric_limits<float>::max();
   std::array<float, 3> lo{big, big, big}, hi{-big, -big, -big};
   const Vec3 c = skin_->centre();
-  const bool fit_field_faces = options_.only_field_faces && field_ && !field_->defined.empty();
   for (int n : skin_->visible_nodes()) {
-    if (fit_field_faces && !field_->defined_at(n)) continue;  // only those faces are drawn
-    const Vec3& x = model.coords[n];
+    if (field_faces_only_ && !field_->defined_at(n)) continue;  // only those faces are drawn
+    const Vec3& x = model_.coords[n];
     grow_bounds(lo, hi, Vec3{x[0] - c[0], x[1] - c[1], x[2] - c[2]});
     if (scale_ > 0) {
       const Vec3& u = increment_->U[n];
@@ -170,11 +238,65 @@ RenderJob::RenderJob(const Model& model, const ElementRegistry& registry,
                        x[2] - c[2] + scale_ * u[2]});
     }
   }
-  camera_ = fit_camera(options_.view, lo, hi,
-                       double(overlay_.model.width) / double(overlay_.model.height));
+  return fit_camera(options_.view, lo, hi, double(area.width) / double(area.height));
 }
 
-RenderJob::~RenderJob() = default;
+// With FieldFaces::Auto, a field on surfaces whose faces cannot be seen in this view (under the
+// other body of a fit) is drawn on its faces alone, with a note in the title block.
+void RenderJob::choose_field_faces() {
+  OverlayContent content;
+  const auto overlay = [&] {
+    content.title_lines = title_lines();
+    if (field_ || point_field_) {
+      content.colors = &colors_;
+      content.legend_heading = legend_heading();
+    }
+    content.label_glyphs = options_.labels.nodes || options_.labels.elements;
+    overlay_ = build_overlay(content, options_.width, options_.height, *typeface_);
+    camera_ = fit(overlay_.model);
+  };
+  overlay();
+  if (options_.field_faces != FieldFaces::Auto || !field_ || !field_->on_surfaces()) return;
+  const FrameGeometry whole = build_geometry(*skin_, request(1.0));
+  const double seen =
+      field_faces_seen(whole, camera_, double(overlay_.model.width) / overlay_.model.height);
+  if (seen >= kHiddenFieldFaces) return;
+  field_faces_only_ = true;
+  char buffer[160];
+  std::snprintf(buffer, sizeof buffer, "%s on its faces alone: hidden in this view (%.0f %% seen)",
+                field_->name.c_str(), 100.0 * seen);
+  note_ = buffer;
+  overlay();
+}
+
+std::string RenderJob::legend_heading() const {
+  if (point_field_) return point_field_->name + " (integration points)";
+  return field_->name +
+         (field_->uses_averaging ? " (" + averaging_name(options_.averaging) + ")" : "");
+}
+
+void RenderJob::build_map() {
+  GeometryRequest faces_request;
+  faces_request.field = field_.get();
+  faces_request.colors = &colors_;
+  faces_request.hide_undefined_faces = true;
+  faces_request.points = false;
+  const FrameGeometry faces = build_geometry(*skin_, faces_request);
+  unrolled_ = fit_unrolled_surface(faces, skin_->centre(), options_.unroll_axis);
+  map_ = unroll_geometry(faces, skin_->centre(), *unrolled_);
+  field_faces_only_ = true;
+  OverlayContent content;
+  content.title_lines = title_lines();
+  content.colors = &colors_;
+  content.legend_heading = legend_heading();
+  overlay_ = build_overlay(content, options_.width, options_.height, *typeface_);
+  reserve_map_area(overlay_, *typeface_, *unrolled_, options_.height);
+  ViewSpec view;
+  view.name = "+z";
+  camera_ = fit_camera(view, map_.lower, map_.upper,
+                       double(overlay_.model.width) / double(overlay_.model.height));
+  add_map_axes(overlay_, *typeface_, camera_, *unrolled_, options_.height);
+}
 
 std::vector<std::string> RenderJob::title_lines() const {
   std::vector<std::string> lines;
@@ -189,6 +311,8 @@ std::vector<std::string> RenderJob::title_lines() const {
                   increment_->total_time);
     lines.push_back(buffer);
   }
+  const std::string pair =
+      options_.contact_pair.empty() ? "" : "  Pair: " + to_upper(options_.contact_pair);
   if (field_ && !field_->categories.empty()) {
     // A discrete field: how many visible nodes are in each category.
     std::vector<int> counts(field_->categories.size(), 0);
@@ -197,25 +321,49 @@ std::vector<std::string> RenderJob::title_lines() const {
         const auto k = static_cast<std::size_t>(field_->values[n]);
         if (k < counts.size()) ++counts[k];
       }
-    std::string line = "Field: " + field_->name + "  Nodes:";
+    std::string line = "Field: " + field_->name + pair + "  Nodes:";
     for (std::size_t k = 0; k < counts.size(); ++k)
       line += " " + field_->categories[k] + " " + std::to_string(counts[k]);
     lines.push_back(line);
-  } else if (field_) {
-    lines.push_back("Field: " + field_->name +
-                    (field_->uses_averaging ? "  Averaging: " + averaging_name(options_.averaging)
-                                            : std::string()) +
-                    "  Min: " + format_legend_value(colors_.min) +
-                    "  Max: " + format_legend_value(colors_.max));
+  } else if (field_ || point_field_) {
+    const NumberFormat format = number_format(colors_);
+    const std::string where =
+        point_field_ ? "  at " + std::to_string(visible_point_count(*skin_, *point_field_)) +
+                           " integration points"
+        : field_->uses_averaging ? "  Averaging: " + averaging_name(options_.averaging)
+                                 : std::string();
+    lines.push_back("Field: " + (point_field_ ? point_field_->name : field_->name) + where + pair +
+                    "  Min: " + format(field_min_max_[0]) + "  Max: " + format(field_min_max_[1]) +
+                    (options_.range
+                         ? "  (scale " + format(colors_.min) + " to " + format(colors_.max) + ")"
+                         : std::string()));
   } else {
     lines.push_back("Mesh: " + std::to_string(model_.elements.size()) + " elements, " +
                     std::to_string(model_.coords.size()) + " nodes");
   }
-  if (options_.deform.kind != DeformSpec::Kind::None)
+  if (unrolled_) {
+    char buffer[200];
+    const UnrolledSurface& u = *unrolled_;
+    if (u.kind == UnrolledSurface::Kind::Revolved)
+      std::snprintf(buffer, sizeof buffer,
+                    "Unrolled about the axis through (%.4g, %.4g, %.4g) along (%.4g, %.4g, %.4g)"
+                    "%s, radius %.4g",
+                    u.axis.point[0], u.axis.point[1], u.axis.point[2], u.axis.direction[0],
+                    u.axis.direction[1], u.axis.direction[2], u.axis_given ? " (given)" : "",
+                    u.radius);
+    else
+      std::snprintf(buffer, sizeof buffer,
+                    "Flat: the plane through (%.4g, %.4g, %.4g), normal (%.4g, %.4g, %.4g)",
+                    u.axis.point[0], u.axis.point[1], u.axis.point[2], u.axis.direction[0],
+                    u.axis.direction[1], u.axis.direction[2]);
+    lines.push_back(buffer);
+  } else if (options_.deform.kind != DeformSpec::Kind::None && scale_ > 0) {
     lines.push_back("Deformation scale: " + format_legend_value(scale_) +
                     (options_.deform.kind == DeformSpec::Kind::Auto ? " (auto)" : ""));
-  else if (increment_)
+  } else if (increment_) {
     lines.push_back("Undeformed shape");
+  }
+  if (!note_.empty()) lines.push_back(note_);
   return lines;
 }
 
@@ -224,24 +372,29 @@ Frame RenderJob::frame(double fraction) const {
   frame.width = options_.width;
   frame.height = options_.height;
   frame.mode = options_.mode;
-  GeometryRequest request;
-  const double scale = fraction * scale_;
-  if (scale > 0) {
-    request.displacement = &increment_->U;
-    request.scale = scale;
-    request.outline = options_.undeformed_outline;
-  }
-  request.field = field_.get();
-  request.colors = field_ ? &colors_ : nullptr;
-  request.hide_undefined_faces = options_.only_field_faces;
-  request.points = options_.mode == DisplayMode::Points;
-  frame.geometry = build_geometry(*skin_, request);
+  frame.samples = options_.samples;
   frame.camera = camera_;
   frame.overlay = overlay_;
-  frame.has_field = static_cast<bool>(field_);
+  frame.has_field = has_field();
   frame.colors = colors_;
-  frame.point_size = float(std::max(2, text_scale_for(options_.height) + 1));
-  frame.bar_width = frame.point_size + 1.0f;  // a bar stands out from the 1 px mesh lines
+  const float unit = float(std::max(2, pixel_scale_for(options_.height) + 1));
+  frame.bar_width = unit + 1.0f;  // a bar stands out from the 1 px mesh lines
+  // Multisampled points spread over the pixels they touch: one pixel more keeps them dark.
+  frame.point_size = unit + (options_.samples > 1 ? 1.0f : 0.0f);
+  frame.ip_point_size = float(3 * pixel_scale_for(options_.height) + 4);
+  if (unrolled_) {
+    frame.geometry = map_;
+    return frame;
+  }
+  const GeometryRequest rq = request(fraction);
+  frame.geometry = build_geometry(*skin_, rq);
+  if (point_field_) {
+    // The points are seen through the mesh: its edges only, in the layer colours.
+    if (frame.mode != DisplayMode::Points) frame.mode = DisplayMode::Wireframe;
+    add_integration_points(*skin_, *point_field_, colors_, rq, frame.geometry);
+  }
+  if (options_.labels.nodes || options_.labels.elements)
+    frame.overlay.labels = scene_labels(*skin_, rq, camera_, options_.labels);
   return frame;
 }
 

@@ -1,4 +1,4 @@
-// Private: GLSL 3.30 core sources of the scene and overlay programs.
+// Private: GLSL 3.30 core sources of the scene, bar, overlay and text programs.
 #pragma once
 
 namespace styk::render::shaders {
@@ -11,9 +11,9 @@ layout(location = 3) in float a_t;
 uniform mat4 u_view;
 uniform mat4 u_projection;
 uniform float u_point_size;
-out vec3 v_normal;
-out vec3 v_color;
-out float v_t;
+centroid out vec3 v_normal;
+centroid out vec3 v_color;
+centroid out float v_t;
 void main() {
   v_normal = mat3(u_view) * a_normal;
   v_color = a_color;
@@ -24,13 +24,15 @@ void main() {
 )";
 
 // Contours are coloured per fragment from the interpolated scale position t, so band limits are
-// sharp and exact whatever the triangle size. The light sits just above-left of the eye, so faces
+// sharp and exact whatever the triangle size. With multisampling the values are taken at the
+// centroid of the covered samples (never extrapolated beyond the triangle: t = 0 at an edge must
+// not turn into t < 0, "no field"). The light sits just above-left of the eye, so faces
 // of an isometric view get different shades; a face seen square-on still gets exactly its colour
 // (the factor saturates at 1 there), which keeps band colours countable.
 inline constexpr const char* kSceneFragment = R"(#version 330 core
-in vec3 v_normal;
-in vec3 v_color;
-in float v_t;
+centroid in vec3 v_normal;
+centroid in vec3 v_color;
+centroid in float v_t;
 uniform bool u_lit;
 uniform bool u_use_field;
 uniform bool u_smooth;
@@ -39,6 +41,7 @@ uniform vec3 u_palette[24];
 uniform bool u_use_override;
 uniform vec3 u_override;
 uniform float u_line_shade;
+uniform bool u_round_points;
 out vec4 frag_color;
 vec3 rainbow(float t) {
   float hue = 4.0 * (1.0 - clamp(t, 0.0, 1.0));
@@ -50,8 +53,9 @@ vec3 rainbow(float t) {
   return vec3(0.0, 1.0 - f, 1.0);
 }
 void main() {
+  if (u_round_points && length(gl_PointCoord - vec2(0.5)) > 0.5) discard;
   vec3 c = v_color * u_line_shade;
-  if (u_use_field && v_t >= 0.0) {
+  if (u_use_field && v_t > -0.5) {  // no field: t = -1 at every vertex
     float t = clamp(v_t, 0.0, 1.0);
     if (u_smooth) {
       c = rainbow(t);
@@ -96,9 +100,9 @@ in vec3 g_color[];
 in float g_t[];
 uniform vec2 u_viewport;
 uniform float u_line_width;
-out vec3 v_normal;
-out vec3 v_color;
-out float v_t;
+centroid out vec3 v_normal;
+centroid out vec3 v_color;
+centroid out float v_t;
 void corner(int end, vec2 offset_pixels) {
   vec4 p = gl_in[end].gl_Position;
   gl_Position = vec4(p.xy + offset_pixels * 2.0 / u_viewport * p.w, p.zw);
@@ -138,6 +142,34 @@ inline constexpr const char* kOverlayFragment = R"(#version 330 core
 in vec3 v_color;
 out vec4 frag_color;
 void main() { frag_color = vec4(v_color, 1.0); }
+)";
+
+// Text: glyph quads in pixels, their coverage fetched texel by texel from the atlas (u, v in
+// texels: the quads lie on whole pixels, so every pixel centre meets one texel centre) and
+// blended over the picture.
+inline constexpr const char* kTextVertex = R"(#version 330 core
+layout(location = 0) in vec2 a_position;
+layout(location = 1) in vec2 a_texel;
+layout(location = 2) in vec3 a_color;
+uniform vec2 u_size;
+out vec2 v_texel;
+out vec3 v_color;
+void main() {
+  v_texel = a_texel;
+  v_color = a_color;
+  gl_Position = vec4(2.0 * a_position.x / u_size.x - 1.0, 1.0 - 2.0 * a_position.y / u_size.y, 0.0, 1.0);
+}
+)";
+
+inline constexpr const char* kTextFragment = R"(#version 330 core
+in vec2 v_texel;
+in vec3 v_color;
+uniform sampler2D u_atlas;
+out vec4 frag_color;
+void main() {
+  float coverage = texelFetch(u_atlas, ivec2(floor(v_texel)), 0).r;
+  frag_color = vec4(v_color, coverage);
+}
 )";
 
 }  // namespace styk::render::shaders

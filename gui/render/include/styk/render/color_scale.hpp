@@ -46,8 +46,26 @@ Rgb neutral_face_color();
 // linearly from 240 to 0 degrees at full saturation, so equal steps in t give distinct colours.
 Rgb rainbow(double t);
 
-// How the legend prints a number: 4 significant digits in scientific notation, "-1.235E+02".
+// How a single value is printed where no scale gives a precision (probe, title block's scale
+// factor): 4 significant digits in scientific notation, "-1.235E+02".
 std::string format_legend_value(double value);
+
+// How the numbers of one colour scale are printed: as many digits as tell neighbouring band limits
+// apart (the band width resolved to 2 significant digits, at least 3 significant digits in all),
+// every number of the scale with the same digits after the point; fixed notation ("203.6",
+// "0.0125") for magnitudes from 1e-3 to below 1e6, scientific ("2.04E+07") otherwise.
+struct NumberFormat {
+  bool scientific = false;
+  int decimals = 3;  // after the point (of the mantissa when scientific)
+  std::string operator()(double value) const;
+  // Half a unit of the last printed digit at `value`: how far a printed number may lie from the
+  // value it stands for.
+  double resolution(double value) const;
+};
+// The format of a scale running from `min` to `max` in `intervals` equal steps.
+NumberFormat number_format(double min, double max, int intervals);
+// The format of this scale's limits (its bands; for a discrete scale unused).
+NumberFormat number_format(const ColorScale& scale);
 
 // Throws InputError when bands is outside kMinBands..kMaxBands.
 void check_band_count(int bands);

@@ -8,6 +8,7 @@
 
 #include <array>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include "styk/core/model.hpp"
@@ -47,8 +48,23 @@ struct ScalarField {
   // Non-empty: a discrete field whose values are indices into these names (CSTATUS: open, stick,
   // slip); drawn one colour per category, each face node's colour over its share of the face.
   std::vector<std::string> categories;
+  // A field that lives on surfaces (contact output). `normals` (per node, where defined): the
+  // surface's unit normal at the node (contact: out of the slave surface). A face is coloured when
+  // every one of its nodes has a value and its outward normal is within 60 degrees of its nodes'
+  // mean normal: the slave faces, not the cut faces or the far faces of a layer whose nodes all
+  // lie on the surface. When the model names the slave surfaces' element faces (a deck's
+  // *SURFACE; a results file holds none), `support` lists them, (element index, 0-based face),
+  // sorted, and only they are coloured (plus, for a slave surface that is a node set,
+  // `node_surfaces`, the faces the normal test finds).
+  std::vector<Vec3> normals;
+  std::vector<std::pair<int, int>> support;
+  bool node_surfaces = false;
 
   bool defined_at(int node) const { return defined.empty() || defined[node] != 0; }
+  bool on_surfaces() const { return !normals.empty() || !support.empty() || node_surfaces; }
+  // Whether face `face` (0-based) of `element`, whose nodes are `nodes` and whose outward unit
+  // normal is `outward`, is coloured.
+  bool carries(int element, int face, const std::vector<int>& nodes, const Vec3& outward) const;
 };
 
 // Every field name evaluate_field() accepts, for messages and `--help`.
@@ -60,9 +76,11 @@ std::vector<std::string> field_names();
 // solver stored no S_nodal_II). Contact fields -- CPRESS (normal pressure), CSHEAR, CSHEAR.1/.2
 // (shear traction magnitude / along t1, t2), CSLIP, CSLIP.1/.2 (accumulated slip), CGAP, CSTATUS
 // (open / stick / slip) -- are Node fields defined at the slave nodes; an increment without
-// contact output is an InputError naming the fields it does hold.
+// contact output is an InputError naming the fields it does hold. A non-empty `contact_pair` (a
+// slave surface name) keeps the contact output of that *CONTACT PAIR only.
 ScalarField evaluate_field(const Model& model, const IncrementResult& increment,
-                           const std::string& name, Averaging averaging);
+                           const std::string& name, Averaging averaging,
+                           const std::string& contact_pair = "");
 
 // The colour scale of a field over `range` (field_range): a continuous field gets the banded or
 // smooth rainbow; a discrete one one band per category with the category colours and names.

@@ -37,7 +37,11 @@ struct FrameView {
   bool has_field = false;
   ColorScale colors;  // meaningful when has_field
   float point_size = 3.0f;
-  float bar_width = 3.0f;  // pixels across a drawn line element (truss)
+  float bar_width = 3.0f;      // pixels across a drawn line element (truss)
+  float ip_point_size = 7.0f;  // pixels across a drawn integration point (round)
+  // Samples per pixel of the scene (edges smoothed by multisampling; 1 = none). The overlay is
+  // drawn afterwards, on whole pixels.
+  int samples = 1;
 };
 
 // One complete picture: the view and the geometry (the vertex arrays; expensive to build and to

@@ -45,6 +45,7 @@ struct FrameGeometry {
   std::vector<Vertex> features;         // line pairs: boundary, non-manifold and crease edges
   std::vector<Vertex> outline;          // line pairs: feature edges, bars of the undeformed shape
   std::vector<Vertex> points;           // the nodes of the visible elements
+  std::vector<Vertex> ip_points;        // integration points coloured by their values
   std::array<float, 3> lower{0, 0, 0};  // bounds of everything above, relative to origin
   std::array<float, 3> upper{0, 0, 0};
   // Every layer's faces form closed, consistently oriented surfaces: each face edge is shared by
@@ -106,12 +107,19 @@ struct GeometryRequest {
   // With a field that has values at some nodes only (contact output): leave out the faces it
   // does not cover instead of drawing them neutral grey.
   bool hide_undefined_faces = false;
+  // Draw higher-order faces with a field on grids fine enough for the field (see geometry.cpp);
+  // false: on their base grids (2 x degree per direction), e.g. to measure what refining costs.
+  bool refine = true;
   bool points = true;                   // fill FrameGeometry::points
   bool outline = false;                 // fill FrameGeometry::outline (undeformed)
   double feature_angle_degrees = 30.0;  // crease angle of feature lines
 };
 
 FrameGeometry build_geometry(const SkinModel& skin, const GeometryRequest& request);
+
+// Whether `field` colours drawn face `face` (ScalarField::carries, with the face's nodes and its
+// outward normal, undeformed, from its corners).
+bool face_carries(const SkinModel& skin, const ScalarField& field, const SkinFace& face);
 
 // Minimum and maximum of a field over the visible elements (their nodes where the field is
 // defined, element nodes or elements, as the field is located). {0, 0} when nothing is visible.

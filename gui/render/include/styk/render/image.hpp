@@ -1,4 +1,5 @@
-// An RGBA8 picture, rows top-down, and its PNG file form (libpng; no GL, no windowing).
+// An RGBA8 picture, rows top-down, and its file forms: PNG (libpng) and 24-bit BMP
+// (stb_image_write; the thesis' picture format). No GL, no windowing.
 #pragma once
 
 #include <cstdint>
@@ -23,5 +24,13 @@ struct Image {
 // Throw std::runtime_error naming the file on failure.
 void write_png(const std::string& path, const Image& image);
 Image read_png(const std::string& path);
+// 24 bits per pixel, uncompressed (alpha is dropped: pictures are opaque).
+void write_bmp(const std::string& path, const Image& image);
+Image read_bmp(const std::string& path);
+
+// The picture formats by file extension: ".png" or ".bmp" (case-insensitive); empty for another.
+std::string picture_format(const std::string& path);
+// Writes PNG or BMP by the extension; std::invalid_argument for another extension.
+void write_picture(const std::string& path, const Image& image);
 
 }  // namespace styk::render
