@@ -24,8 +24,9 @@ std::string format(const char* pattern, double value) {
 }
 
 bool is_cube_solid(const TElement& element) {
-  const std::array<bool, 3> active = element.active_displacements();
-  if (!(active[0] && active[1] && active[2]) || element.section_measure() != SectionMeasure::None)
+  const DofSet active = element.active_dofs();
+  if (element.node_dofs() != 3 || !(active[0] && active[1] && active[2]) ||
+      element.section_measure() != SectionMeasure::None)
     return false;
   for (const Vec3& xi : element.natural_nodes())
     for (double c : xi)
@@ -38,6 +39,7 @@ bool is_cube_solid(const TElement& element) {
 // bulk-dominated (3D or plane strain, not plane stress).
 bool locks(const TElement& element, const Material& material) {
   if (element.section_measure() == SectionMeasure::Area) return false;  // trusses
+  if (element.section_measure() == SectionMeasure::Beam) return false;  // uniaxial fibres
   if (element.incompatible_mode_count() > 0) return false;
   if (element.rule(RuleKind::Full).size() <= element.rule(RuleKind::Reduced).size()) return false;
   Matrix6d D;

@@ -141,6 +141,8 @@ std::string drawable_data(const Model& model, const IncrementResult& inc) {
   std::vector<std::string> held;
   if (inc.U.size() == model.coords.size() && !inc.U.empty()) held.push_back("U");
   if (inc.RF.size() == model.coords.size() && !inc.RF.empty()) held.push_back("RF");
+  if (inc.UR.size() == model.coords.size() && !inc.UR.empty()) held.push_back("UR");
+  if (inc.RM.size() == model.coords.size() && !inc.RM.empty()) held.push_back("RM");
   const auto tensors = [&](const char* q, const TensorArrays& a) {
     std::vector<std::string> ways;
     if (!a.element_nodes->empty()) ways.push_back("none");
@@ -229,7 +231,7 @@ std::string averaging_name(Averaging averaging) {
 
 std::vector<std::string> field_names() {
   std::vector<std::string> names;
-  for (const char* v : {"U", "RF"})
+  for (const char* v : {"U", "RF", "UR", "RM"})
     for (const char* s : {"mag", "x", "y", "z"}) names.push_back(std::string(v) + "." + s);
   for (const char* q : {"S", "E"}) {
     for (const char* s : {"11", "22", "33", "12", "13", "23", "p1", "p2", "p3"})
@@ -260,10 +262,18 @@ ScalarField evaluate_field(const Model& model, const IncrementResult& inc, const
   if (is_contact_quantity(quantity))
     return evaluate_contact_field(model, inc, quantity, suffix, drawable_data(model, inc));
 
-  if (quantity == "U" || quantity == "RF") {
+  if (quantity == "U" || quantity == "RF" || quantity == "UR" || quantity == "RM") {
     const int component = vector_component(suffix);
     if (component < 0) throw unknown();
-    const std::vector<Vec3>& data = quantity == "U" ? inc.U : inc.RF;
+    const std::vector<Vec3>& data = quantity == "U"    ? inc.U
+                                    : quantity == "RF" ? inc.RF
+                                    : quantity == "UR" ? inc.UR
+                                                       : inc.RM;
+    if (data.empty() && (quantity == "UR" || quantity == "RM"))
+      throw InputError({}, "step " + std::to_string(inc.step) + " increment " +
+                               std::to_string(inc.increment) + " holds no " + quantity +
+                               " (rotations exist in models with beam elements); it holds: " +
+                               drawable_data(model, inc));
     if (data.size() != model.coords.size())
       throw InputError({}, "step " + std::to_string(inc.step) + " increment " +
                                std::to_string(inc.increment) + " holds " +
