@@ -9,6 +9,7 @@
 #include "commands.hpp"
 #include "exit_codes.hpp"
 #include "registry_setup.hpp"
+#include "styk/core/beam_section.hpp"
 #include "styk/inp/reader.hpp"
 
 namespace styk::cli {
@@ -86,8 +87,18 @@ int info_command(const InfoArgs& args) {
     fmt::print("  {:<24} E = {}, nu = {}{}\n", m.name, m.young.value_or(0.0), m.poisson.value_or(0.0),
                m.expansion ? fmt::format(", alpha = {}", *m.expansion) : std::string());
   fmt::print("sections:  {}\n", model.sections.size());
-  for (const Section& s : model.sections)
-    fmt::print("  elset {:<18} material {}\n", s.elset, s.material);
+  for (const Section& s : model.sections) {
+    if (!s.beam) {
+      fmt::print("  elset {:<18} material {}\n", s.elset, s.material);
+      continue;
+    }
+    std::string dimensions;
+    for (double d : s.beam->dimensions)
+      dimensions += (dimensions.empty() ? "" : ", ") + fmt::format("{}", d);
+    fmt::print("  elset {:<18} material {}, beam {} {}, {} integration\n", s.elset, s.material,
+               beam_shape_name(s.beam->shape), dimensions,
+               s.beam->integration == BeamIntegration::Full ? "full" : "reduced");
+  }
   fmt::print("boundary conditions outside steps: {}\n", model.boundaries.size());
   fmt::print("steps:     {}\n", model.steps.size());
   for (std::size_t k = 0; k < model.steps.size(); ++k) {

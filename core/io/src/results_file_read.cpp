@@ -196,6 +196,7 @@ ResultsFileContents read_contents(hid_t file, const std::string& path) {
     read_nodes(mesh.get(), where, contents.model);
     read_elements(mesh.get(), where, contents.model);
     read_sets(mesh.get(), where, contents.model);
+    io::read_beam_sections(mesh.get(), where, contents.model);
   }
   read_steps(file, contents.model, contents.results);
   return contents;

@@ -6,6 +6,8 @@
 #include <stdexcept>
 #include <vector>
 
+#include "styk/core/beam_section.hpp"
+
 namespace styk::io {
 namespace {
 
@@ -30,6 +32,16 @@ std::size_t stations(const IncrementResult& inc) {
 
 void write_vectors(hid_t group, const char* name, const std::vector<Vec3>& rows) {
   h5::write_dataset(group, name, H5T_IEEE_F64LE, H5T_NATIVE_DOUBLE, rows[0].data(), rows.size(), 3);
+}
+
+const char* integration_name(BeamIntegration integration) {
+  return integration == BeamIntegration::Full ? "FULL" : "REDUCED";
+}
+
+BeamShape shape_of(const std::string& name, const std::string& where) {
+  for (const BeamShape shape : {BeamShape::Rect, BeamShape::Circ, BeamShape::Pipe, BeamShape::Box})
+    if (name == beam_shape_name(shape)) return shape;
+  corrupt(where + " names beam section shape '" + name + "'");
 }
 
 }  // namespace
@@ -85,6 +97,68 @@ void read_structural(hid_t increment, const std::string& label, const Model& mod
     out.resize(rows);
     for (std::uint64_t i = 0; i < rows; ++i)
       out[i] = {flat[3 * i], flat[3 * i + 1], flat[3 * i + 2]};
+  }
+}
+
+void write_beam_sections(hid_t mesh, const Model& model) {
+  std::vector<std::string> elsets, shapes, integration;
+  std::vector<std::int64_t> counts;
+  std::vector<double> dimensions, directions;
+  for (const Section& section : model.sections) {
+    if (!section.beam) continue;
+    const BeamSection& beam = *section.beam;
+    elsets.push_back(section.elset);
+    shapes.push_back(beam_shape_name(beam.shape));
+    integration.push_back(integration_name(beam.integration));
+    counts.push_back(static_cast<std::int64_t>(beam.dimensions.size()));
+    for (std::size_t k = 0; k < 6; ++k)
+      dimensions.push_back(k < beam.dimensions.size() ? beam.dimensions[k] : 0.0);
+    directions.insert(directions.end(), beam.direction.begin(), beam.direction.end());
+  }
+  if (elsets.empty()) return;
+  const h5::Handle group = h5::create_group(mesh, "beam_sections");
+  h5::write_strings(group.get(), "elsets", elsets);
+  h5::write_strings(group.get(), "shapes", shapes);
+  h5::write_strings(group.get(), "integration", integration);
+  h5::write_int64(group.get(), "dimension_counts", counts);
+  h5::write_dataset(group.get(), "dimensions", H5T_IEEE_F64LE, H5T_NATIVE_DOUBLE, dimensions.data(),
+                    elsets.size(), 6);
+  h5::write_dataset(group.get(), "directions", H5T_IEEE_F64LE, H5T_NATIVE_DOUBLE, directions.data(),
+                    elsets.size(), 3);
+}
+
+void read_beam_sections(hid_t mesh, const SourceLoc& where, Model& model) {
+  if (!h5::has_link(mesh, "beam_sections")) return;
+  const h5::Handle group = h5::open_group(mesh, "beam_sections");
+  const std::string label = "/model/beam_sections";
+  const std::vector<std::string> elsets = h5::read_strings(group.get(), "elsets");
+  const std::vector<std::string> shapes = h5::read_strings(group.get(), "shapes");
+  const std::vector<std::string> integration = h5::read_strings(group.get(), "integration");
+  std::vector<std::int64_t> counts;
+  std::vector<double> dimensions, directions;
+  h5::read_int64(group.get(), "dimension_counts", counts);
+  const std::uint64_t rows = h5::read_doubles(group.get(), "dimensions", 6, dimensions);
+  if (h5::read_doubles(group.get(), "directions", 3, directions) != rows || shapes.size() != rows ||
+      integration.size() != rows || counts.size() != rows || elsets.size() != rows)
+    corrupt(label + ": its datasets differ in length");
+  for (std::uint64_t i = 0; i < rows; ++i) {
+    BeamSection beam;
+    beam.shape = shape_of(shapes[i], label);
+    if (counts[i] < 1 || counts[i] > 6) corrupt(label + "/dimension_counts out of range");
+    beam.dimensions.assign(dimensions.begin() + 6 * i, dimensions.begin() + 6 * i + counts[i]);
+    beam.direction = {directions[3 * i], directions[3 * i + 1], directions[3 * i + 2]};
+    beam.integration = integration[i] == "FULL" ? BeamIntegration::Full : BeamIntegration::Reduced;
+    if (const std::string why = check_beam_section(beam); !why.empty())
+      corrupt(label + " row " + std::to_string(i) + ": " + why);
+    const ElementSet* set = model.find_elset(elsets[i]);
+    if (set == nullptr) corrupt(label + " names element set " + elsets[i] + ", not in the file");
+    Section section;
+    section.elset = elsets[i];
+    section.beam = beam;
+    section.where = where;
+    const int index = static_cast<int>(model.sections.size());
+    model.sections.push_back(std::move(section));
+    for (int e : set->elements) model.elements[e].section = index;
   }
 }
 

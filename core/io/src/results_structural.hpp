@@ -1,7 +1,8 @@
 // The structural part of the results file (docs/results.md): per increment the nodal rotations
 // UR and reaction moments RM of models whose nodes carry rotations, and the section forces SF and
-// moments SM of beam elements at their stations. All written only when present, so the files of
-// solid models are unchanged; files without them read as empty fields.
+// moments SM of beam elements at their stations; in /model the beam sections (shape, dimensions,
+// first section axis, integration), which the renderer extrudes. All written only when present,
+// so the files of solid models are unchanged; files without them read as empty fields.
 #pragma once
 
 #include <string>
@@ -22,5 +23,12 @@ void read_structural(hid_t increment, const std::string& label, const Model& mod
 
 // Size checks before anything is written: "" when consistent, else what is wrong.
 std::string structural_size_error(const Model& model, const IncrementResult& inc);
+
+// Group "beam_sections" under `mesh` with one row per *BEAM SECTION of the model (none: no group).
+void write_beam_sections(hid_t mesh, const Model& model);
+
+// Rebuilds those sections (elset, shape, dimensions, direction, integration; no material) and
+// assigns them to the elements of their sets. The element sets must have been read.
+void read_beam_sections(hid_t mesh, const SourceLoc& where, Model& model);
 
 }  // namespace styk::io
