@@ -8,6 +8,8 @@
 
 #include <Eigen/Eigenvalues>
 
+#include "beam_warnings.hpp"
+
 namespace styk::solver_detail {
 namespace {
 
@@ -159,6 +161,10 @@ std::vector<std::string> model_warnings(const Model& model, const PreparedModel&
                        " has Poisson's ratio " + format("%g", *material.poisson) +
                        " (>= 0.45); add TECHNIQUE=SELECTIVE to the *SOLID SECTION");
   }
+
+  // Beams: shear locking of fully integrated slender beams, spurious modes (beam_warnings.hpp).
+  for (std::string& warning : beam_warnings(model, prepared))
+    warnings.push_back(std::move(warning));
 
   // Distortion: the worst element and how many are beyond the ratio.
   std::map<const TElement*, IntegrationRule> rules;

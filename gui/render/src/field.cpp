@@ -305,6 +305,15 @@ ScalarField evaluate_field(const Model& model, const IncrementResult& inc, const
                                        : TensorArrays{&inc.E_element_nodes, &inc.E_nodal_I,
                                                       &inc.E_nodal_II, &inc.E_centroid, &inc.E};
     ScalarField field = tensor_field(model, inc, stress ? "S" : "E", arrays, f, averaging);
+    // Beams are coloured from their fibre tensors (beam_geometry.hpp).
+    const bool beams = std::any_of(model.sections.begin(), model.sections.end(),
+                                   [](const Section& s) { return s.beam.has_value(); });
+    const std::vector<Tensor6>& points = stress ? inc.S : inc.E;
+    if (beams && !points.empty() && inc.ip_offset.size() == model.elements.size() + 1) {
+      field.point_offset = inc.ip_offset;
+      field.point_tensors = points;
+      field.tensor_value = f;
+    }
     field.name = quantity + "." + suffix;
     if (suffix == "max_principal") field.name = quantity + ".p1";
     if (suffix == "mid_principal") field.name = quantity + ".p2";

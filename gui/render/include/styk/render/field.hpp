@@ -7,6 +7,7 @@
 #pragma once
 
 #include <array>
+#include <functional>
 #include <string>
 #include <vector>
 
@@ -49,6 +50,15 @@ struct ScalarField {
   std::vector<std::string> categories;
 
   bool defined_at(int node) const { return defined.empty() || defined[node] != 0; }
+
+  // Stress and strain fields of models with beams: the tensors at every output point of the
+  // increment (IncrementResult::S or E, element e's points at point_offset[e] ..) and the function
+  // that turns a tensor into the field value. Beams are drawn from these (interpolated over their
+  // sections, then evaluated), since averaging at their nodes would lose the bending stress.
+  // Empty otherwise.
+  std::vector<int> point_offset;
+  std::vector<Tensor6> point_tensors;
+  std::function<double(const Tensor6&)> tensor_value;
 };
 
 // Every field name evaluate_field() accepts, for messages and `--help`.
