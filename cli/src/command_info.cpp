@@ -1,5 +1,7 @@
+#include <algorithm>
 #include <iostream>
 #include <map>
+#include <utility>
 #include <vector>
 
 #include <fmt/core.h>
@@ -7,6 +9,7 @@
 #include "commands.hpp"
 #include "exit_codes.hpp"
 #include "registry_setup.hpp"
+#include "styk/core/beam_section.hpp"
 #include "styk/inp/reader.hpp"
 
 namespace styk::cli {
@@ -18,6 +21,23 @@ int count_active_nodes(const Model& model) {
   int n = 0;
   for (char u : used) n += u;
   return n;
+}
+
+// Mechanical dofs before constraints: per used node the most any of its elements carries (3
+// displacements; 6 with the rotations of beams), and how many nodes carry rotations.
+std::pair<long long, int> count_dofs(const Model& model, const ElementRegistry& registry) {
+  std::vector<int> per_node(model.node_count(), 0);
+  for (int e = 0; e < model.element_count(); ++e) {
+    const TElement* f = registry.find(model.elements[e].type);
+    const int dofs = f != nullptr ? f->node_dofs() : 3;
+    const int* nodes = model.element_nodes(e);
+    for (int k = 0; k < model.elements[e].node_count; ++k)
+      per_node[nodes[k]] = std::max(per_node[nodes[k]], dofs);
+  }
+  long long total = 0;
+  int rotating = 0;
+  for (int d : per_node) total += d, rotating += d > 3 ? 1 : 0;
+  return {total, rotating};
 }
 
 const char* solver_name(LinearSolverKind kind) {
@@ -50,8 +70,13 @@ int info_command(const InfoArgs& args) {
   if (scalar)
     fmt::print("dofs:      {} (1 per used node: {}, before boundary conditions)\n", active,
                model.steps.front().kind == StepKind::HeatTransfer ? "temperature" : "potential");
+  else if (const auto [dofs, rotating] = count_dofs(model, registry); rotating == 0)
+    fmt::print("dofs:      {} (3 per used node, before constraints)\n", dofs);
   else
-    fmt::print("dofs:      {} (3 per used node, before constraints)\n", 3LL * active);
+    fmt::print(
+        "dofs:      {} (3 per used node, 6 at the {} nodes of beams, before "
+        "constraints)\n",
+        dofs, rotating);
   fmt::print("node sets: {}\n", model.nsets.size());
   for (const auto& [name, set] : model.nsets) fmt::print("  {:<24} {} nodes\n", name, set.nodes.size());
   fmt::print("element sets: {}\n", model.elsets.size());
@@ -62,8 +87,18 @@ int info_command(const InfoArgs& args) {
     fmt::print("  {:<24} E = {}, nu = {}{}\n", m.name, m.young.value_or(0.0), m.poisson.value_or(0.0),
                m.expansion ? fmt::format(", alpha = {}", *m.expansion) : std::string());
   fmt::print("sections:  {}\n", model.sections.size());
-  for (const Section& s : model.sections)
-    fmt::print("  elset {:<18} material {}\n", s.elset, s.material);
+  for (const Section& s : model.sections) {
+    if (!s.beam) {
+      fmt::print("  elset {:<18} material {}\n", s.elset, s.material);
+      continue;
+    }
+    std::string dimensions;
+    for (double d : s.beam->dimensions)
+      dimensions += (dimensions.empty() ? "" : ", ") + fmt::format("{}", d);
+    fmt::print("  elset {:<18} material {}, beam {} {}, {} integration\n", s.elset, s.material,
+               beam_shape_name(s.beam->shape), dimensions,
+               s.beam->integration == BeamIntegration::Full ? "full" : "reduced");
+  }
   fmt::print("boundary conditions outside steps: {}\n", model.boundaries.size());
   fmt::print("steps:     {}\n", model.steps.size());
   for (std::size_t k = 0; k < model.steps.size(); ++k) {

@@ -38,10 +38,10 @@ void check_geometry(const ElementGeometry& g, const TElement& e) {
 
 void check_displacements(const ElementGeometry& g, const TElement& e,
                          const Eigen::Ref<const Eigen::VectorXd>& u) {
-  if (u.size() != 3 * e.node_count())
+  if (u.size() != e.node_dofs() * e.node_count())
     throw std::invalid_argument(element_label(g, e) + ": displacement vector has " +
                                 std::to_string(u.size()) + " entries, expected " +
-                                std::to_string(3 * e.node_count()));
+                                std::to_string(e.node_dofs() * e.node_count()));
 }
 
 const FaceDef& checked_face(const ElementGeometry& g, const TElement& e, int face) {
@@ -160,6 +160,15 @@ void TElement::face_quadrature(const ElementGeometry& g, const FaceDef& face,
 }
 
 void TElement::complete_strain(const Material&, double, Eigen::Matrix<double, 6, 1>&) const {}
+
+int TElement::section_stations(RuleKind) const { return 0; }
+
+void TElement::section_resultants(const ElementGeometry&, const Material&, RuleKind,
+                                  const Eigen::Ref<const Eigen::VectorXd>&, Eigen::MatrixXd& forces,
+                                  Eigen::MatrixXd& moments, const Eigen::VectorXd*) const {
+  forces.resize(0, 3);
+  moments.resize(0, 3);
+}
 
 void TElement::incompatible_bee(const ElementGeometry&, const Vec3&, double,
                                 Eigen::Ref<Eigen::MatrixXd>) const {}

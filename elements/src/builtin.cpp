@@ -2,6 +2,7 @@
 
 #include <memory>
 
+#include "styk/elements/beam.hpp"
 #include "styk/elements/c3d20.hpp"
 #include "styk/elements/c3d20r.hpp"
 #include "styk/elements/c3d27.hpp"
@@ -27,6 +28,9 @@ void register_builtin_elements(ElementRegistry& registry) {
   registry.add(std::make_unique<PlaneQuad8>(PlaneKind::Stress), source);  // CPS8
   registry.add(std::make_unique<PlaneQuad8>(PlaneKind::Strain), source);  // CPE8
   registry.add(std::make_unique<T3D2>(), source);
+  for (const BeamType type :
+       {BeamType::B21, BeamType::B22, BeamType::B31, BeamType::B31R, BeamType::B32, BeamType::B32R})
+    registry.add(std::make_unique<Beam>(type), source);
 }
 
 }  // namespace styk

@@ -54,6 +54,9 @@ class Tmpl8 : public styk::TElement {
 
   // bee() (strain-displacement) and dee() (material matrix) keep the TElement defaults: small
   // strain, isotropic elasticity. Override them for B-bar, incompatible modes, other materials.
+  // An element whose nodes carry rotations (a beam, a shell) overrides node_dofs() (6) and
+  // active_dofs() and computes its own stiffness(); tests/unit/rotations/plugin/ebframe.cpp is a
+  // complete example (docs/plugins.md, "Declaring rotational degrees of freedom").
 
  private:
   std::vector<styk::Vec3> nodes_;

@@ -49,7 +49,7 @@ std::string constraint_keyword(const Model& model) {
 }
 
 LinearSolverKind choose_solver(const SolveOptions& options, const Step& step, long long free_dofs,
-                               const Model& model, bool constrained) {
+                               const Model& model, bool constrained, bool rotations) {
   const bool forced = options.force != LinearSolverKind::Automatic;
   const LinearSolverKind requested = forced ? options.force : step.procedure.solver;
   if (requested == LinearSolverKind::Iterative && constrained)
@@ -57,12 +57,19 @@ LinearSolverKind choose_solver(const SolveOptions& options, const Step& step, lo
                      "the iterative solver does not support " + constraint_keyword(model) +
                          " (local systems and equations are eliminated for the direct solver "
                          "only); use --solver cholmod or *STATIC, SOLVER=CHOLMOD");
+  // GAMG's near-null space (PETSc's rigid-body modes) and its node blocks assume 3 displacement
+  // dofs per node.
+  if (requested == LinearSolverKind::Iterative && rotations)
+    throw InputError(forced ? SourceLoc{model.source, 0} : step.procedure.where,
+                     "the iterative solver does not support rotational dofs (beam elements: its "
+                     "multigrid assumes 3 displacements per node); use --solver cholmod or "
+                     "*STATIC, SOLVER=CHOLMOD");
   if (requested == LinearSolverKind::Iterative && !kHaveIterativeSolver)
     throw InputError(forced ? SourceLoc{} : step.procedure.where,
                      "the iterative solver is not available: this build has no PETSc "
                      "(configure with STYK_PETSC=ON)");
   if (requested != LinearSolverKind::Automatic) return requested;
-  return kHaveIterativeSolver && !constrained && free_dofs >= kIterativeFromDofs
+  return kHaveIterativeSolver && !constrained && !rotations && free_dofs >= kIterativeFromDofs
              ? LinearSolverKind::Iterative
              : LinearSolverKind::Cholmod;
 }
@@ -102,6 +109,7 @@ Results run_static_analysis(const Model& model, const ElementRegistry& registry,
     if (model.element_count() == 0)
       throw InputError(whole_model, "the model has no elements");
     prepared = prepare_model(model, registry);
+    check_output_requests(model, prepared);
     conditions = accumulate_step_conditions(model, prepared);
     constraints = ModelConstraints::build(model, prepared);
     temperature_changes = step_temperature_changes(model);
@@ -109,7 +117,7 @@ Results run_static_analysis(const Model& model, const ElementRegistry& registry,
   }
 
   // Extrapolation operators per element type, built once for every step (SPEC §5 averaging).
-  const StressAveraging averaging(model, prepared.formulation, RuleKind::Full);
+  const StressAveraging averaging(model, prepared.formulation, prepared.rule_kind);
 
   std::unique_ptr<StiffnessMatrix> K;
   {
@@ -150,8 +158,8 @@ Results run_static_analysis(const Model& model, const ElementRegistry& registry,
     const std::vector<int> prescribed = prescribed_dofs(conditions[k]);
     const std::vector<int> known = constraints.known_dofs(model, prepared, prescribed);
     const long long free_dofs = prepared.active_dofs() - static_cast<long long>(known.size());
-    const LinearSolverKind kind =
-        choose_solver(options, step, free_dofs, model, !constraints.empty());
+    const LinearSolverKind kind = choose_solver(options, step, free_dofs, model,
+                                                !constraints.empty(), prepared.has_rotations());
 
     // A new factorisation only when the prescribed set (or the solver) changes; otherwise the
     // step costs a right-hand side and a solve.
@@ -166,7 +174,8 @@ Results run_static_analysis(const Model& model, const ElementRegistry& registry,
       } catch (const FactorTooLarge& too_large) {
         const bool automatic = options.force == LinearSolverKind::Automatic &&
                                step.procedure.solver == LinearSolverKind::Automatic;
-        if (!automatic || !kHaveIterativeSolver || !constraints.empty()) throw;
+        if (!automatic || !kHaveIterativeSolver || !constraints.empty() || prepared.has_rotations())
+          throw;
         phases.info(std::string(too_large.what()) + "; switching to the iterative solver");
         set_up_solver(LinearSolverKind::Iterative, known);
       }

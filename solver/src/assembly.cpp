@@ -15,6 +15,10 @@ void element_geometry(const Model& model, int e, ElementGeometry& geometry) {
   geometry.id = element.id;
   geometry.where = element.where;
   geometry.cross_section = cross_section_of(model, e);  // thickness / area of plane and truss
+  const int section = element.section;
+  geometry.section = section >= 0 && section < static_cast<int>(model.sections.size())
+                         ? &model.sections[section]
+                         : nullptr;
 }
 
 void assemble_stiffness(const Model& model, const PreparedModel& prepared, StiffnessMatrix& K,
@@ -28,6 +32,9 @@ void assemble_stiffness(const Model& model, const PreparedModel& prepared, Stiff
     Eigen::MatrixXd Ke;
     std::vector<int> active;
   };
+  // Element entry (node p, component r) x (node q, component t) lands in the block of the nodes'
+  // active indices at row r, column t: both nodes list their translations first, then rotations,
+  // and an element with fewer dofs per node than the node carries fills the leading part.
   std::vector<Scratch> scratch(threads);
   const ElementColouring& colouring = K.colouring();
   for (int c = 0; c < colouring.colours(); ++c) {
@@ -39,9 +46,10 @@ void assemble_stiffness(const Model& model, const PreparedModel& prepared, Stiff
         const int e = colouring.order[first + i];
         element_geometry(model, e, s.geometry);
         const ElementOptions options{model.sections[model.elements[e].section].selective_volumetric};
-        prepared.formulation[e]->stiffness(s.geometry, *prepared.material[e], RuleKind::Full,
+        prepared.formulation[e]->stiffness(s.geometry, *prepared.material[e], prepared.rule_kind[e],
                                            s.Ke, options);
         const int n = model.elements[e].node_count;
+        const int m = prepared.formulation[e]->node_dofs();
         const int* nodes = model.element_nodes(e);
         s.active.resize(n);
         for (int p = 0; p < n; ++p) s.active[p] = prepared.active_of_node[nodes[p]];
@@ -50,8 +58,8 @@ void assemble_stiffness(const Model& model, const PreparedModel& prepared, Stiff
           const std::int64_t stride = K.row_stride(a);
           for (int q = 0; q < n; ++q) {
             double* block = values.data() + K.block_start(a, s.active[q]);
-            for (int r = 0; r < 3; ++r)
-              for (int t = 0; t < 3; ++t) block[r * stride + t] += s.Ke(3 * p + r, 3 * q + t);
+            for (int r = 0; r < m; ++r)
+              for (int t = 0; t < m; ++t) block[r * stride + t] += s.Ke(m * p + r, m * q + t);
           }
         }
       }
@@ -66,14 +74,18 @@ std::vector<double> assemble_loads(const Model& model, const PreparedModel& prep
   for (const DofValue& load : conditions.nodal_loads) f[load.dof] += load.value;
   ElementGeometry geometry;
   Eigen::VectorXd fe;
+  std::vector<int> dofs;
   for (const DistributedLoad& load : conditions.pressures) {
     element_geometry(model, load.element, geometry);
-    prepared.formulation[load.element]->pressure_load(geometry, load.face - 1, load.magnitude, fe);
-    const int* nodes = model.element_nodes(load.element);
-    for (int k = 0; k < model.elements[load.element].node_count; ++k) {
-      const int a = prepared.active_of_node[nodes[k]];
-      for (int d = 0; d < 3; ++d) f[3 * a + d] += fe(3 * k + d);
+    try {
+      prepared.formulation[load.element]->pressure_load(geometry, load.face - 1, load.magnitude,
+                                                        fe);
+    } catch (const InputError& error) {  // a label the element cannot take: say so at the load
+      if (error.where().line == load.where.line && error.where().file == load.where.file) throw;
+      throw InputError(load.where, error.message());
     }
+    prepared.element_dofs(model, load.element, dofs);
+    for (std::size_t i = 0; i < dofs.size(); ++i) f[dofs[i]] += fe(static_cast<Eigen::Index>(i));
   }
   return f;
 }

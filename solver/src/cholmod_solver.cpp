@@ -215,7 +215,8 @@ class CholmodSolver final : public LinearSolver {
 
   void analyse(const NodeGraph& graph, const DofPartition& partition) {
     cholmod_common* c = common_->get();
-    std::vector<std::int64_t> perm = metis_free_dof_ordering(graph, partition);
+    std::vector<std::int64_t> perm =
+        metis_free_dof_ordering(graph, context_.prepared.dof_offset, partition);
     c->nmethods = 1;
     c->postorder = 1;
     cholmod_factor* L = nullptr;

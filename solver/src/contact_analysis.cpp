@@ -47,10 +47,11 @@ struct ContactFactor {
   Eigen::MatrixXd S, G;
 };
 
-// Sums of a nodal field on active dofs.
-Vec3 dof_sum(const std::vector<double>& f) {
+// Sums of the force part of a nodal field on active dofs (moments of rotational dofs left out).
+Vec3 dof_sum(const PreparedModel& prepared, const std::vector<double>& f) {
   Vec3 sum{0.0, 0.0, 0.0};
-  for (std::size_t i = 0; i < f.size(); ++i) sum[i % 3] += f[i];
+  for (int a = 0; a < prepared.active_nodes(); ++a)
+    for (int d = 0; d < 3; ++d) sum[d] += f[prepared.dof(a, d)];
   return sum;
 }
 
@@ -68,11 +69,12 @@ std::string node_ids(const Model& model, const std::vector<contact::ContactConst
   return list;
 }
 
-void check_equilibrium(const std::vector<double>& applied, const IncrementResult& increment,
+void check_equilibrium(const PreparedModel& prepared, const std::vector<double>& applied,
+                       const IncrementResult& increment,
                        const std::vector<contact::ContactConstraint>& constraints,
                        const contact::ContactState& state, ContactEquilibrium& out) {
   out.valid = true;
-  out.applied = dof_sum(applied);
+  out.applied = dof_sum(prepared, applied);
   out.reactions = Vec3{0.0, 0.0, 0.0};
   for (const Vec3& rf : increment.RF)
     for (int d = 0; d < 3; ++d) out.reactions[d] += rf[d];
@@ -149,6 +151,7 @@ Results run_contact_analysis(const Model& model, const ElementRegistry& registry
       throw InputError(whole_model, "the model has no *STEP: there is nothing to analyse");
     if (model.element_count() == 0) throw InputError(whole_model, "the model has no elements");
     prepared = prepare_model(model, registry);
+    check_output_requests(model, prepared);
     conditions = accumulate_step_conditions(model, prepared);
     kinematic = ModelConstraints::build(model, prepared);
     temperature_changes = step_temperature_changes(model);
@@ -167,7 +170,7 @@ Results run_contact_analysis(const Model& model, const ElementRegistry& registry
     phases.info("contact: " + std::to_string(constraints.size()) + " constraints in " +
                 std::to_string(model.contact_pairs.size()) + " pairs");
   }
-  const StressAveraging averaging(model, prepared.formulation, RuleKind::Full);
+  const StressAveraging averaging(model, prepared.formulation, prepared.rule_kind);
   // K in the nodal systems with the equations eliminated (model_constraints.hpp), as in the
   // linear path; the contact rows stay global and the compliance maps between the two.
   StiffnessMatrix K(model, prepared, threads, kinematic.extra_node_couplings(model, prepared));
@@ -366,7 +369,7 @@ Results run_contact_analysis(const Model& model, const ElementRegistry& registry
         recover_increment(model, prepared, input, threads, increment);
         averaging.apply(threads, increment);
         contact::fill_contact_results(model, constraints, state, increment);
-        check_equilibrium(to_global(kinematic, f_t), increment, constraints, state,
+        check_equilibrium(prepared, to_global(kinematic, f_t), increment, constraints, state,
                           increment.contact_equilibrium);
       }
       phases.info(where + format(": converged in %.0f iterations, equilibrium residual %.2e",

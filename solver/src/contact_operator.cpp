@@ -15,7 +15,7 @@ ContactOperator::ContactOperator(const PreparedModel& prepared,
         const int a = prepared.active_of_node[node];
         for (int d = 0; d < 3; ++d)
           if (row[d] != 0.0) {
-            dof_.push_back(3 * a + d);
+            dof_.push_back(prepared.dof(a, d));
             value_.push_back(weight * row[d]);
           }
       };

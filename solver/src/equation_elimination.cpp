@@ -10,8 +10,8 @@ namespace {
 
 // "node 12, dof 2" (the dof is local when the node has a *TRANSFORM, as in the deck).
 std::string dof_name(const Model& model, const PreparedModel& prepared, int dof) {
-  return "node " + std::to_string(model.node_ids[prepared.node_of_active[dof / 3]]) + ", dof " +
-         std::to_string(dof % 3 + 1);
+  return "node " + std::to_string(model.node_ids[prepared.node_of_active[prepared.node_of(dof)]]) +
+         ", dof " + std::to_string(prepared.component(dof) + 1);
 }
 
 struct RawEquation {
@@ -69,9 +69,9 @@ class ChainResolver {
 };
 
 double* entry(StiffnessMatrix& K, int i, int j) {
-  const std::int64_t start = K.block_start(i / 3, j / 3);
-  if (start < 0) throw std::logic_error("equation elimination: entry outside the widened pattern");
-  return K.values().data() + start + (i % 3) * K.row_stride(i / 3) + j % 3;
+  const std::int64_t at = K.entry_index(i, j);
+  if (at < 0) throw std::logic_error("equation elimination: entry outside the widened pattern");
+  return K.values().data() + at;
 }
 
 }  // namespace
@@ -85,16 +85,23 @@ EquationElimination EquationElimination::build(const Model& model, const Prepare
     for (const EquationTerm& term : equation.terms) {
       if (term.node < 0 || term.node >= model.node_count())
         throw InputError(equation.where, "*EQUATION on an undefined node");
-      if (term.dof < 1 || term.dof > 3)
+      if (term.dof < 1 || term.dof > kMaxNodeDofs)
         throw InputError(equation.where, "*EQUATION: degree of freedom " +
                                              std::to_string(term.dof) +
-                                             " does not exist; solid elements have 1, 2, 3");
+                                             " does not exist; nodes have 1, 2, 3 (displacements) "
+                                             "and, at beam nodes, 4, 5, 6 (rotations)");
       const int a = prepared.active_of_node[term.node];
       if (a < 0)
         throw InputError(equation.where, "*EQUATION on node " +
                                              std::to_string(model.node_ids[term.node]) +
                                              ", which belongs to no element (it has no dofs)");
-      dofs.push_back(3 * a + term.dof - 1);
+      const int dof = prepared.dof(a, term.dof - 1);
+      if (dof < 0)
+        throw InputError(equation.where, "*EQUATION: node " +
+                                             std::to_string(model.node_ids[term.node]) +
+                                             " has no rotational dof " + std::to_string(term.dof) +
+                                             " (only beam elements carry rotations 4, 5, 6)");
+      dofs.push_back(dof);
     }
     if (dofs.size() < 2 || equation.terms[0].coefficient == 0.0)
       throw InputError(equation.where,
@@ -150,8 +157,8 @@ std::vector<std::pair<int, int>> EquationElimination::extra_node_couplings(
   // Dependent nodes and the nodes of their masters.
   std::map<int, std::vector<int>> masters_of_node;  // active node -> master active nodes
   for (const DependentDof& d : dependents_) {
-    std::vector<int>& masters = masters_of_node[d.dof / 3];
-    for (const auto& [j, a] : d.masters) masters.push_back(j / 3);
+    std::vector<int>& masters = masters_of_node[prepared.node_of(d.dof)];
+    for (const auto& [j, a] : d.masters) masters.push_back(prepared.node_of(j));
   }
   for (auto& [node, masters] : masters_of_node) {
     std::sort(masters.begin(), masters.end());

@@ -52,7 +52,7 @@ FloatingBodies find_floating_bodies(const Model& model, const PreparedModel& pre
     }
   std::vector<std::vector<const Restraint*>> restraints_of(parts.size());
   for (const Restraint& r : restraints)
-    if (!r.terms.empty()) restraints_of[part_of[r.terms.front().first]].push_back(&r);
+    if (!r.terms.empty()) restraints_of[part_of[r.terms.front().node]].push_back(&r);
 
   for (std::size_t k_part = 0; k_part < parts.size(); ++k_part) {
     const std::vector<int>& part = parts[k_part];
@@ -78,9 +78,13 @@ FloatingBodies find_floating_bodies(const Model& model, const PreparedModel& pre
     Matrix6 G = Matrix6::Zero();
     for (const Restraint* restraint : restraints_of[k_part]) {
       Vector6 r = Vector6::Zero();
-      for (const auto& [a, v] : restraint->terms) {
-        r.head<3>() += v;
-        r.tail<3>() += x[index_in_part[a]].cross(v);
+      for (const RestraintTerm& term : restraint->terms) {
+        if (term.rotation) {
+          r.tail<3>() += term.vector;
+          continue;
+        }
+        r.head<3>() += term.vector;
+        r.tail<3>() += x[index_in_part[term.node]].cross(term.vector);
       }
       G.noalias() += r * r.transpose();
     }
@@ -98,35 +102,43 @@ FloatingBodies find_floating_bodies(const Model& model, const PreparedModel& pre
 
     // The modes in nodal components (local for *TRANSFORM nodes): zero in the prescribed
     // directions (round-off of an exact null vector), candidates for pinning in the free ones.
+    // Rows: the part's dofs in order (a node's translations, then its rotations if it has them;
+    // the rotation of mode (t, w) on the scaled coordinates is w / size).
     const int n = static_cast<int>(part.size());
-    Eigen::MatrixXd W = Eigen::MatrixXd::Zero(3 * n, static_cast<int>(free_modes.size()));
+    std::vector<int> row_dof;  // local row -> active dof
+    for (int i = 0; i < n; ++i)
+      for (int c = 0; c < prepared.node_dofs(part[i]); ++c)
+        row_dof.push_back(prepared.dof(part[i], c));
+    const int rows = static_cast<int>(row_dof.size());
+    Eigen::MatrixXd W = Eigen::MatrixXd::Zero(rows, static_cast<int>(free_modes.size()));
     for (std::size_t k = 0; k < free_modes.size(); ++k)
-      for (int i = 0; i < n; ++i) {
-        Eigen::Vector3d u = rigid_motion(free_modes[k], x[i]);
+      for (int i = 0, row = 0; i < n; row += prepared.node_dofs(part[i]), ++i) {
         const Eigen::Matrix3d* axes = rotations.of(part[i]);
-        if (axes != nullptr) u = axes->transpose() * u;
-        for (int d = 0; d < 3; ++d)
-          if (!is_prescribed[3 * part[i] + d]) W(3 * i + d, static_cast<int>(k)) = u[d];
+        for (int offset = 0; offset < prepared.node_dofs(part[i]); offset += 3) {
+          Eigen::Vector3d u = offset == 0 ? rigid_motion(free_modes[k], x[i])
+                                          : Eigen::Vector3d(free_modes[k].tail<3>() / size);
+          if (axes != nullptr) u = axes->transpose() * u;
+          for (int d = 0; d < 3; ++d)
+            if (!is_prescribed[row_dof[row + offset + d]])
+              W(row + offset + d, static_cast<int>(k)) = u[d];
+        }
       }
     // The dofs that pin the free modes best: the first pivots of a column-pivoted QR of W^T over
     // the dofs the solver keeps (not prescribed, not eliminated by an equation).
     Eigen::MatrixXd candidates = W;
-    for (int i = 0; i < n; ++i)
-      for (int d = 0; d < 3; ++d)
-        if (is_known[3 * part[i] + d]) candidates.row(3 * i + d).setZero();
+    for (int row = 0; row < rows; ++row)
+      if (is_known[row_dof[row]]) candidates.row(row).setZero();
     const Eigen::ColPivHouseholderQR<Eigen::MatrixXd> qr(candidates.transpose());
-    for (std::size_t k = 0; k < free_modes.size(); ++k) {
-      const int local = qr.colsPermutation().indices()[static_cast<int>(k)];
-      fixing.push_back(3 * part[local / 3] + local % 3);
-    }
-    Eigen::MatrixXd R = W;  // back to global components
-    for (int i = 0; i < n; ++i)
-      if (const Eigen::Matrix3d* axes = rotations.of(part[i]))
-        for (int k = 0; k < R.cols(); ++k)
-          R.block<3, 1>(3 * i, k) = *axes * W.block<3, 1>(3 * i, k);
-    for (int k = 0; k < R.cols(); ++k) {
+    for (std::size_t k = 0; k < free_modes.size(); ++k)
+      fixing.push_back(row_dof[qr.colsPermutation().indices()[static_cast<int>(k)]]);
+    for (int k = 0; k < W.cols(); ++k) {  // back to global components
       Eigen::VectorXd column = Eigen::VectorXd::Zero(prepared.active_dofs());
-      for (int i = 0; i < n; ++i) column.segment<3>(3 * part[i]) = R.block<3, 1>(3 * i, k);
+      for (int row = 0; row < rows; row += 3) {
+        Eigen::Vector3d v = W.block<3, 1>(row, k);
+        if (const Eigen::Matrix3d* axes = rotations.of(prepared.node_of(row_dof[row])))
+          v = *axes * v;
+        column.segment<3>(row_dof[row]) = v;
+      }
       columns.push_back(std::move(column));
     }
   }
@@ -150,7 +162,7 @@ std::string sliding_report(const Model& model, const PreparedModel& prepared,
   std::vector<int> moved;
   Eigen::Vector3d centre = Eigen::Vector3d::Zero();
   for (int a = 0; a < prepared.active_nodes(); ++a)
-    if (u.segment<3>(3 * a).norm() > 1e-12 * u.cwiseAbs().maxCoeff()) {
+    if (u.segment<3>(prepared.dof(a, 0)).norm() > 1e-12 * u.cwiseAbs().maxCoeff()) {
       moved.push_back(a);
       const Vec3& x = model.coords[prepared.node_of_active[a]];
       centre += Eigen::Vector3d(x[0], x[1], x[2]);
@@ -169,7 +181,7 @@ std::string sliding_report(const Model& model, const PreparedModel& prepared,
     Eigen::Matrix<double, 3, 6> A;
     A << Eigen::Matrix3d::Identity(), -cross;  // u = t + w x r
     normal += A.transpose() * A;
-    rhs += A.transpose() * u.segment<3>(3 * a);
+    rhs += A.transpose() * u.segment<3>(prepared.dof(a, 0));
   }
   const Eigen::Matrix<double, 6, 1> tw = normal.ldlt().solve(rhs);
   // Components below 1e-9 of the motion are round-off of an exact axis: shown as 0.

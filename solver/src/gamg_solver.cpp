@@ -8,6 +8,7 @@
 #include <chrono>
 #include <cmath>
 #include <cstdio>
+#include <stdexcept>
 
 #include "linear_solver.hpp"
 #include "parallel.hpp"
@@ -113,6 +114,10 @@ class GamgSolver final : public LinearSolver {
   }
 
   void prepare(StiffnessMatrix& K, const DofPartition& partition) override {
+    // The node-block product and the rigid-body near-null space below assume 3 dofs per node;
+    // the analysis never picks this solver for a model with rotations (choose_solver).
+    if (context_.prepared.has_rotations())
+      throw std::logic_error("the GAMG solver was asked to solve a model with rotational dofs");
     const PhaseRecorder::Scope phase(context_.phases, "factorise");
     partition_ = partition;
     coupling_ = extract_coupling(K, partition);

@@ -42,7 +42,8 @@ std::string format_vector(Eigen::Vector3d v, double scale) {
 }
 
 // H = sum R_p^T R_p over the part's nodes, R_p = [I, -[p]x] mapping a rigid motion (t, omega) to
-// the node's displacement t + omega x p (same centroid and scaling as the restraints).
+// the node's displacement t + omega x p (same centroid and scaling as the restraints), plus
+// [0, I] (omega itself) at nodes that carry rotations.
 Matrix6 node_motions(const Model& model, const PreparedModel& prepared,
                      const std::vector<int>& part, const Eigen::Vector3d& centroid, double size) {
   Matrix6 H = Matrix6::Zero();
@@ -53,6 +54,8 @@ Matrix6 node_motions(const Model& model, const PreparedModel& prepared,
     R.leftCols<3>().setIdentity();
     R.rightCols<3>() << 0.0, p.z(), -p.y(), -p.z(), 0.0, p.x(), p.y(), -p.x(), 0.0;
     H.noalias() += R.transpose() * R;
+    if (prepared.node_dofs(a) == kMaxNodeDofs)
+      H.bottomRightCorner<3, 3>().diagonal().array() += 1.0;
   }
   return H;
 }
@@ -110,8 +113,11 @@ void check_rigid_body_modes(const Model& model, const PreparedModel& prepared,
                             const NodeGraph& graph, const std::vector<int>& prescribed) {
   std::vector<Restraint> restraints;
   restraints.reserve(prescribed.size());
-  for (int dof : prescribed)
-    restraints.push_back(Restraint{{{dof / 3, Eigen::Vector3d::Unit(dof % 3)}}});
+  for (int dof : prescribed) {
+    const int component = prepared.component(dof);
+    restraints.push_back(
+        Restraint{{{prepared.node_of(dof), Eigen::Vector3d::Unit(component % 3), component >= 3}}});
+  }
   check_rigid_body_modes(model, prepared, graph, restraints);
 }
 
@@ -125,7 +131,7 @@ void check_rigid_body_modes(const Model& model, const PreparedModel& prepared,
     for (int a : parts[k]) part_of[a] = static_cast<int>(k);
   std::vector<std::vector<const Restraint*>> restraints_of(parts.size());
   for (const Restraint& r : restraints)
-    if (!r.terms.empty()) restraints_of[part_of[r.terms.front().first]].push_back(&r);
+    if (!r.terms.empty()) restraints_of[part_of[r.terms.front().node]].push_back(&r);
 
   for (std::size_t k = 0; k < parts.size(); ++k) {
     const std::vector<int>& part = parts[k];
@@ -147,11 +153,15 @@ void check_rigid_body_modes(const Model& model, const PreparedModel& prepared,
     Matrix6 G = Matrix6::Zero();
     for (const Restraint* restraint : restraints_of[k]) {
       Vector6 r = Vector6::Zero();
-      for (const auto& [a, v] : restraint->terms) {
-        const Vec3& x = model.coords[prepared.node_of_active[a]];
+      for (const RestraintTerm& term : restraint->terms) {
+        if (term.rotation) {  // a nodal rotation sees the rigid rotation omega itself
+          r.tail<3>() += term.vector;
+          continue;
+        }
+        const Vec3& x = model.coords[prepared.node_of_active[term.node]];
         const Eigen::Vector3d p = (Eigen::Vector3d(x[0], x[1], x[2]) - centroid) / size;
-        r.head<3>() += v;
-        r.tail<3>() += p.cross(v);
+        r.head<3>() += term.vector;
+        r.tail<3>() += p.cross(term.vector);
       }
       G.noalias() += r * r.transpose();
     }
@@ -174,7 +184,10 @@ void check_rigid_body_modes(const Model& model, const PreparedModel& prepared,
                                         " do not hold that direction");
 
     // Rotations: the restraints must not all be satisfied by a rigid rotation.
-    if (!((hi - lo).maxCoeff() > 0.0)) continue;  // a single point: translations are all it has
+    const bool rotations = std::any_of(
+        part.begin(), part.end(), [&](int a) { return prepared.node_dofs(a) == kMaxNodeDofs; });
+    // A single point without rotational dofs: translations are all it has.
+    if (!((hi - lo).maxCoeff() > 0.0) && !rotations) continue;
     const std::optional<Vector6> free =
         free_rigid_motion(G, node_motions(model, prepared, part, centroid, size));
     if (!free) continue;
@@ -188,7 +201,8 @@ void check_rigid_body_modes(const Model& model, const PreparedModel& prepared,
                      "the model can rotate freely about the axis through " +
                          format_vector(through, size) + " along " + format_vector(axis, 1.0) +
                          ": the part with nodes " + node_list(model, prepared, part) +
-                         " is held only on one point or line; constrain a node off that axis");
+                         " is held only on one point or line; constrain a node off that axis" +
+                         (rotations ? std::string(" or a rotation (dofs 4-6) about it") : ""));
   }
 }
 

@@ -18,14 +18,22 @@ namespace styk::solver_detail {
 std::vector<std::vector<int>> connected_parts(const NodeGraph& graph);
 
 // Throws InputError(SourceLoc{model.source, 0}, ...) naming the free motion and up to ten nodes
-// of the part that can perform it. `prescribed` holds sorted active dof indices.
+// of the part that can perform it. `prescribed` holds sorted active dof indices. A rigid motion
+// moves the rotations of nodes that have them (a beam spinning about its own axis is a
+// mechanism).
 void check_rigid_body_modes(const Model& model, const PreparedModel& prepared,
                             const NodeGraph& graph, const std::vector<int>& prescribed);
 
-// A linear condition on displacements, sum_i v_i . u(a_i) fixed: a prescribed dof (one term, its
-// direction) or an *EQUATION (coefficient times the direction of each term's dof).
+// A linear condition on displacements and rotations, sum_i v_i . u(a_i) (or v_i . rotation(a_i))
+// fixed: a prescribed dof (one term, its direction) or an *EQUATION (coefficient times the
+// direction of each term's dof).
+struct RestraintTerm {
+  int node = 0;            // active node
+  Eigen::Vector3d vector;  // global
+  bool rotation = false;   // acts on the node's rotation, not its displacement
+};
 struct Restraint {
-  std::vector<std::pair<int, Eigen::Vector3d>> terms;  // (active node, global vector)
+  std::vector<RestraintTerm> terms;
 };
 
 // The same check for general restraints. A part is a connected component of `graph` (which links

@@ -65,13 +65,16 @@ std::vector<Restraint> ModelConstraints::restraints(const Model& model,
                                                     const std::vector<int>& prescribed) const {
   std::vector<Restraint> out;
   out.reserve(prescribed.size() + model.equations.size());
-  for (int dof : prescribed) out.push_back(Restraint{{{dof / 3, rotations_.direction(dof)}}});
+  for (int dof : prescribed)
+    out.push_back(Restraint{
+        {{prepared.node_of(dof), rotations_.direction(dof), rotations_.rotational(dof)}}});
   for (const Equation& equation : model.equations) {
     Restraint restraint;
     for (const EquationTerm& term : equation.terms) {
       const int a = prepared.active_of_node[term.node];
-      restraint.terms.emplace_back(a,
-                                   term.coefficient * rotations_.direction(3 * a + term.dof - 1));
+      const int dof = prepared.dof(a, term.dof - 1);  // checked by EquationElimination::build
+      restraint.terms.push_back(RestraintTerm{a, term.coefficient * rotations_.direction(dof),
+                                              rotations_.rotational(dof)});
     }
     out.push_back(std::move(restraint));
   }

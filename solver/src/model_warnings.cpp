@@ -8,6 +8,8 @@
 
 #include <Eigen/Eigenvalues>
 
+#include "beam_warnings.hpp"
+
 namespace styk::solver_detail {
 namespace {
 
@@ -24,8 +26,9 @@ std::string format(const char* pattern, double value) {
 }
 
 bool is_cube_solid(const TElement& element) {
-  const std::array<bool, 3> active = element.active_displacements();
-  if (!(active[0] && active[1] && active[2]) || element.section_measure() != SectionMeasure::None)
+  const DofSet active = element.active_dofs();
+  if (element.node_dofs() != 3 || !(active[0] && active[1] && active[2]) ||
+      element.section_measure() != SectionMeasure::None)
     return false;
   for (const Vec3& xi : element.natural_nodes())
     for (double c : xi)
@@ -38,6 +41,7 @@ bool is_cube_solid(const TElement& element) {
 // bulk-dominated (3D or plane strain, not plane stress).
 bool locks(const TElement& element, const Material& material) {
   if (element.section_measure() == SectionMeasure::Area) return false;  // trusses
+  if (element.section_measure() == SectionMeasure::Beam) return false;  // uniaxial fibres
   if (element.incompatible_mode_count() > 0) return false;
   if (element.rule(RuleKind::Full).size() <= element.rule(RuleKind::Reduced).size()) return false;
   Matrix6d D;
@@ -157,6 +161,10 @@ std::vector<std::string> model_warnings(const Model& model, const PreparedModel&
                        " has Poisson's ratio " + format("%g", *material.poisson) +
                        " (>= 0.45); add TECHNIQUE=SELECTIVE to the *SOLID SECTION");
   }
+
+  // Beams: shear locking of fully integrated slender beams, spurious modes (beam_warnings.hpp).
+  for (std::string& warning : beam_warnings(model, prepared))
+    warnings.push_back(std::move(warning));
 
   // Distortion: the worst element and how many are beyond the ratio.
   std::map<const TElement*, IntegrationRule> rules;

@@ -7,7 +7,9 @@
 //   than its reduced one, no incompatible modes) that is not plane stress, without
 //   TECHNIQUE=SELECTIVE;
 // - distorted elements: det J at the integration points varies by more than a factor 10 within
-//   the element (min/max < 0.1), the worst named.
+//   the element (min/max < 0.1), the worst named;
+// - beams (beam_warnings.hpp): shear locking of slender fully integrated beams, with the measured
+//   slenderness and the remedy, and spurious zero-energy modes of their integration rule.
 #pragma once
 
 #include <string>

@@ -5,11 +5,13 @@
 namespace styk::solver_detail {
 
 std::vector<std::int64_t> metis_free_dof_ordering(const NodeGraph& graph,
+                                                  const std::vector<int>& dof_offset,
                                                   const DofPartition& partition) {
   const int nodes = graph.nodes();
   auto has_free_dof = [&](int a) {
-    return partition.free_of_dof[3 * a] >= 0 || partition.free_of_dof[3 * a + 1] >= 0 ||
-           partition.free_of_dof[3 * a + 2] >= 0;
+    for (int dof = dof_offset[a]; dof < dof_offset[a + 1]; ++dof)
+      if (partition.free_of_dof[dof] >= 0) return true;
+    return false;
   };
   std::vector<idx_t> vertex_of_node(nodes, -1);
   std::vector<int> node_of_vertex;
@@ -45,8 +47,8 @@ std::vector<std::int64_t> metis_free_dof_ordering(const NodeGraph& graph,
   dof_perm.reserve(partition.free_count());
   for (idx_t k = 0; k < vertices; ++k) {
     const int a = node_of_vertex[perm[k]];
-    for (int d = 0; d < 3; ++d) {
-      const int free = partition.free_of_dof[3 * a + d];
+    for (int dof = dof_offset[a]; dof < dof_offset[a + 1]; ++dof) {
+      const int free = partition.free_of_dof[dof];
       if (free >= 0) dof_perm.push_back(free);
     }
   }

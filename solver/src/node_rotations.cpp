@@ -10,6 +10,7 @@ namespace styk::solver_detail {
 
 NodeRotations NodeRotations::from_transforms(const Model& model, const PreparedModel& prepared) {
   NodeRotations out;
+  out.dof_offset_ = prepared.dof_offset;
   if (model.transforms.empty()) return out;
   out.rotation_of_node_.assign(prepared.active_nodes(), -1);
   for (const Transform& transform : model.transforms) {
@@ -40,24 +41,29 @@ NodeRotations NodeRotations::from_transforms(const Model& model, const PreparedM
   return out;
 }
 
+int NodeRotations::node_of(int dof) const {
+  return static_cast<int>(std::upper_bound(dof_offset_.begin(), dof_offset_.end(), dof) -
+                          dof_offset_.begin()) -
+         1;
+}
+
 Eigen::Vector3d NodeRotations::direction(int dof) const {
-  const Eigen::Matrix3d* R = of(dof / 3);
-  return R != nullptr ? Eigen::Vector3d(R->col(dof % 3)) : Eigen::Vector3d::Unit(dof % 3);
+  const int a = node_of(dof);
+  const int axis = (dof - dof_offset_[a]) % 3;
+  const Eigen::Matrix3d* R = of(a);
+  return R != nullptr ? Eigen::Vector3d(R->col(axis)) : Eigen::Vector3d::Unit(axis);
 }
 
-void NodeRotations::to_local(std::vector<double>& v) const {
-  for (std::size_t a = 0; a < rotation_of_node_.size(); ++a) {
-    if (rotation_of_node_[a] < 0) continue;
-    Eigen::Map<Eigen::Vector3d> block(v.data() + 3 * a);
-    block = rotations_[rotation_of_node_[a]].transpose() * Eigen::Vector3d(block);
-  }
-}
+bool NodeRotations::rotational(int dof) const { return dof - dof_offset_[node_of(dof)] >= 3; }
 
-void NodeRotations::to_global(std::vector<double>& v) const {
+void NodeRotations::turn(std::vector<double>& v, bool to_local) const {
   for (std::size_t a = 0; a < rotation_of_node_.size(); ++a) {
     if (rotation_of_node_[a] < 0) continue;
-    Eigen::Map<Eigen::Vector3d> block(v.data() + 3 * a);
-    block = rotations_[rotation_of_node_[a]] * Eigen::Vector3d(block);
+    const Eigen::Matrix3d& R = rotations_[rotation_of_node_[a]];
+    for (int first = dof_offset_[a]; first < dof_offset_[a + 1]; first += 3) {
+      Eigen::Map<Eigen::Vector3d> block(v.data() + first);
+      block = to_local ? Eigen::Vector3d(R.transpose() * block) : Eigen::Vector3d(R * block);
+    }
   }
 }
 
@@ -73,14 +79,19 @@ void NodeRotations::rotate_stiffness(StiffnessMatrix& K) const {
       const int b = graph.adj[p];
       const Eigen::Matrix3d* Rb = of(b);
       if (Ra == nullptr && Rb == nullptr) continue;
+      const Eigen::Matrix3d& left = Ra != nullptr ? *Ra : identity;
+      const Eigen::Matrix3d& right = Rb != nullptr ? *Rb : identity;
       double* block = values.data() + K.block_start(a, b);
-      Eigen::Matrix3d Kab;
-      for (int r = 0; r < 3; ++r)
-        for (int c = 0; c < 3; ++c) Kab(r, c) = block[r * stride + c];
-      const Eigen::Matrix3d rotated =
-          (Ra != nullptr ? *Ra : identity).transpose() * Kab * (Rb != nullptr ? *Rb : identity);
-      for (int r = 0; r < 3; ++r)
-        for (int c = 0; c < 3; ++c) block[r * stride + c] = rotated(r, c);
+      // Translations and rotations of either node turn with the node's R: 3x3 sub-blocks.
+      for (int i0 = 0; i0 < K.node_dofs(a); i0 += 3)
+        for (int j0 = 0; j0 < K.node_dofs(b); j0 += 3) {
+          Eigen::Matrix3d Kab;
+          for (int r = 0; r < 3; ++r)
+            for (int c = 0; c < 3; ++c) Kab(r, c) = block[(i0 + r) * stride + j0 + c];
+          const Eigen::Matrix3d rotated = left.transpose() * Kab * right;
+          for (int r = 0; r < 3; ++r)
+            for (int c = 0; c < 3; ++c) block[(i0 + r) * stride + j0 + c] = rotated(r, c);
+        }
     }
   }
 }

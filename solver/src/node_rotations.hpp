@@ -1,8 +1,9 @@
 // *TRANSFORM: nodes whose boundary conditions, concentrated loads and equation terms are given in
 // a local system. The solver works in "nodal" dofs w: for a transformed node w = R^T u (its local
 // components), for every other node w = u; u = R w with R = [e1 e2 e3] (local axes as columns, in
-// global components). The stiffness becomes R^T K R block by block, which keeps the node-graph
-// pattern, so prescribed local dofs are eliminated like any other.
+// global components). Rotations (dofs 4..6) are vectors too and turn with the same R: a node with
+// rotations has the block diagonal diag(R, R). The stiffness becomes R^T K R block by block, which
+// keeps the node-graph pattern, so prescribed local dofs are eliminated like any other.
 #pragma once
 
 #include <vector>
@@ -28,15 +29,23 @@ class NodeRotations {
     const int r = rotation_of_node_.empty() ? -1 : rotation_of_node_[active_node];
     return r < 0 ? nullptr : &rotations_[r];
   }
-  // Global direction of nodal dof `dof` (3a + d): the d-th local axis, or the global axis.
+  // Global direction of nodal dof `dof` (component d of its node, translation or rotation): the
+  // (d mod 3)-th local axis, or the global axis.
   Eigen::Vector3d direction(int dof) const;
+  // Whether `dof` is a rotation (component 3..5 of its node).
+  bool rotational(int dof) const;
 
-  void to_local(std::vector<double>& v) const;   // v_a <- R_a^T v_a (global -> nodal)
-  void to_global(std::vector<double>& v) const;  // v_a <- R_a v_a (nodal -> global)
-  // K_ab <- R_a^T K_ab R_b for every block touching a transformed node.
+  // v_a <- R_a^T v_a (global -> nodal) and back, on the translations and rotations of each node.
+  void to_local(std::vector<double>& v) const { turn(v, true); }
+  void to_global(std::vector<double>& v) const { turn(v, false); }
+  // K_ab <- R_a^T K_ab R_b for every block touching a transformed node (3x3 sub-blocks).
   void rotate_stiffness(StiffnessMatrix& K) const;
 
  private:
+  void turn(std::vector<double>& v, bool to_local) const;
+  int node_of(int dof) const;
+
+  std::vector<int> dof_offset_;        // the dof layout (PreparedModel::dof_offset)
   std::vector<int> rotation_of_node_;  // per active node, -1 if not transformed
   std::vector<Eigen::Matrix3d> rotations_;
 };

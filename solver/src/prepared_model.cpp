@@ -1,5 +1,6 @@
 #include "prepared_model.hpp"
 
+#include <algorithm>
 #include <array>
 #include <cmath>
 
@@ -31,11 +32,29 @@ const Material& checked_material(const Model& model, int section_index) {
 void check_section_measure(const Model& model, const Element& element,
                            const TElement& formulation) {
   const Section& section = model.sections[element.section];
+  const bool beam_type = formulation.section_measure() == SectionMeasure::Beam;
+  if (beam_type && !section.beam)
+    throw InputError(section.where, "element " + std::to_string(element.id) + " of element set " +
+                                        section.elset + " is a beam (" + element.type +
+                                        "): it takes a *BEAM SECTION, not a *SOLID SECTION");
+  if (!beam_type && section.beam)
+    throw InputError(section.where, "the *BEAM SECTION of element set " + section.elset +
+                                        " covers element " + std::to_string(element.id) +
+                                        " of type " + element.type +
+                                        ", which is not a beam; use *SOLID SECTION");
   if (formulation.section_measure() == SectionMeasure::Area && !section.thickness)
     throw InputError(section.where, "the *SOLID SECTION of element set " + section.elset +
                                         " gives no cross-section area (its first data line), "
                                         "which element " + std::to_string(element.id) +
                                         " of type " + element.type + " needs");
+}
+
+// The rule element e integrates with: its section's choice for beams, the standard one else.
+RuleKind section_rule(const Model& model, int e) {
+  const Section& section = model.sections[model.elements[e].section];
+  if (section.beam && section.beam->integration == BeamIntegration::Reduced)
+    return RuleKind::Reduced;
+  return RuleKind::Full;
 }
 
 }  // namespace
@@ -52,11 +71,15 @@ PreparedModel prepare_model(const Model& model, const ElementRegistry& registry)
   prepared.formulation.resize(element_count);
   prepared.material.resize(element_count);
   prepared.ip_offset.assign(element_count + 1, 0);
+  prepared.station_offset.assign(element_count + 1, 0);
+  prepared.rule_kind.assign(element_count, RuleKind::Full);
   prepared.active_of_node.assign(model.node_count(), -1);
 
   std::vector<const Material*> material_of_section(model.sections.size(), nullptr);
-  // Per model node: which displacement components some element stiffens (bit d for direction d).
+  // Per model node: which dofs some element stiffens (bit d for component d) and how many dofs
+  // its elements carry per node.
   std::vector<unsigned char> stiffened_bits(model.node_count(), 0);
+  std::vector<unsigned char> dofs_of_node(model.node_count(), 0);
   for (int e = 0; e < element_count; ++e) {
     const Element& element = model.elements[e];
     const TElement* formulation = registry.find(element.type);
@@ -80,9 +103,17 @@ PreparedModel prepare_model(const Model& model, const ElementRegistry& registry)
     const Material*& material = material_of_section[element.section];
     if (material == nullptr) material = &checked_material(model, element.section);
     check_section_measure(model, element, *formulation);
-    const std::array<bool, 3> active = formulation->active_displacements();
-    const unsigned char bits = static_cast<unsigned char>(
-        (active[0] ? 1 : 0) | (active[1] ? 2 : 0) | (active[2] ? 4 : 0));
+    prepared.rule_kind[e] = section_rule(model, e);
+    const int node_dofs = formulation->node_dofs();
+    if (node_dofs != 3 && node_dofs != kMaxNodeDofs)
+      throw InputError(element.where, "element type " + element.type + " declares " +
+                                          std::to_string(node_dofs) +
+                                          " dofs per node; Styk supports 3 (displacements) or 6 "
+                                          "(displacements and rotations)");
+    const DofSet active = formulation->active_dofs();
+    unsigned char bits = 0;
+    for (int d = 0; d < node_dofs; ++d)
+      if (active[d]) bits = static_cast<unsigned char>(bits | (1u << d));
     prepared.formulation[e] = formulation;
     prepared.material[e] = material;
 
@@ -93,36 +124,79 @@ PreparedModel prepare_model(const Model& model, const ElementRegistry& registry)
                                             " refers to an undefined node");
       prepared.active_of_node[nodes[k]] = 0;
       stiffened_bits[nodes[k]] |= bits;
+      dofs_of_node[nodes[k]] =
+          std::max(dofs_of_node[nodes[k]], static_cast<unsigned char>(node_dofs));
     }
   }
 
-  // Integration points per element, asking each formulation once.
-  std::vector<std::pair<const TElement*, int>> rule_sizes;
+  // Integration points and stations per element, asking each formulation and rule once.
+  struct RuleSize {
+    const TElement* formulation;
+    RuleKind kind;
+    int points, stations;
+  };
+  std::vector<RuleSize> rule_sizes;
   for (int e = 0; e < element_count; ++e) {
-    int points = -1;
-    for (const auto& [formulation, size] : rule_sizes)
-      if (formulation == prepared.formulation[e]) points = size;
-    if (points < 0) {
-      points = prepared.formulation[e]->rule(RuleKind::Full).size();
-      rule_sizes.emplace_back(prepared.formulation[e], points);
-    }
-    prepared.ip_offset[e + 1] = prepared.ip_offset[e] + points;
+    const TElement* formulation = prepared.formulation[e];
+    const RuleKind kind = prepared.rule_kind[e];
+    auto known = std::find_if(rule_sizes.begin(), rule_sizes.end(), [&](const RuleSize& r) {
+      return r.formulation == formulation && r.kind == kind;
+    });
+    if (known == rule_sizes.end())
+      known = rule_sizes.insert(
+          rule_sizes.end(),
+          {formulation, kind, formulation->rule(kind).size(), formulation->section_stations(kind)});
+    prepared.ip_offset[e + 1] = prepared.ip_offset[e] + known->points;
+    prepared.station_offset[e + 1] = prepared.station_offset[e] + known->stations;
   }
 
+  prepared.dof_offset.push_back(0);
   for (int n = 0; n < model.node_count(); ++n) {
     if (prepared.active_of_node[n] < 0) continue;
-    prepared.active_of_node[n] = static_cast<int>(prepared.node_of_active.size());
+    const int a = static_cast<int>(prepared.node_of_active.size());
+    prepared.active_of_node[n] = a;
     prepared.node_of_active.push_back(n);
-    for (int d = 0; d < 3; ++d)
+    for (int d = 0; d < dofs_of_node[n]; ++d) {
       prepared.stiffened.push_back((stiffened_bits[n] >> d) & 1 ? 1 : 0);
+      prepared.node_of_dof.push_back(a);
+    }
+    prepared.dof_offset.push_back(prepared.dof_offset.back() + dofs_of_node[n]);
   }
   return prepared;
 }
 
+void PreparedModel::element_dofs(const Model& model, int e, std::vector<int>& dofs) const {
+  const int n = model.elements[e].node_count;
+  const int per_node = formulation[e]->node_dofs();
+  const int* nodes = model.element_nodes(e);
+  dofs.resize(static_cast<std::size_t>(n) * per_node);
+  for (int k = 0; k < n; ++k) {
+    const int first = dof_offset[active_of_node[nodes[k]]];
+    for (int c = 0; c < per_node; ++c) dofs[k * per_node + c] = first + c;
+  }
+}
+
+void check_output_requests(const Model& model, const PreparedModel& prepared) {
+  const bool stations = prepared.station_offset.back() > 0;
+  for (const Step& step : model.steps)
+    for (const OutputRequest& request : step.outputs)
+      for (const std::string& var : request.vars) {
+        if ((var == "UR" || var == "RM") && !prepared.has_rotations())
+          throw InputError(request.where, "output variable " + var +
+                                              " needs nodes with rotations (beam elements); no "
+                                              "node of this model carries any");
+        if ((var == "SF" || var == "SM") && !stations)
+          throw InputError(request.where, "output variable " + var +
+                                              " (section forces and moments) needs beam "
+                                              "elements; this model has none");
+      }
+}
+
 std::string describe_dof(const Model& model, const PreparedModel& prepared, int active_dof) {
-  static const char* const kDirection[] = {"ux", "uy", "uz"};
-  const int node = prepared.node_of_active[active_dof / 3];
-  return "node " + std::to_string(model.node_ids[node]) + " (" + kDirection[active_dof % 3] + ")";
+  static const char* const kComponent[] = {"ux", "uy", "uz", "rx", "ry", "rz"};
+  const int node = prepared.node_of_active[prepared.node_of(active_dof)];
+  return "node " + std::to_string(model.node_ids[node]) + " (" +
+         kComponent[prepared.component(active_dof)] + ")";
 }
 
 }  // namespace styk::solver_detail

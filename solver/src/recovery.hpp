@@ -22,8 +22,9 @@ struct RecoveryInput {
   const NodeRotations* rotations = nullptr;       // the nodal systems, or none (all global)
 };
 
-// Fills U, RF (both global components), ip_offset, S and E of `out`. With temperature changes
-// the stress is D (eps - alpha dT) and E stays the total strain.
+// Fills U, RF (both global components), UR and RM (models with rotations), ip_offset, S and E,
+// and station_offset, SF and SM (models with structural elements) of `out`. With temperature
+// changes the stress is D (eps - alpha dT) and E stays the total strain.
 void recover_increment(const Model& model, const PreparedModel& prepared,
                        const RecoveryInput& input, int threads, IncrementResult& out);
 

@@ -51,7 +51,7 @@ void scalar_face_flux(const TElement& element, const ElementGeometry& g, int fac
 }
 
 bool rule_resolves_scalar_field(const TElement& element, const IntegrationRule& rule) {
-  const std::array<bool, 3> active = element.active_displacements();
+  const DofSet active = element.active_dofs();
   const int dimensions = static_cast<int>(active[0]) + active[1] + active[2];
   return rule.size() * dimensions >= element.node_count() - 1;
 }

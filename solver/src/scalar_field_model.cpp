@@ -107,6 +107,11 @@ ScalarFieldModel prepare_scalar_field_model(const Model& model, const ElementReg
       throw InputError(element.where, element_label(element) +
                                           " has no section: add it to an element set named by "
                                           "a *SOLID SECTION");
+    if (formulation->node_dofs() != 3)
+      throw InputError(element.where, element_label(element) +
+                                          " carries rotations (a structural element); steady "
+                                          "heat and electric-potential steps take continuum "
+                                          "elements only");
     if (formulation->section_measure() == SectionMeasure::Area &&
         !model.sections[element.section].thickness)
       throw InputError(

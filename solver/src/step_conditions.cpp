@@ -13,25 +13,34 @@ int checked_dof(const Model& model, const PreparedModel& prepared, int node, int
                 const SourceLoc& where, const char* what) {
   if (node < 0 || node >= model.node_count())
     throw InputError(where, std::string(what) + " on an undefined node");
-  if (dof < 1 || dof > 3)
+  if (dof < 1 || dof > kMaxNodeDofs)
     throw InputError(where, std::string(what) + " on degree of freedom " + std::to_string(dof) +
                                 " of node " + std::to_string(model.node_ids[node]) +
-                                ": solid elements have only the displacements 1, 2, 3");
+                                ": nodes have the displacements 1, 2, 3 and, at beam nodes, the "
+                                "rotations 4, 5, 6");
   const int active = prepared.active_of_node[node];
   if (active < 0)
     throw InputError(where, std::string(what) + " on node " +
                                 std::to_string(model.node_ids[node]) +
                                 ", which belongs to no element (it has no stiffness)");
-  return 3 * active + dof - 1;
+  const int index = prepared.dof(active, dof - 1);
+  if (index < 0)
+    throw InputError(where, std::string(what) + " on degree of freedom " + std::to_string(dof) +
+                                " of node " + std::to_string(model.node_ids[node]) +
+                                ", which carries no rotations: its elements have the "
+                                "displacements 1, 2, 3 only (rotations 4, 5, 6 exist at nodes of "
+                                "beam elements)");
+  return index;
 }
 
-// "z" or "x, z": the global directions no element at active node a stiffens.
-std::string unstiffened_directions(const PreparedModel& prepared, int a) {
-  static const char* const kAxis[] = {"x", "y", "z"};
+// "z" or "x, z" or "rx, ry": the global directions no element at active node a stiffens (the
+// part of `offset` 0 = translations, 3 = rotations).
+std::string unstiffened_directions(const PreparedModel& prepared, int a, int offset) {
+  static const char* const kAxis[] = {"x", "y", "z", "rx", "ry", "rz"};
   std::string list;
   for (int d = 0; d < 3; ++d)
-    if (prepared.inactive_dof(3 * a + d))
-      list += (list.empty() ? "" : ", ") + std::string(kAxis[d]);
+    if (prepared.inactive_dof(prepared.dof(a, offset + d)))
+      list += (list.empty() ? "" : ", ") + std::string(kAxis[offset + d]);
   return list;
 }
 
@@ -56,22 +65,27 @@ std::vector<char> inactive_nodal_dofs(const Model& model, const PreparedModel& p
       if (a < 0) continue;
       Eigen::Matrix3d R;
       if (!local_axes_at(transform.axes, model.coords[node], R)) continue;  // reported elsewhere
-      int global_inactive = 0, local_inactive = 0;
-      for (int d = 0; d < 3; ++d) {
-        global_inactive += prepared.inactive_dof(3 * a + d) ? 1 : 0;
-        double stiffened_part = 0.0;  // the local axis' components along stiffened directions
-        for (int g = 0; g < 3; ++g)
-          if (!prepared.inactive_dof(3 * a + g)) stiffened_part += R(g, d) * R(g, d);
-        inactive[3 * a + d] = stiffened_part < 1e-18 ? 1 : 0;
-        local_inactive += inactive[3 * a + d];
+      // Translations and rotations turn alike (node_rotations.hpp): each triple separately.
+      for (int offset = 0; offset < prepared.node_dofs(a); offset += 3) {
+        const int first = prepared.dof(a, offset);
+        int global_inactive = 0, local_inactive = 0;
+        for (int d = 0; d < 3; ++d) {
+          global_inactive += prepared.inactive_dof(first + d) ? 1 : 0;
+          double stiffened_part = 0.0;  // the local axis' components along stiffened directions
+          for (int g = 0; g < 3; ++g)
+            if (!prepared.inactive_dof(first + g)) stiffened_part += R(g, d) * R(g, d);
+          inactive[first + d] = stiffened_part < 1e-18 ? 1 : 0;
+          local_inactive += inactive[first + d];
+        }
+        if (local_inactive != global_inactive)
+          throw InputError(transform.where,
+                           "*TRANSFORM: node " + std::to_string(model.node_ids[node]) +
+                               " belongs only to elements without stiffness along " +
+                               unstiffened_directions(prepared, a, offset) +
+                               " (plane elements, planar beams), so its local system must keep "
+                               "that direction as one of its axes (e.g. a cylindrical system "
+                               "about z)");
       }
-      if (local_inactive != global_inactive)
-        throw InputError(transform.where,
-                         "*TRANSFORM: node " + std::to_string(model.node_ids[node]) +
-                             " belongs only to elements without stiffness along " +
-                             unstiffened_directions(prepared, a) +
-                             " (plane elements), so its local system must keep that direction "
-                             "as one of its axes (e.g. a cylindrical system about z)");
     }
   }
   return inactive;
@@ -92,13 +106,13 @@ std::vector<StepConditions> accumulate_step_conditions(const Model& model,
   // A dof no element stiffens takes no load and no displacement but zero; a zero boundary value
   // is accepted silently (CalculiX decks of plane models often fix dof 3).
   auto refuse_inactive = [&](int dof, const SourceLoc& where, const std::string& what) {
-    const int node = prepared.node_of_active[dof / 3];
-    throw InputError(where, what + " on degree of freedom " + std::to_string(dof % 3 + 1) +
-                                " of node " + std::to_string(model.node_ids[node]) +
-                                ", which no element there stiffens (plane elements carry only "
-                                "ux and uy)" +
-                                (what == "boundary condition" ? "; only a zero value is accepted"
-                                                              : ""));
+    const int node = prepared.node_of_active[prepared.node_of(dof)];
+    throw InputError(where,
+                     what + " on degree of freedom " + std::to_string(prepared.component(dof) + 1) +
+                         " of node " + std::to_string(model.node_ids[node]) +
+                         ", which no element there stiffens (plane elements carry only "
+                         "ux and uy, planar beams ux, uy and rz)" +
+                         (what == "boundary condition" ? "; only a zero value is accepted" : ""));
   };
   auto prescribe = [&](std::map<int, double>& into, const Boundary& b) {
     const int dof = checked_dof(model, prepared, b.node, b.dof, b.where, "boundary condition");
@@ -128,11 +142,15 @@ std::vector<StepConditions> accumulate_step_conditions(const Model& model,
     for (const DistributedLoad& d : step.dloads) {
       if (d.element < 0 || d.element >= model.element_count())
         throw InputError(d.where, "distributed load on an undefined element");
-      const int faces = static_cast<int>(prepared.formulation[d.element]->faces().size());
-      if (d.face < 1 || d.face > faces)
-        throw InputError(d.where, "element " + std::to_string(model.elements[d.element].id) +
-                                      " (" + model.elements[d.element].type + ") has faces 1.." +
-                                      std::to_string(faces) + ", not " + std::to_string(d.face));
+      const TElement& element = *prepared.formulation[d.element];
+      const int labels = element.distributed_load_labels();
+      if (d.face < 1 || d.face > labels)
+        throw InputError(
+            d.where, "element " + std::to_string(model.elements[d.element].id) + " (" +
+                         model.elements[d.element].type + ") takes the load labels " +
+                         (labels == 0 ? std::string("none") : "P1..P" + std::to_string(labels)) +
+                         (element.faces().empty() ? "" : " (its faces)") + ", not P" +
+                         std::to_string(d.face));
       pressures[{d.element, d.face}] = d;
     }
     StepConditions conditions;

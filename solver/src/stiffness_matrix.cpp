@@ -137,29 +137,42 @@ ElementColouring colour_elements(const Model& model, const PreparedModel& prepar
 StiffnessMatrix::StiffnessMatrix(const Model& model, const PreparedModel& prepared, int threads,
                                  const std::vector<std::pair<int, int>>& extra_couplings)
     : graph_(build_node_graph(model, prepared, threads)),
-      colouring_(colour_elements(model, prepared)) {
+      colouring_(colour_elements(model, prepared)),
+      dof_offset_(prepared.dof_offset) {
   std::vector<std::pair<int, int>> extra = extra_couplings;
   std::sort(extra.begin(), extra.end());
   add_couplings(graph_, extra);
   const int nodes = graph_.nodes();
-  const std::int64_t nonzeros = 9 * static_cast<std::int64_t>(graph_.adj.size());
+  // Row widths and where each neighbour's columns start in its row.
+  column_offset_.resize(graph_.adj.size());
+  std::vector<std::int64_t> width(nodes, 0);
+  std::int64_t nonzeros = 0;
+  for (int a = 0; a < nodes; ++a) {
+    for (std::int64_t p = graph_.ptr[a]; p < graph_.ptr[a + 1]; ++p) {
+      column_offset_[p] = static_cast<int>(width[a]);
+      width[a] += node_dofs(graph_.adj[p]);
+    }
+    nonzeros += width[a] * node_dofs(a);
+  }
   if (nonzeros > INT_MAX)
     throw InputError(SourceLoc{model.source, 0},
                      "the model is too large for this build: its stiffness matrix has " +
                          std::to_string(nonzeros) + " nonzeros, more than 32-bit indices hold");
-  row_ptr_.resize(3 * static_cast<std::size_t>(nodes) + 1);
+  const int dofs = prepared.active_dofs();
+  row_ptr_.resize(static_cast<std::size_t>(dofs) + 1);
   row_ptr_[0] = 0;
-  for (int a = 0; a < nodes; ++a) {
-    const int width = static_cast<int>(3 * (graph_.ptr[a + 1] - graph_.ptr[a]));
-    for (int i = 0; i < 3; ++i) row_ptr_[3 * a + i + 1] = row_ptr_[3 * a + i] + width;
-  }
+  for (int a = 0; a < nodes; ++a)
+    for (int row = dof_offset_[a]; row < dof_offset_[a + 1]; ++row)
+      row_ptr_[row + 1] = row_ptr_[row] + static_cast<int>(width[a]);
   col_.resize(nonzeros);
   parallel_for(nodes, resolve_threads(threads), 1024, [&](int begin, int end, int) {
     for (int a = begin; a < end; ++a)
-      for (int i = 0; i < 3; ++i) {
-        int at = row_ptr_[3 * a + i];
-        for (std::int64_t p = graph_.ptr[a]; p < graph_.ptr[a + 1]; ++p)
-          for (int j = 0; j < 3; ++j) col_[at++] = 3 * graph_.adj[p] + j;
+      for (int row = dof_offset_[a]; row < dof_offset_[a + 1]; ++row) {
+        int at = row_ptr_[row];
+        for (std::int64_t p = graph_.ptr[a]; p < graph_.ptr[a + 1]; ++p) {
+          const int b = graph_.adj[p];
+          for (int j = dof_offset_[b]; j < dof_offset_[b + 1]; ++j) col_[at++] = j;
+        }
       }
   });
   values_.assign(nonzeros, 0.0);
@@ -170,7 +183,20 @@ std::int64_t StiffnessMatrix::block_start(int a, int b) const {
   const auto last = graph_.adj.begin() + graph_.ptr[a + 1];
   const auto it = std::lower_bound(first, last, b);
   if (it == last || *it != b) return -1;
-  return row_ptr_[3 * a] + 3 * (it - first);
+  return row_ptr_[dof_offset_[a]] + column_offset_[it - graph_.adj.begin()];
+}
+
+int StiffnessMatrix::node_of(int dof) const {
+  return static_cast<int>(std::upper_bound(dof_offset_.begin(), dof_offset_.end(), dof) -
+                          dof_offset_.begin()) -
+         1;
+}
+
+std::int64_t StiffnessMatrix::entry_index(int i, int j) const {
+  const int a = node_of(i), b = node_of(j);
+  const std::int64_t start = block_start(a, b);
+  if (start < 0) return -1;
+  return start + (i - dof_offset_[a]) * row_stride(a) + (j - dof_offset_[b]);
 }
 
 void StiffnessMatrix::release_values() {

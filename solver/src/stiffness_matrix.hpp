@@ -1,8 +1,10 @@
 // The global stiffness on all active dofs, stored as scalar CSR (both triangles, columns sorted)
 // whose pattern comes from the NODE graph: node a couples to node b iff an element holds both, and
-// every such pair is a dense 3x3 block. Rows 3a..3a+2 share node a's column list, so entry
-// (3a+i, 3b+j) sits at row_ptr[3a+i] + 3k + j, k = position of b in a's neighbour list. The arrays
-// are laid out as PETSc's SeqAIJ expects, so the iterative solver wraps them without copying.
+// every such pair is a dense block, dofs(a) x dofs(b) (3 or 6 each, PreparedModel's dof layout).
+// The rows of node a share its column list, so entry (dof(a, i), dof(b, j)) sits at
+// block_start(a, b) + i * row_stride(a) + j. With 3 dofs everywhere that is row_ptr[3a+i] + 3k + j,
+// k = position of b in a's neighbour list. The arrays are laid out as PETSc's SeqAIJ expects, so
+// the iterative solver wraps them without copying.
 #pragma once
 
 #include <cstdint>
@@ -39,10 +41,16 @@ class StiffnessMatrix {
   int rows() const { return static_cast<int>(row_ptr_.size()) - 1; }
   std::int64_t nonzeros() const { return row_ptr_.empty() ? 0 : row_ptr_.back(); }
 
-  // Position in values() of the 3x3 block (a, b), row i = 0: the entry (3a+i, 3b+j) is at
+  // Position in values() of the block (a, b), row i = 0: the entry (dof(a, i), dof(b, j)) is at
   // block_start(a, b) + i * row_stride(a) + j. Returns -1 when a and b do not share an element.
   std::int64_t block_start(int a, int b) const;
-  std::int64_t row_stride(int a) const { return 3 * (graph_.ptr[a + 1] - graph_.ptr[a]); }
+  std::int64_t row_stride(int a) const {
+    return row_ptr_[dof_offset_[a] + 1] - row_ptr_[dof_offset_[a]];
+  }
+  int node_dofs(int a) const { return dof_offset_[a + 1] - dof_offset_[a]; }
+  int node_of(int dof) const;  // the active node of a dof
+  // Position in values() of entry (dof i, dof j); -1 outside the pattern.
+  std::int64_t entry_index(int i, int j) const;
 
   std::vector<int>& row_ptr() { return row_ptr_; }
   std::vector<int>& col() { return col_; }
@@ -60,6 +68,8 @@ class StiffnessMatrix {
  private:
   NodeGraph graph_;
   ElementColouring colouring_;
+  std::vector<int> dof_offset_;     // the dof layout (PreparedModel::dof_offset)
+  std::vector<int> column_offset_;  // per graph.adj entry: where neighbour b's columns start
   std::vector<int> row_ptr_;
   std::vector<int> col_;
   std::vector<double> values_;

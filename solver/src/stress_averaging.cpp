@@ -111,15 +111,24 @@ Extrapolation make_extrapolation(const TElement& element, const IntegrationRule&
 
 StressAveraging::StressAveraging(const Model& model,
                                  const std::vector<const TElement*>& formulation, RuleKind kind)
+    : StressAveraging(model, formulation, std::vector<RuleKind>(formulation.size(), kind)) {}
+
+StressAveraging::StressAveraging(const Model& model,
+                                 const std::vector<const TElement*>& formulation,
+                                 const std::vector<RuleKind>& kinds)
     : model_(model), operator_of_element_(model.element_count(), 0) {
-  if (static_cast<int>(formulation.size()) != model.element_count())
-    throw std::logic_error("stress averaging: one formulation per element expected");
+  if (static_cast<int>(formulation.size()) != model.element_count() ||
+      kinds.size() != formulation.size())
+    throw std::logic_error("stress averaging: one formulation and rule per element expected");
   for (int e = 0; e < model.element_count(); ++e) {
     const TElement* element = formulation[e];
     std::size_t k = 0;
-    while (k < operators_.size() && operators_[k].first != element) ++k;
+    while (k < operators_.size() &&
+           (operators_[k].element != element || operators_[k].kind != kinds[e]))
+      ++k;
     if (k == operators_.size())
-      operators_.emplace_back(element, make_extrapolation(*element, element->rule(kind)));
+      operators_.push_back(
+          {element, kinds[e], make_extrapolation(*element, element->rule(kinds[e]))});
     operator_of_element_[e] = static_cast<int>(k);
   }
 

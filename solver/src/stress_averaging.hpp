@@ -54,9 +54,11 @@ Extrapolation make_extrapolation(const TElement& element, const IntegrationRule&
 class StressAveraging {
  public:
   // `formulation[e]` is element e's formulation; `kind` the rule the integration-point values of
-  // the increments come from.
+  // the increments come from (one for all elements, or `kinds[e]` per element).
   StressAveraging(const Model& model, const std::vector<const TElement*>& formulation,
                   RuleKind kind);
+  StressAveraging(const Model& model, const std::vector<const TElement*>& formulation,
+                  const std::vector<RuleKind>& kinds);
 
   // From inc.ip_offset, inc.S and inc.E fills S/E_element_nodes, S/E_centroid, S/E_nodal_I and
   // S/E_nodal_II (a field whose integration-point values are empty stays empty). Threaded over
@@ -66,7 +68,7 @@ class StressAveraging {
 
   // The extrapolation element e uses.
   const Extrapolation& extrapolation(int element) const {
-    return operators_[operator_of_element_[element]].second;
+    return operators_[operator_of_element_[element]].extrapolation;
   }
 
  private:
@@ -78,7 +80,12 @@ class StressAveraging {
                std::vector<Tensor6>& nodal_II) const;
 
   const Model& model_;
-  std::vector<std::pair<const TElement*, Extrapolation>> operators_;  // one per element type
+  struct Operator {
+    const TElement* element;
+    RuleKind kind;
+    Extrapolation extrapolation;
+  };
+  std::vector<Operator> operators_;  // one per element type and rule
   std::vector<int> operator_of_element_;
   // Incidence: node n appears at connectivity positions slots_[slot_offset_[n] ..
   // slot_offset_[n+1]-1]; element_of_slot_[c] is the element owning connectivity position c.

@@ -46,6 +46,7 @@ std::vector<double> assemble_thermal_load(const Model& model, const PreparedMode
   struct Scratch {
     ElementGeometry geometry;
     Eigen::VectorXd dT, fe;
+    std::vector<int> dofs;
     std::vector<double> f;  // this worker's share of the global vector
   };
   std::vector<Scratch> scratch(threads);
@@ -57,13 +58,11 @@ std::vector<double> assemble_thermal_load(const Model& model, const PreparedMode
       if (s.dT.isZero(0.0)) continue;  // no change, no load (and no *EXPANSION needed)
       element_geometry(model, e, s.geometry);
       const ElementOptions options{model.sections[model.elements[e].section].selective_volumetric};
-      prepared.formulation[e]->thermal_load(s.geometry, *prepared.material[e], RuleKind::Full, s.dT,
-                                            s.fe, options);
-      const int* nodes = model.element_nodes(e);
-      for (int k = 0; k < model.elements[e].node_count; ++k) {
-        const int a = prepared.active_of_node[nodes[k]];
-        for (int d = 0; d < 3; ++d) s.f[3 * a + d] += s.fe(3 * k + d);
-      }
+      prepared.formulation[e]->thermal_load(s.geometry, *prepared.material[e],
+                                            prepared.rule_kind[e], s.dT, s.fe, options);
+      prepared.element_dofs(model, e, s.dofs);
+      for (std::size_t i = 0; i < s.dofs.size(); ++i)
+        s.f[s.dofs[i]] += s.fe(static_cast<Eigen::Index>(i));
     }
   });
   std::vector<double> f(prepared.active_dofs(), 0.0);

@@ -67,6 +67,22 @@ INTERACTION = "*SURFACE INTERACTION, NAME=DRY\n*SURFACE BEHAVIOR, PRESSURE-OVERC
 CONTACT_PAIR = "*CONTACT PAIR, INTERACTION=DRY\nTOP_FACE, BOTTOM_FACE\n"
 
 
+# Pieces for the beam decks: a two-element B31 frame over nodes 1 -> 2 -> 3 of NODES.
+BEAM_ELEMENTS = "*ELEMENT, TYPE=B31, ELSET=FRAME\n1, 1, 2\n2, 2, 3\n"
+BEAM_SETS = "*NSET, NSET=FIXED\n1\n*NSET, NSET=TIP\n3\n"
+BEAM_SECTION = "*BEAM SECTION, ELSET=FRAME, MATERIAL=STEEL, SECTION=RECT\n0.1, 0.2\n"
+BEAM_BOUNDARY = "*BOUNDARY\nFIXED, 1, 6\n"
+BEAM_STEP = "*STEP\n*STATIC\n*CLOAD\nTIP, 3, -1.\n*END STEP\n"
+
+
+def beam(**replace):
+    """The beam deck with parts replaced."""
+    parts = dict(ELEMENTS=BEAM_ELEMENTS, SETS=BEAM_SETS, SECTION=BEAM_SECTION,
+                 BOUNDARY=BEAM_BOUNDARY, STEP=BEAM_STEP)
+    parts.update(replace)
+    return base(**parts)
+
+
 def base(**replace):
     """The base deck with parts replaced: base(STEP='...')."""
     parts = dict(NODES=NODES, ELEMENTS=ELEMENTS, SETS=SETS, MATERIAL=MATERIAL, SECTION=SECTION,
@@ -165,8 +181,8 @@ DECKS = [
     ("dload_bad_label", "a distributed load type Styk does not read",
      base(STEP="*STEP\n*STATIC\n*DLOAD\n>>BLOCK, GRAV, 9.81, 0., 0., -1.\n*END STEP\n"), 1,
      "load label 'GRAV' is not supported"),
-    ("dof_out_of_range", "a rotational dof on a solid",
-     base(BOUNDARY="*BOUNDARY\n>>FIXED, 1, 6\n"), 1, "last dof 6 is out of range"),
+    ("dof_out_of_range", "a dof beyond the six a node can have",
+     base(BOUNDARY="*BOUNDARY\n>>FIXED, 1, 7\n"), 1, "last dof 7 is out of range"),
     ("temperature_dof", "dof 11 (temperature) for every step of a mechanical deck",
      base(BOUNDARY="*BOUNDARY\nFIXED, 1, 3\n>>TIP, 11, 11, 20.\n"), 1,
      "dof 11 (temperature) is prescribed for every step"),
@@ -238,11 +254,42 @@ DECKS = [
     ("temperature_unknown_node", "a step temperature on a node that does not exist",
      base(STEP="*STEP\n*STATIC\n*TEMPERATURE\nTIP, 100.\n>>99, 100.\n*END STEP\n"), 1,
      "node 99 is not defined"),
+    # Beams and *BEAM SECTION (docs/input.md).
+    ("beam_section_shape", "a *BEAM SECTION shape Styk does not read",
+     beam(SECTION=">>*BEAM SECTION, ELSET=FRAME, MATERIAL=STEEL, SECTION=I\n"
+                  "0.1, 0.2, 0.1, 0.1, 0.01, 0.01\n"), 1, "SECTION=I is not supported"),
+    ("beam_section_dimensions", "a RECT section with one dimension",
+     beam(SECTION="*BEAM SECTION, ELSET=FRAME, MATERIAL=STEEL, SECTION=RECT\n>>0.1\n"), 1,
+     "expected the dimensions of SECTION=RECT (a, b)"),
+    ("beam_section_offset", "a beam section offset (CalculiX OFFSET1)",
+     beam(SECTION=">>*BEAM SECTION, ELSET=FRAME, MATERIAL=STEEL, SECTION=RECT, OFFSET1=0.05\n"
+                  "0.1, 0.2\n"), 1, "section offsets are not supported"),
+    ("beam_section_on_solid", "a *BEAM SECTION covering a brick",
+     base(SECTION=">>*BEAM SECTION, ELSET=BLOCK, MATERIAL=STEEL, SECTION=RECT\n0.1, 0.2\n"), 1,
+     "which is not a beam: use *SOLID SECTION"),
+    ("solid_section_on_beam", "a *SOLID SECTION covering beams",
+     beam(SECTION=">>*SOLID SECTION, ELSET=FRAME, MATERIAL=STEEL\n"), 1,
+     "a beam: beams take a *BEAM SECTION"),
+    ("beam_full_on_reduced_type", "INTEGRATION=FULL on CalculiX's always-reduced B31R",
+     beam(ELEMENTS=BEAM_ELEMENTS.replace("B31", "B31R"),
+          SECTION=">>*BEAM SECTION, ELSET=FRAME, MATERIAL=STEEL, SECTION=RECT, INTEGRATION=FULL\n"
+                  "0.1, 0.2\n"), 1, "whose name fixes reduced integration"),
+    ("solver_beam_axis_parallel", "a vertical beam with the default first section axis (0, 0, -1)",
+     beam(ELEMENTS="*ELEMENT, TYPE=B31, ELSET=FRAME\n1, 1, 5\n",
+          SETS="*NSET, NSET=FIXED\n1\n*NSET, NSET=TIP\n5\n",
+          SECTION=">>" + BEAM_SECTION, STEP=BEAM_STEP.replace("TIP, 3", "TIP, 1")), 1,
+     "is parallel to the axis of element 1"),
+    ("solver_beam_planar_p1", "a line load along axis 1 of a planar beam (out of its plane)",
+     beam(ELEMENTS=BEAM_ELEMENTS.replace("B31", "B21"), BOUNDARY="*BOUNDARY\nFIXED, 1, 6\n",
+          STEP="*STEP\n*STATIC\n*DLOAD\n>>FRAME, P1, 1.\n*END STEP\n"), 1,
+     "P1 has nothing to load"),
     # Valid input the solver cannot act on yet: refused by name and line, never ignored.
     ("solver_contact_iterative", "a contact model asking for the iterative solver",
      base(SECTION=SECTION + CONTACT_SURFACES + INTERACTION + CONTACT_PAIR,
           STEP="*STEP\n>>*STATIC, SOLVER=ITERATIVE CHOLESKY\n*CLOAD\nTIP, 3, -1.\n*END STEP\n"), 1,
      "contact analysis needs the direct solver"),
+    ("solver_rotation_on_solid", "rotations (dofs 4-6) at nodes of solid elements only",
+     base(BOUNDARY="*BOUNDARY\n>>FIXED, 1, 6\n"), 1, "which carries no rotations"),
     ("solver_equation_prescribed", "an equation eliminating a dof that a step also prescribes",
      base(BOUNDARY=BOUNDARY + "*EQUATION\n>>2\n2, 3, 1., 3, 3, -1.\n",
           STEP="*STEP\n*STATIC\n*BOUNDARY\n2, 3, 3, 0.01\n*END STEP\n"), 1,

@@ -53,6 +53,18 @@ const std::vector<DeckReader::KeywordSpec>& DeckReader::keywords() {
         {"TECHNIQUE", false, V::Required}},  // Styk-only (B-bar)
        &DeckReader::on_solid_section,
        kData},
+      {"BEAM SECTION",
+       S::Model,
+       {{"ELSET", true, V::Required},
+        {"MATERIAL", true, V::Required},
+        {"SECTION", true, V::Required},
+        {"INTEGRATION", false, V::Required},  // Styk-only (REDUCED | FULL)
+        {"OFFSET1", false, V::Required},      // CalculiX; only 0 is accepted
+        {"OFFSET2", false, V::Required},
+        {"ORIENTATION", false, V::Required},  // CalculiX; refused by name
+        {"NODAL THICKNESS", false, V::None}},
+       &DeckReader::on_beam_section,
+       kData},
       {"BOUNDARY", S::Anywhere, {{"OP", false, V::Required}}, &DeckReader::on_boundary, kData},
       {"STEP",
        S::Model,
@@ -367,18 +379,19 @@ void DeckReader::finish() {
 void DeckReader::assign_sections() {
   for (std::size_t s = 0; s < model_.sections.size(); ++s) {
     Section& section = model_.sections[s];
+    const std::string keyword = section.beam ? "*BEAM SECTION" : "*SOLID SECTION";
     section.material_index = model_.material_index(section.material);
     if (section.material_index < 0) {
       std::string names;
       for (const Material& m : model_.materials) names += (names.empty() ? "" : ", ") + m.name;
-      throw InputError(section.where, "*SOLID SECTION names material " + section.material +
+      throw InputError(section.where, keyword + " names material " + section.material +
                                           ", which is not defined; materials: " +
                                           (names.empty() ? "none are defined" : names));
     }
     const ElementSet* set = model_.find_elset(section.elset);
     if (!set)
       throw InputError(section.where,
-                       "*SOLID SECTION names element set " + section.elset +
+                       keyword + " names element set " + section.elset +
                            ", which is not defined; element sets: " + some_names(model_.elsets));
     for (int e : set->elements) {
       Element& element = model_.elements[e];
@@ -389,6 +402,29 @@ void DeckReader::assign_sections() {
                              ") already has a section (ELSET=" + other.elset + " at " +
                              other.where.str() + "); an element belongs to one section only");
       }
+      // Beams take a *BEAM SECTION and only they do.
+      if (const TElement* formulation = registry_.find(element.type)) {
+        const bool beam_type = formulation->section_measure() == SectionMeasure::Beam;
+        if (beam_type && !section.beam)
+          throw InputError(section.where, "*SOLID SECTION of element set " + section.elset +
+                                              " covers element " + std::to_string(element.id) +
+                                              " (" + element.type +
+                                              "), a beam: beams take a *BEAM SECTION");
+        if (!beam_type && section.beam)
+          throw InputError(section.where, "*BEAM SECTION of element set " + section.elset +
+                                              " covers element " + std::to_string(element.id) +
+                                              " (" + element.type +
+                                              "), which is not a beam: use *SOLID SECTION");
+        if (section.beam && section.beam->integration == BeamIntegration::Full &&
+            formulation->rule(RuleKind::Full).size() == formulation->rule(RuleKind::Reduced).size())
+          throw InputError(section.where, "*BEAM SECTION, INTEGRATION=FULL of element set " +
+                                              section.elset + ": element " +
+                                              std::to_string(element.id) + " is a " + element.type +
+                                              ", whose name fixes reduced integration (CalculiX's "
+                                              "R types); use " +
+                                              element.type.substr(0, element.type.size() - 1) +
+                                              " for full integration");
+      }
       element.section = static_cast<int>(s);
     }
   }
@@ -396,8 +432,8 @@ void DeckReader::assign_sections() {
     if (element.section < 0)
       throw InputError(element.where, "element " + std::to_string(element.id) + " (" +
                                           element.type +
-                                          ") has no section: no *SOLID SECTION names an element "
-                                          "set containing it");
+                                          ") has no section: no *SOLID SECTION or *BEAM SECTION "
+                                          "names an element set containing it");
 }
 
 }  // namespace styk::inp

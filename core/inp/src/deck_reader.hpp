@@ -1,6 +1,7 @@
 // DeckReader: the state of reading one deck into a Model. The keyword table (deck_reader.cpp)
 // checks where a keyword may appear and which parameters it takes, then calls one handler per
-// keyword; the handlers live in mesh_keywords.cpp, property_keywords.cpp, step_keywords.cpp,
+// keyword; the handlers live in mesh_keywords.cpp, property_keywords.cpp, beam_keywords.cpp,
+// step_keywords.cpp,
 // contact_keywords.cpp, constraint_keywords.cpp, thermal_keywords.cpp and
 // scalar_keywords.cpp.
 #pragma once
@@ -59,6 +60,8 @@ class DeckReader {
   void on_density(const KeywordLine& kw);
   void on_expansion(const KeywordLine& kw);
   void on_solid_section(const KeywordLine& kw);
+  // beam_keywords.cpp
+  void on_beam_section(const KeywordLine& kw);
   // step_keywords.cpp
   void on_step(const KeywordLine& kw);
   void on_static(const KeywordLine& kw);

@@ -74,19 +74,20 @@ int displacement_dof(const DataLine& line, std::size_t index, const std::string&
   if (dof == 11)
     throw InputError(line.where, what +
                                      " 11 (temperature) is not supported yet; Styk reads dofs "
-                                     "1..3 (ux, uy, uz)");
-  if (dof < 1 || dof > 3)
+                                     "1..6 (ux, uy, uz, rx, ry, rz)");
+  if (dof < 1 || dof > 6)
     throw InputError(line.where, what + " " + std::to_string(dof) +
-                                     " is out of range; Styk reads dofs 1..3 (ux, uy, uz)");
+                                     " is out of range; Styk reads dofs 1..6 (ux, uy, uz, rx, "
+                                     "ry, rz)");
   return static_cast<int>(dof);
 }
 
 int boundary_dof(const DataLine& line, std::size_t index, const std::string& what) {
   const std::int64_t dof = integer_field(line, index, what);
-  if ((dof < 1 || dof > 3) && dof != 9 && dof != 11)
+  if ((dof < 1 || dof > 6) && dof != 9 && dof != 11)
     throw InputError(line.where, what + " " + std::to_string(dof) +
-                                     " is out of range; Styk reads dofs 1..3 (ux, uy, uz), 11 "
-                                     "(temperature) and 9 (electric potential)");
+                                     " is out of range; Styk reads dofs 1..6 (ux, uy, uz, rx, "
+                                     "ry, rz), 11 (temperature) and 9 (electric potential)");
   return static_cast<int>(dof);
 }
 

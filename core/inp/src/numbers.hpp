@@ -12,10 +12,11 @@ namespace styk::inp {
 // Field `index` (0-based) of `line`; `what` names it in messages ("x coordinate", "node id").
 double real_field(const DataLine& line, std::size_t index, const std::string& what);
 std::int64_t integer_field(const DataLine& line, std::size_t index, const std::string& what);
-// A displacement degree of freedom 1..3; 11 (temperature) is named as not supported.
+// A mechanical degree of freedom 1..6 (displacements, rotations); 11 (temperature) is named as
+// not supported. Whether the node carries it (rotations: beam nodes) is the solver's check.
 int displacement_dof(const DataLine& line, std::size_t index, const std::string& what);
-// A *BOUNDARY dof: 1..3 (displacement), 11 (temperature) or 9 (electric potential); whether it
-// fits the step is checked when the deck is complete.
+// A *BOUNDARY dof: 1..6 (displacement, rotation), 11 (temperature) or 9 (electric potential);
+// whether it fits the step is checked when the deck is complete.
 int boundary_dof(const DataLine& line, std::size_t index, const std::string& what);
 // A user id: an integer >= 1.
 Id id_field(const DataLine& line, std::size_t index, const std::string& what);

@@ -25,26 +25,27 @@ bool op_new(const KeywordLine& kw) {
 std::string dof_name(int dof) {
   if (dof == 11) return "dof 11 (temperature)";
   if (dof == 9) return "dof 9 (electric potential)";
-  return "dof " + std::to_string(dof) + " (displacement)";
+  return "dof " + std::to_string(dof) + (dof > 3 ? " (rotation)" : " (displacement)");
 }
 
 // Whether `dof` belongs to a step of `kind`.
 bool dof_fits(int dof, StepKind kind) {
   const int scalar = scalar_dof(kind);
-  return scalar == 0 ? dof >= 1 && dof <= 3 : dof == scalar;
+  return scalar == 0 ? dof >= 1 && dof <= 6 : dof == scalar;
 }
 
 std::string what_step_takes(StepKind kind) {
   const int scalar = scalar_dof(kind);
   return scalar == 0
-             ? std::string("mechanical steps take dofs 1..3")
+             ? std::string("mechanical steps take dofs 1..6")
              : std::string(procedure_keyword(kind)) + " steps take " + dof_name(scalar) + " only";
 }
 
 // The output variables of *NODE PRINT / *EL PRINT / *NODE FILE / *EL FILE per step kind
 // (*CONTACT PRINT's own variables belong to mechanical steps).
 const std::vector<std::string>& variables(StepKind kind) {
-  static const std::vector<std::string> kStatic = {"U", "RF", "S", "E", "CSTR", "CDIS", "CSTATUS"};
+  static const std::vector<std::string> kStatic = {"U",  "RF", "UR",   "RM",   "S",      "E",
+                                                   "SF", "SM", "CSTR", "CDIS", "CSTATUS"};
   static const std::vector<std::string> kHeat = {"NT", "RFL", "HFL"};
   static const std::vector<std::string> kElectric = {"EPOT", "RECUR", "ECD"};
   return kind == StepKind::HeatTransfer         ? kHeat

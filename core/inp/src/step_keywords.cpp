@@ -120,7 +120,7 @@ void DeckReader::on_boundary(const KeywordLine& kw) {
     const int first = boundary_dof(*line, 1, "first dof");
     const bool has_last = line->fields.size() > 2 && !line->fields[2].empty();
     const int last = has_last ? boundary_dof(*line, 2, "last dof") : first;
-    if ((first > 3 || last > 3) && last != first)
+    if ((first > 6 || last > 6) && last != first)
       throw InputError(line->where, "dofs " + std::to_string(first) + " to " +
                                         std::to_string(last) +
                                         ": a scalar-field dof (9, 11) is given alone, e.g. '" +
@@ -172,8 +172,8 @@ void DeckReader::read_output(const KeywordLine& kw, OutputRequest::Kind kind) {
   // Scalar-field variables (NT, RFL, HFL heat; EPOT, RECUR, ECD electric) are matched with the
   // step's procedure once the deck is complete (scalar_keywords.cpp).
   const std::vector<std::string> allowed =
-      nodal ? std::vector<std::string>{"U", "RF", "NT", "RFL", "EPOT", "RECUR"}
-            : std::vector<std::string>{"S", "E", "HFL", "ECD"};
+      nodal ? std::vector<std::string>{"U", "RF", "UR", "RM", "NT", "RFL", "EPOT", "RECUR"}
+            : std::vector<std::string>{"S", "E", "SF", "SM", "HFL", "ECD"};
   OutputRequest request;
   request.kind = kind;
   request.where = kw.where;

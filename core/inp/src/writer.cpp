@@ -4,6 +4,7 @@
 #include <optional>
 #include <string>
 
+#include "styk/core/beam_section.hpp"
 #include "styk/core/step_kind.hpp"
 #include "writer_parts.hpp"
 
@@ -85,6 +86,23 @@ void write_conductivity(std::ostream& out, const char* keyword,
         << num(v[0]) << ", " << num(v[1]) << ", " << num(v[2]) << '\n';
 }
 
+// *BEAM SECTION as CalculiX reads it; INTEGRATION= only when the deck gave it (Styk-only:
+// CalculiX warns "parameter not recognized" and goes on).
+void write_beam_section(const Section& s, std::ostream& out) {
+  const BeamSection& beam = *s.beam;
+  out << "*BEAM SECTION, ELSET=" << s.elset << ", MATERIAL=" << s.material
+      << ", SECTION=" << beam_shape_name(beam.shape);
+  if (beam.integration_given)
+    out << ", INTEGRATION=" << (beam.integration == BeamIntegration::Full ? "FULL" : "REDUCED");
+  out << '\n';
+  for (std::size_t k = 0; k < beam.dimensions.size(); ++k)
+    out << (k > 0 ? ", " : "") << num(beam.dimensions[k]);
+  out << '\n';
+  if (beam.direction_given)
+    out << num(beam.direction[0]) << ", " << num(beam.direction[1]) << ", "
+        << num(beam.direction[2]) << '\n';
+}
+
 void write_properties(const Model& model, std::ostream& out) {
   for (const Material& m : model.materials) {
     out << "*MATERIAL, NAME=" << m.name << '\n';
@@ -97,6 +115,10 @@ void write_properties(const Model& model, std::ostream& out) {
     write_conductivity(out, "*ELECTRICAL CONDUCTIVITY", m.electrical_conductivity);
   }
   for (const Section& s : model.sections) {
+    if (s.beam) {
+      write_beam_section(s, out);
+      continue;
+    }
     out << "*SOLID SECTION, ELSET=" << s.elset << ", MATERIAL=" << s.material
         << (s.selective_volumetric ? ", TECHNIQUE=SELECTIVE" : "") << '\n';
     if (s.thickness) out << num(*s.thickness) << '\n';

@@ -76,26 +76,53 @@ class DatPrinter {
          << "\n\n";
   }
 
+  // The nodal vector fields *NODE PRINT takes: U and RF as ccx prints them, UR and RM (nodes
+  // with rotations, beams) in the same layout.
+  struct NodalVector {
+    const char* name;
+    const char* header;
+    const char* total_header;  // nullptr: no TOTALS line (ccx sums forces only)
+    const std::vector<Vec3> IncrementResult::*member;
+  };
+  static const NodalVector* nodal_vector(const std::string& var) {
+    static const NodalVector kVectors[] = {
+        {"U", "displacements (vx,vy,vz)", nullptr, &IncrementResult::U},
+        {"RF", "forces (fx,fy,fz)", "total force (fx,fy,fz)", &IncrementResult::RF},
+        {"UR", "rotations (rx,ry,rz)", nullptr, &IncrementResult::UR},
+        {"RM", "moments (mx,my,mz)", "total moment (mx,my,mz)", &IncrementResult::RM},
+    };
+    for (const NodalVector& v : kVectors)
+      if (var == v.name) return &v;
+    return nullptr;
+  }
+
   void print_nodes(const OutputRequest& request, const IncrementResult& inc) {
     const std::vector<int> nodes = node_rows(request);
     const std::string set = request.set.empty() ? kWholeModel : request.set;
     for (const std::string& var : request.vars) {
-      if (var != "U" && var != "RF")
+      const NodalVector* vector = nodal_vector(var);
+      if (vector == nullptr)
         throw InputError(request.where, "*NODE PRINT: variable " + var +
-                                            " cannot be printed to the .dat file (Styk prints U "
-                                            "and RF)");
-      const bool displacement = var == "U";
-      const std::vector<Vec3>& field = displacement ? inc.U : inc.RF;
-      if (field.size() != model_.node_ids.size())
+                                            " cannot be printed to the .dat file (Styk prints U, "
+                                            "RF, UR and RM)");
+      const std::vector<Vec3>& field = inc.*vector->member;
+      if (field.size() != model_.node_ids.size()) {
+        if (var == "UR" || var == "RM")
+          throw InputError(request.where, "*NODE PRINT: " + var +
+                                              " needs nodes with rotations (beam elements); "
+                                              "the model has none");
         throw std::runtime_error("*NODE PRINT asks for " + var + " but the results of " +
                                  increment_label(inc) + " hold no " + var + " for every node");
-      header(displacement ? "displacements (vx,vy,vz)" : "forces (fx,fy,fz)", set, inc.total_time);
+      }
+      header(vector->header, set, inc.total_time);
       Vec3 total{0.0, 0.0, 0.0};  // global components, as ccx sums them
       for (const int n : nodes) {
         write_id(model_.node_ids[n]);
         const Eigen::Matrix3d* R = local_axes(n);
         Vec3 shown = field[n];
-        if (R != nullptr)  // a *TRANSFORM node: local components, marked " L" as ccx does
+        // A *TRANSFORM node: local components (rotations turn like displacements), marked " L"
+        // as ccx does.
+        if (R != nullptr)
           for (int k = 0; k < 3; ++k)
             shown[k] = R->col(k).dot(Eigen::Vector3d(field[n][0], field[n][1], field[n][2]));
         for (int k = 0; k < 3; ++k) {
@@ -105,8 +132,8 @@ class DatPrinter {
         out_ << (R != nullptr ? " L\n" : "\n");
       }
       // ccx prints totals for forces only, whatever TOTALS= says for other variables.
-      if (request.totals && !displacement) {
-        header("total force (fx,fy,fz)", set, inc.total_time);
+      if (request.totals && vector->total_header != nullptr) {
+        header(vector->total_header, set, inc.total_time);
         out_ << "      ";
         for (int k = 0; k < 3; ++k) out_ << ' ' << io::fortran_e13_6(total[k]);
         out_ << '\n';
@@ -118,10 +145,14 @@ class DatPrinter {
     const std::vector<int> elements = element_rows(request);
     const std::string set = request.set.empty() ? kWholeModel : request.set;
     for (const std::string& var : request.vars) {
+      if (var == "SF" || var == "SM") {
+        print_stations(request, var, set, elements, inc);
+        continue;
+      }
       if (var != "S" && var != "E")
         throw InputError(request.where, "*EL PRINT: variable " + var +
-                                            " cannot be printed to the .dat file (Styk prints S "
-                                            "and E)");
+                                            " cannot be printed to the .dat file (Styk prints S, "
+                                            "E, SF and SM)");
       const bool stress = var == "S";
       if (request.position == OutputRequest::Position::Centroidal) {
         print_centroids(var, set, elements, stress ? inc.S_centroid : inc.E_centroid, inc);
@@ -151,6 +182,31 @@ class DatPrinter {
         }
       }
     }
+  }
+
+  // SF / SM: the section forces or moments of the set's beam elements at their stations (the
+  // layout of the stress block with three values; elements without stations print nothing).
+  void print_stations(const OutputRequest& request, const std::string& var, const std::string& set,
+                      const std::vector<int>& elements, const IncrementResult& inc) {
+    const bool forces = var == "SF";
+    const std::vector<Vec3>& field = forces ? inc.SF : inc.SM;
+    if (inc.station_offset.size() != model_.elements.size() + 1 ||
+        field.size() != static_cast<std::size_t>(inc.station_offset.back()))
+      throw InputError(request.where, "*EL PRINT: " + var +
+                                          " (section forces and moments) needs beam elements; "
+                                          "the results hold none");
+    header(forces ? "section forces (elem, integ.pnt.,sf1,sf2,sf3)"
+                  : "section moments (elem, integ.pnt.,sm1,sm2,sm3)",
+           set, inc.total_time);
+    for (const int e : elements)
+      for (int p = inc.station_offset[e]; p < inc.station_offset[e + 1]; ++p) {
+        write_id(model_.elements[e].id);
+        char point[16];
+        std::snprintf(point, sizeof point, " %3d", p - inc.station_offset[e] + 1);
+        out_ << point;
+        for (const double v : field[p]) out_ << ' ' << io::fortran_e13_6(v);
+        out_ << '\n';
+      }
   }
 
   // POSITION=CENTROIDAL: one row per element, no integration-point column.

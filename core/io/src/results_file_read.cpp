@@ -16,6 +16,7 @@
 #include "results_rows.hpp"
 #include "results_scalar.hpp"
 #include "results_schema.hpp"
+#include "results_structural.hpp"
 #include "styk/io/results_file.hpp"
 
 namespace styk {
@@ -152,6 +153,7 @@ IncrementResult read_increment(hid_t group, const std::string& label, const Mode
   }
   io::read_contact(group, label, model, inc);
   io::read_scalar(group, label, model, inc);
+  io::read_structural(group, label, model, inc);
   return inc;
 }
 
@@ -194,6 +196,7 @@ ResultsFileContents read_contents(hid_t file, const std::string& path) {
     read_nodes(mesh.get(), where, contents.model);
     read_elements(mesh.get(), where, contents.model);
     read_sets(mesh.get(), where, contents.model);
+    io::read_beam_sections(mesh.get(), where, contents.model);
   }
   read_steps(file, contents.model, contents.results);
   return contents;

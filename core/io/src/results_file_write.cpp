@@ -12,6 +12,7 @@
 #include "results_rows.hpp"
 #include "results_scalar.hpp"
 #include "results_schema.hpp"
+#include "results_structural.hpp"
 #include "styk/io/results_file.hpp"
 #include "temp_file.hpp"
 
@@ -43,6 +44,8 @@ void check_sizes(const Model& model, const IncrementResult& inc) {
   if (!inc.RF.empty() && inc.RF.size() != nodes)
     complain(std::to_string(inc.RF.size()) + " reaction forces for " + std::to_string(nodes) +
              " nodes");
+  if (const std::string error = io::structural_size_error(model, inc); !error.empty())
+    complain(error);
   for (const io::schema::RecoveredField& field : io::schema::kRecoveredFields) {
     using Per = io::schema::FieldPer;
     const std::size_t rows = (inc.*field.member).size();
@@ -121,6 +124,7 @@ void write_mesh(hid_t file, const Model& model) {
     h5::write_int64(elements.get(), "connectivity", connectivity);
     h5::write_int64(elements.get(), "offsets", offsets);
   }
+  io::write_beam_sections(mesh.get(), model);
   const h5::Handle sets = h5::create_group(mesh.get(), "sets");
   const h5::Handle node_sets = h5::create_group(sets.get(), "nodes");
   for (const auto& [name, set] : model.nsets)
@@ -155,6 +159,7 @@ void write_increment(hid_t steps, const IncrementResult& inc) {
   }
   io::write_contact(group.get(), inc);
   io::write_scalar(group.get(), inc);
+  io::write_structural(group.get(), inc);
 }
 
 void write_contents(hid_t file, const Model& model, const Results& results) {

@@ -16,6 +16,7 @@ enum class RowsOf {
   Element,
   ElementNode,
   IntegrationPoint,
+  Station,  // beam section forces and moments: per element by station_offsets
   ContactNode,
   ContactPair,
   Balance,
@@ -91,8 +92,10 @@ RowsOf rows_of(const std::string& group, const std::string& name, std::uint64_t 
     if (name == "pair_force" || name == "pair_moment") return RowsOf::ContactPair;
     return name == "equilibrium" ? RowsOf::Balance : RowsOf::ContactNode;
   }
-  if (name == "U" || name == "RF" || name == "value" || name == "reaction" || name == "flux_nodal")
+  if (name == "U" || name == "RF" || name == "UR" || name == "RM" || name == "value" ||
+      name == "reaction" || name == "flux_nodal")
     return RowsOf::Node;
+  if (name == "SF" || name == "SM") return RowsOf::Station;
   if (name == "S" || name == "E" || name == "gradient" || name == "flux")
     return RowsOf::IntegrationPoint;
   for (const schema::RecoveredField& field : schema::kRecoveredFields)
@@ -130,6 +133,8 @@ std::string row_name(hid_t file, const std::string& dataset_path, std::uint64_t 
       return ids.element_part("/model/elements/offsets", "its node", row);
     case RowsOf::IntegrationPoint:
       return ids.element_part(increment + "/ip_offsets", "integration point", row);
+    case RowsOf::Station:
+      return ids.element_part(increment + "/station_offsets", "station", row);
     case RowsOf::ContactNode:
       return ids.contact_node(group, row);
     case RowsOf::ContactPair:

@@ -9,6 +9,7 @@
 #include <limits>
 #include <stdexcept>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include "base64.hpp"
@@ -88,7 +89,7 @@ std::string increment_label(const IncrementResult& inc) {
 
 void check_sizes(const Model& model, const IncrementResult& inc) {
   const std::size_t nodes = model.node_ids.size();
-  for (const auto* field : {&inc.U, &inc.RF})
+  for (const auto* field : {&inc.U, &inc.RF, &inc.UR, &inc.RM})
     if (!field->empty() && field->size() != nodes)
       throw std::runtime_error("results of " + increment_label(inc) + " hold " +
                                std::to_string(field->size()) + " nodal vectors for " +
@@ -212,6 +213,9 @@ VtuExportSummary write_vtu(const std::string& path, const Model& model,
     out << "      <PointData>\n";
     if (inc != nullptr && !inc->U.empty()) writer.array("U", 3, flatten(inc->U));
     if (inc != nullptr && !inc->RF.empty()) writer.array("RF", 3, flatten(inc->RF));
+    // Rotations and reaction moments of models with beams.
+    if (inc != nullptr && !inc->UR.empty()) writer.array("UR", 3, flatten(inc->UR));
+    if (inc != nullptr && !inc->RM.empty()) writer.array("RM", 3, flatten(inc->RM));
     if (inc != nullptr && !inc->S_nodal_I.empty())
       write_tensor_array(writer, "S_nodal_I", inc->S_nodal_I);
     if (inc != nullptr && !inc->S_nodal_II.empty())
@@ -244,6 +248,25 @@ VtuExportSummary write_vtu(const std::string& path, const Model& model,
         means.push_back(s);
       }
       write_tensor_array(writer, "S_ip_mean", means);
+    }
+    // Beam section forces and moments, the mean over the element's stations (NaN elsewhere).
+    if (inc != nullptr && !inc->SF.empty()) {
+      using Named = std::pair<const char*, const std::vector<Vec3>*>;
+      for (const auto& [name, field] : {Named{"SF", &inc->SF}, Named{"SM", &inc->SM}}) {
+        std::vector<Vec3> means;
+        means.reserve(exported.size());
+        for (const int e : exported) {
+          const int first = inc->station_offset[e], last = inc->station_offset[e + 1];
+          Vec3 v{0.0, 0.0, 0.0};
+          for (int p = first; p < last; ++p)
+            for (int k = 0; k < 3; ++k) v[k] += (*field)[p][k];
+          const double scale =
+              last > first ? 1.0 / (last - first) : std::numeric_limits<double>::quiet_NaN();
+          for (double& c : v) c *= scale;
+          means.push_back(v);
+        }
+        writer.array(name, 3, flatten(means));
+      }
     }
     out << "      </CellData>\n";
 

@@ -221,6 +221,7 @@ void Scene::build_geometry() {
   if (drawn > 0) {
     request.displacement = &increment_->U;
     request.scale = drawn;
+    if (!increment_->UR.empty()) request.rotation = &increment_->UR;  // beams turn their sections
   }
   frame_.geometry = render::build_geometry(*skin_, request);
   if (point_field_)

@@ -143,6 +143,8 @@ std::string drawable_data(const Model& model, const IncrementResult& inc) {
   std::vector<std::string> held;
   if (inc.U.size() == model.coords.size() && !inc.U.empty()) held.push_back("U");
   if (inc.RF.size() == model.coords.size() && !inc.RF.empty()) held.push_back("RF");
+  if (inc.UR.size() == model.coords.size() && !inc.UR.empty()) held.push_back("UR");
+  if (inc.RM.size() == model.coords.size() && !inc.RM.empty()) held.push_back("RM");
   const auto tensors = [&](const char* q, const TensorArrays& a) {
     std::vector<std::string> ways;
     if (!a.element_nodes->empty()) ways.push_back("none");
@@ -253,7 +255,7 @@ std::string averaging_name(Averaging averaging) {
 
 std::vector<std::string> field_names() {
   std::vector<std::string> names;
-  for (const char* v : {"U", "RF"})
+  for (const char* v : {"U", "RF", "UR", "RM"})
     for (const char* s : {"mag", "x", "y", "z"}) names.push_back(std::string(v) + "." + s);
   for (const char* q : {"S", "E"}) {
     for (const char* s : {"11", "22", "33", "12", "13", "23", "p1", "p2", "p3"})
@@ -285,10 +287,18 @@ ScalarField evaluate_field(const Model& model, const IncrementResult& inc, const
     return evaluate_contact_field(model, inc, quantity, suffix, drawable_data(model, inc),
                                   contact_pair);
 
-  if (quantity == "U" || quantity == "RF") {
+  if (quantity == "U" || quantity == "RF" || quantity == "UR" || quantity == "RM") {
     const int component = vector_component(suffix);
     if (component < 0) throw unknown();
-    const std::vector<Vec3>& data = quantity == "U" ? inc.U : inc.RF;
+    const std::vector<Vec3>& data = quantity == "U"    ? inc.U
+                                    : quantity == "RF" ? inc.RF
+                                    : quantity == "UR" ? inc.UR
+                                                       : inc.RM;
+    if (data.empty() && (quantity == "UR" || quantity == "RM"))
+      throw InputError({}, "step " + std::to_string(inc.step) + " increment " +
+                               std::to_string(inc.increment) + " holds no " + quantity +
+                               " (rotations exist in models with beam elements); it holds: " +
+                               drawable_data(model, inc));
     if (data.size() != model.coords.size())
       throw InputError({}, "step " + std::to_string(inc.step) + " increment " +
                                std::to_string(inc.increment) + " holds " +
@@ -320,6 +330,15 @@ ScalarField evaluate_field(const Model& model, const IncrementResult& inc, const
                                        : TensorArrays{&inc.E_element_nodes, &inc.E_nodal_I,
                                                       &inc.E_nodal_II, &inc.E_centroid, &inc.E};
     ScalarField field = tensor_field(model, inc, stress ? "S" : "E", arrays, f, averaging);
+    // Beams are coloured from their fibre tensors (beam_geometry.hpp).
+    const bool beams = std::any_of(model.sections.begin(), model.sections.end(),
+                                   [](const Section& s) { return s.beam.has_value(); });
+    const std::vector<Tensor6>& points = stress ? inc.S : inc.E;
+    if (beams && !points.empty() && inc.ip_offset.size() == model.elements.size() + 1) {
+      field.point_offset = inc.ip_offset;
+      field.point_tensors = points;
+      field.tensor_value = f;
+    }
     field.name = quantity + "." + suffix;
     if (suffix == "max_principal") field.name = quantity + ".p1";
     if (suffix == "mid_principal") field.name = quantity + ".p2";

@@ -4,6 +4,7 @@
 #include <cmath>
 #include <limits>
 
+#include "beam_geometry.hpp"
 #include "face_shape.hpp"
 #include "line_geometry.hpp"
 
@@ -367,8 +368,12 @@ SkinModel::SkinModel(const Model& model, const ElementRegistry& registry,
     skin.color = layer.color;
     skin.elements = filter_elements(model, layer.elements, filter);
     skin.faces = extract_skin(model, formulations_, skin.elements);
-    for (int e : skin.elements)
-      if (is_line_element(*formulations_[e])) skin.lines.push_back(e);
+    for (int e : skin.elements) {
+      if (is_drawn_beam(model, *formulations_[e], e))
+        skin.beams.push_back(e);
+      else if (is_line_element(*formulations_[e]))
+        skin.lines.push_back(e);
+    }
     std::fill(used.begin(), used.end(), 0);
     for (int e : skin.elements) {
       const int* nodes = model.element_nodes(e);
@@ -389,9 +394,15 @@ SkinModel::SkinModel(const Model& model, const ElementRegistry& registry,
       lo[k] = std::min(lo[k], model.coords[n][k]), hi[k] = std::max(hi[k], model.coords[n][k]);
   }
   if (seen) {
+    // Beam sections reach beyond their nodes.
+    double radius = 0.0;
+    for (const LayerSkin& layer : layers_)
+      radius = std::max(radius, largest_beam_section_radius(model, layer.beams));
     double d2 = 0.0;
-    for (int k = 0; k < 3; ++k)
+    for (int k = 0; k < 3; ++k) {
+      lo[k] -= radius, hi[k] += radius;
       centre_[k] = 0.5 * (lo[k] + hi[k]), d2 += (hi[k] - lo[k]) * (hi[k] - lo[k]);
+    }
     size_ = std::sqrt(d2);
   }
 }
@@ -427,6 +438,10 @@ FrameGeometry build_geometry(const SkinModel& skin, const GeometryRequest& rq) {
     if (!emit_edges(g, edges, layer.color, crease_cos)) g.closed = false;
     if (!tessellate.oriented()) g.closed = false;
     add_line_elements(skin, layer, rq, g.origin, g.bars);
+    if (!layer.beams.empty() && rq.beam_sections) {
+      add_beam_elements(skin, layer, rq, g);
+      g.closed = false;  // the tubes are drawn without back-face culling
+    }
     if (!rq.points) continue;
     for (int node : layer.nodes) {
       float t = -1.0f;
@@ -438,6 +453,7 @@ FrameGeometry build_geometry(const SkinModel& skin, const GeometryRequest& rq) {
   if (rq.outline) {
     GeometryRequest undeformed;
     undeformed.points = false;
+    undeformed.beam_sections = false;  // beams: their axes below
     undeformed.feature_angle_degrees = rq.feature_angle_degrees;
     if (rq.hide_undefined_faces) {  // the outline of the same faces
       undeformed.field = rq.field;
@@ -447,6 +463,8 @@ FrameGeometry build_geometry(const SkinModel& skin, const GeometryRequest& rq) {
     FrameGeometry base = build_geometry(skin, undeformed);
     g.outline = std::move(base.features);
     g.outline.insert(g.outline.end(), base.bars.begin(), base.bars.end());  // undeformed bars
+    for (const SkinModel::LayerSkin& layer : skin.layers())
+      add_beam_axes(skin, layer, g.origin, g.outline);
     for (Vertex& v : g.outline)
       v.color[0] = kOutline.r, v.color[1] = kOutline.g, v.color[2] = kOutline.b;
   }
@@ -505,6 +523,11 @@ std::array<double, 2> field_range(const SkinModel& skin, const ScalarField& fiel
         const Element& element = model.elements[e];
         for (int k = 0; k < element.node_count; ++k) visit(field.values[element.first_node + k]);
       }
+  }
+  // Beams coloured by fibre tensors: the values over their sections.
+  for (const SkinModel::LayerSkin& layer : skin.layers()) {
+    const std::array<double, 2> beams = beam_field_range(skin, layer.beams, field);
+    if (beams[0] <= beams[1]) visit(beams[0]), visit(beams[1]);
   }
   if (lo > hi) return {0.0, 0.0};
   return {lo, hi};

@@ -213,6 +213,7 @@ GeometryRequest RenderJob::request(double fraction) const {
     request.displacement = &increment_->U;
     request.scale = scale;
     request.outline = options_.undeformed_outline;
+    if (!increment_->UR.empty()) request.rotation = &increment_->UR;  // beams turn their sections
   }
   request.field = field_.get();
   request.colors = field_ ? &colors_ : nullptr;

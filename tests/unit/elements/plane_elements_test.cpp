@@ -93,7 +93,7 @@ TEST_P(PlaneFamily, ThreeInPlaneRigidModesAndNoStiffnessOnUz) {
     EXPECT_EQ(K.row(3 * a + 2).cwiseAbs().maxCoeff(), 0.0);
     EXPECT_EQ(K.col(3 * a + 2).cwiseAbs().maxCoeff(), 0.0);
   }
-  EXPECT_EQ(element->active_displacements(), (std::array<bool, 3>{true, true, false}));
+  EXPECT_EQ(element->active_dofs(), (DofSet{true, true, false, false, false, false}));
   EXPECT_EQ(element->section_measure(), SectionMeasure::Thickness);
   // The stiffness is linear in the thickness.
   Eigen::MatrixXd K1;

@@ -37,7 +37,8 @@ TEST(T3D2, StiffnessIsEAOverLAlongTheBar) {
   // bar's own axis is a rotation of the nodes perpendicular to it: all zero energy).
   EXPECT_EQ(test::zero_eigenvalue_count(K), 5);
   EXPECT_EQ(element.section_measure(), SectionMeasure::Area);
-  EXPECT_EQ(element.active_displacements(), (std::array<bool, 3>{true, true, true}));
+  EXPECT_EQ(element.active_dofs(), (DofSet{true, true, true, false, false, false}));
+  EXPECT_EQ(element.node_dofs(), 3);
   EXPECT_TRUE(element.faces().empty());
 }
 

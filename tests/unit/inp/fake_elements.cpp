@@ -20,6 +20,35 @@ std::vector<FaceDef> wedge_faces() {
           {{2, 5, 3, 0}, 0, -1.0}};
 }
 
+// A 2-node beam for the *BEAM SECTION checks: takes a beam section; `reduced_only` as CalculiX's
+// R types (the same rule for both kinds).
+class FakeBeam : public TElement {
+ public:
+  FakeBeam(std::string name, bool reduced_only)
+      : name_(std::move(name)), reduced_only_(reduced_only) {}
+  std::string name() const override { return name_; }
+  std::string description() const override { return "fake beam " + name_ + " for reader tests"; }
+  int node_count() const override { return 2; }
+  const std::vector<Vec3>& natural_nodes() const override { throw std::logic_error("fake"); }
+  const std::vector<FaceDef>& faces() const override { return faces_; }
+  int node_dofs() const override { return 6; }
+  SectionMeasure section_measure() const override { return SectionMeasure::Beam; }
+  int distributed_load_labels() const override { return 2; }
+  void der(const Vec3&, Eigen::Ref<Eigen::VectorXd>, Eigen::Ref<Eigen::MatrixXd>) const override {
+    throw std::logic_error("fake");
+  }
+  IntegrationRule rule(RuleKind kind) const override {
+    const int points = kind == RuleKind::Full && !reduced_only_ ? 2 : 1;
+    return IntegrationRule{"fake", std::vector<Vec3>(points), std::vector<double>(points, 1.0)};
+  }
+  int face_rule_order() const override { throw std::logic_error("fake"); }
+
+ private:
+  std::string name_;
+  bool reduced_only_;
+  std::vector<FaceDef> faces_;
+};
+
 class FakeElement : public TElement {
  public:
   FakeElement(std::string name, int nodes, std::vector<FaceDef> faces)
@@ -47,6 +76,9 @@ ElementRegistry fake_registry() {
   ElementRegistry registry;
   registry.add(std::make_unique<FakeElement>("C3D8", 8, hexahedron_faces()), "test");
   registry.add(std::make_unique<FakeElement>("C3D20", 20, hexahedron_faces()), "test");
+  registry.add(std::make_unique<FakeBeam>("B21", false), "test");
+  registry.add(std::make_unique<FakeBeam>("B31", false), "test");
+  registry.add(std::make_unique<FakeBeam>("B31R", true), "test");
   return registry;
 }
 

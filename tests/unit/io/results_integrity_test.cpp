@@ -318,7 +318,7 @@ TEST_F(ResultsIntegrity, RandomByteFlipsAreRefusedOrChangeNothing) {
 }
 
 // The writer refuses non-finite values in any dataset or real attribute, naming the dataset and
-// the node / element and integration point, and writes nothing (an older file stays in place).
+// the node / element and integration point (or beam station), and writes nothing (an older file stays in place).
 TEST_F(ResultsIntegrity, WriterRefusesNonFiniteValuesNamingTheEntity) {
   const ResultsFileContents contents = read_results_file(good_);
   const std::string path = dir_ + "/nan.styk.h5";
@@ -340,6 +340,20 @@ TEST_F(ResultsIntegrity, WriterRefusesNonFiniteValuesNamingTheEntity) {
        },
        "dataset /steps/step_1/increment_1/S_nodal_I: node 7, component 1 is +Inf (2 values of "
        "the dataset are not finite numbers)"},
+      {[&](Results& r) {  // rotations of a model with beams: per node
+         IncrementResult& inc = r.increments[1];
+         inc.UR.assign(inc.U.size(), Vec3{0.0, 0.0, 0.0});
+         inc.UR[3][0] = nan;
+       },
+       "dataset /steps/step_2/increment_1/UR: node 4, component 1 is NaN, not a finite number"},
+      {[&](Results& r) {  // section forces: per element by station_offsets (element 1: 2 stations)
+         IncrementResult& inc = r.increments[0];
+         inc.station_offset.assign(contents.model.elements.size() + 1, 2);
+         inc.station_offset[0] = 0;
+         inc.SF.assign(2, Vec3{0.0, 0.0, 0.0});
+         inc.SF[1][2] = -inf;
+       },
+       "dataset /steps/step_1/increment_1/SF: element 1, station 2, component 3 is -Inf"},
       {[&](Results& r) { r.increments[1].contact[2].pressure = nan; },
        "dataset /steps/step_2/increment_1/contact/pressure: contact slave node 7 is NaN"},
       {[&](Results& r) { r.increments[1].total_time = nan; },

@@ -24,9 +24,15 @@
 //   S6 xi=-1.
 // - Plane elements (CPS/CPE) live in the x-y plane on natural (xi, eta) (zeta = 0); their faces
 //   are their edges P1..P4, and they keep 3 dofs per node but stiffen only ux, uy
-//   (active_displacements()). Trusses (T3D2) use xi only. Both customise the kinematics through
+//   (active_dofs()). Trusses (T3D2) use xi only. Both customise the kinematics through
 //   point_measure(), face_quadrature() and complete_strain(), which solids inherit unchanged.
-// - Element matrices are dense, dof order (node 0: x y z, node 1: x y z, ...).
+// - Degrees of freedom per node (node_dofs()): 3 (ux, uy, uz) for continuum elements, 6 (ux, uy,
+//   uz, rx, ry, rz: small rotations about the global axes, Abaqus/CalculiX dofs 4..6) for beams and
+//   shells. Element matrices are dense in the element's own dof order: node 0 (its node_dofs()
+//   components), node 1, ... A node of the model carries the most dofs any of its elements has.
+// - Structural elements (beams) integrate section resultants, not a 3D stress field: they override
+//   the template methods themselves (stiffness, thermal_load, internal_force, pressure_load,
+//   strains_stresses), which are virtual for that reason; continuum elements keep the defaults.
 #pragma once
 
 #include <array>
@@ -41,6 +47,11 @@ namespace styk {
 
 using Matrix6d = Eigen::Matrix<double, 6, 6>;
 
+// The largest number of dofs a node carries (3 translations + 3 rotations).
+inline constexpr int kMaxNodeDofs = 6;
+// Per node dof (index = dof - 1: ux, uy, uz, rx, ry, rz), whether an element stiffens it.
+using DofSet = std::array<bool, kMaxNodeDofs>;
+
 // Which of the element's rules to integrate with. Full is the element's standard rule, what the
 // solver uses: for the reduced-integration types (C3D8R, C3D20R) both kinds are the reduced rule,
 // because the element name fixes it.
@@ -53,10 +64,10 @@ struct ElementOptions {
   bool selective_volumetric = false;
 };
 
-// What the element's section must give on its first data line (*SOLID SECTION): nothing for
-// solids, the out-of-plane thickness of plane elements (default 1, as in CalculiX), the
-// cross-section area of trusses (required).
-enum class SectionMeasure { None, Thickness, Area };
+// What the element's section must give: nothing for solids, the out-of-plane thickness of plane
+// elements (first data line of *SOLID SECTION, default 1, as in CalculiX), the cross-section area
+// of trusses (required), a *BEAM SECTION for beams.
+enum class SectionMeasure { None, Thickness, Area, Beam };
 
 struct IntegrationRule {
   std::string label;                    // e.g. "3x3x3 Gauss"
@@ -83,6 +94,10 @@ struct ElementGeometry {
   // The section's geometric datum: thickness of plane elements, cross-section area of trusses
   // (SectionMeasure); ignored by solids. Must be positive where it is used.
   double cross_section = 1.0;
+  // The element's section (the model owns it), for elements that need more than one number
+  // (SectionMeasure::Beam: the *BEAM SECTION shape, dimensions and first section axis). May be
+  // null for the others.
+  const Section* section = nullptr;
 };
 
 class TElement {
@@ -96,11 +111,17 @@ class TElement {
   virtual const std::vector<Vec3>& natural_nodes() const = 0;
   virtual const std::vector<FaceDef>& faces() const = 0;  // faces()[0] is S1
 
-  // Which displacement components (ux, uy, uz) the element stiffens: a solver dof that no
-  // element stiffens is inactive (plane elements: uz). Default: all three.
-  virtual std::array<bool, 3> active_displacements() const { return {true, true, true}; }
+  // Dofs per node in the element matrices: 3 (ux, uy, uz) or 6 (ux, uy, uz, rx, ry, rz).
+  virtual int node_dofs() const { return 3; }
+  // Which of the node dofs the element stiffens: a solver dof that no element stiffens is
+  // inactive (plane elements: uz; planar beams: uz, rx, ry). Default: the three translations.
+  // Entries beyond node_dofs() must be false.
+  virtual DofSet active_dofs() const { return {true, true, true, false, false, false}; }
   // What the section must give (ElementGeometry::cross_section). Default: nothing.
   virtual SectionMeasure section_measure() const { return SectionMeasure::None; }
+  // How many distributed-load labels P1..Pn *DLOAD may use on the element: its faces (uniform
+  // pressure on face Sk) by default; beams: P1, P2 (force per length along section axes 1, 2).
+  virtual int distributed_load_labels() const { return static_cast<int>(faces().size()); }
 
   // --- DER: shape functions N (n) and natural derivatives dN (n x 3) at xi ----------------------
   virtual void der(const Vec3& xi, Eigen::Ref<Eigen::VectorXd> N,
@@ -148,47 +169,61 @@ class TElement {
   virtual void complete_strain(const Material& material, double thermal_strain,
                                Eigen::Matrix<double, 6, 1>& engineering) const;
 
-  // --- template methods ------------------------------------------------------------------------
+  // --- section resultants (structural elements; none for continuum elements) -------------------
+  // Stations of rule `kind`: the points along the element where section forces are reported.
+  virtual int section_stations(RuleKind kind) const;
+  // Section forces (stations x 3: SF1 axial, SF2 and SF3 transverse shear along section axes 2
+  // and 1) and moments (stations x 3: SM1, SM2 bending about axes 1 and 2, SM3 torque) in the
+  // displaced state u (m), with the thermal strain of `nodal_dT` (n, may be null) removed.
+  virtual void section_resultants(const ElementGeometry& g, const Material& material, RuleKind kind,
+                                  const Eigen::Ref<const Eigen::VectorXd>& u,
+                                  Eigen::MatrixXd& forces, Eigen::MatrixXd& moments,
+                                  const Eigen::VectorXd* nodal_dT = nullptr) const;
+
+  // --- template methods (virtual for structural elements; see the file comment) ----------------
+  // Sizes: n = node_count(), m = node_dofs() * n element dofs (3n for continuum elements).
   // Cartesian derivatives dNdx (n x 3) and det J at xi. Throws InputError naming the element and
   // the point when det J <= 0 (inverted or degenerate element); `point` is 1-based for messages.
   double jacobian(const ElementGeometry& g, const Eigen::Ref<const Eigen::MatrixXd>& dN,
                   Eigen::Ref<Eigen::MatrixXd> dNdx, int point) const;
 
-  // Stiffness K (3n x 3n) with the given rule (incompatible modes condensed, stabilisation added).
-  void stiffness(const ElementGeometry& g, const Material& material, RuleKind kind,
-                 Eigen::MatrixXd& K, const ElementOptions& options = {}) const;
+  // Stiffness K (m x m) with the given rule (incompatible modes condensed, stabilisation added).
+  virtual void stiffness(const ElementGeometry& g, const Material& material, RuleKind kind,
+                         Eigen::MatrixXd& K, const ElementOptions& options = {}) const;
 
-  // Thermal load f (3n) = integral of B^T D eps_th dV, eps_th = alpha dT (1, 1, 1, 0, 0, 0), with
+  // Thermal load f (m) = integral of B^T D eps_th dV, eps_th = alpha dT (1, 1, 1, 0, 0, 0), with
   // dT interpolated from the nodal temperature changes `nodal_dT` (n; T - T_initial, so the
   // constant coefficient alpha = *EXPANSION needs no reference temperature). A material without
   // *EXPANSION is an InputError unless every dT is zero.
-  void thermal_load(const ElementGeometry& g, const Material& material, RuleKind kind,
-                    const Eigen::Ref<const Eigen::VectorXd>& nodal_dT, Eigen::VectorXd& f,
-                    const ElementOptions& options = {}) const;
+  virtual void thermal_load(const ElementGeometry& g, const Material& material, RuleKind kind,
+                            const Eigen::Ref<const Eigen::VectorXd>& nodal_dT, Eigen::VectorXd& f,
+                            const ElementOptions& options = {}) const;
 
-  // Internal force f (3n) = integral of B^T sigma dV (+ stabilisation forces) of the element in
-  // the displaced state u (3n), = K u - f_thermal; what reactions are made of.
-  void internal_force(const ElementGeometry& g, const Material& material, RuleKind kind,
-                      const Eigen::Ref<const Eigen::VectorXd>& u, Eigen::VectorXd& f,
-                      const ElementOptions& options = {},
-                      const Eigen::VectorXd* nodal_dT = nullptr) const;
+  // Internal force f (m) = integral of B^T sigma dV (+ stabilisation forces) of the element in
+  // the displaced state u (m), = K u - f_thermal; what reactions are made of.
+  virtual void internal_force(const ElementGeometry& g, const Material& material, RuleKind kind,
+                              const Eigen::Ref<const Eigen::VectorXd>& u, Eigen::VectorXd& f,
+                              const ElementOptions& options = {},
+                              const Eigen::VectorXd* nodal_dT = nullptr) const;
 
-  // Consistent nodal forces (3n) of a uniform pressure p on face `face` (0-based: 0 = S1);
-  // positive p pushes into the element.
-  void pressure_load(const ElementGeometry& g, int face, double p, Eigen::VectorXd& f) const;
+  // Consistent nodal forces (m) of the distributed load of label P(face + 1) with magnitude p:
+  // for continuum elements a uniform pressure on face `face` (0-based: 0 = S1), positive p
+  // pushing into the element; beams: a force per length along section axis face + 1.
+  virtual void pressure_load(const ElementGeometry& g, int face, double p,
+                             Eigen::VectorXd& f) const;
 
   // Equivalent nodal areas A_i = integral of N_i dA over a face (SPEC eq. 2.9), one per element
   // node (zero off the face).
   void nodal_areas(const ElementGeometry& g, int face, Eigen::VectorXd& area) const;
 
   // Strains (tensor components) and stresses at the integration points of `kind`, one row each
-  // (n_points x 6), from the element displacement vector u (3n). With nodal temperature changes
+  // (n_points x 6), from the element displacement vector u (m). With nodal temperature changes
   // (`nodal_dT`, n, may be null) the stress is D (eps - eps_th); the strain reported stays the
   // total strain eps. Incompatible modes are recovered from u before the strains are formed.
-  void strains_stresses(const ElementGeometry& g, const Material& material, RuleKind kind,
-                        const Eigen::Ref<const Eigen::VectorXd>& u, Eigen::MatrixXd& strain,
-                        Eigen::MatrixXd& stress, const ElementOptions& options = {},
-                        const Eigen::VectorXd* nodal_dT = nullptr) const;
+  virtual void strains_stresses(const ElementGeometry& g, const Material& material, RuleKind kind,
+                                const Eigen::Ref<const Eigen::VectorXd>& u, Eigen::MatrixXd& strain,
+                                Eigen::MatrixXd& stress, const ElementOptions& options = {},
+                                const Eigen::VectorXd* nodal_dT = nullptr) const;
 };
 
 // Gauss-Legendre points and weights on [-1, 1], n = 1..6.

@@ -62,11 +62,28 @@ struct Material {
   SourceLoc where;
 };
 
+// *BEAM SECTION: a standard cross-section of beam elements (CalculiX/Abaqus; the shapes,
+// dimensions and section constants are in styk/core/beam_section.hpp).
+enum class BeamShape { Rect, Circ, Pipe, Box };
+// How a beam's section terms are integrated along its axis (Styk-only INTEGRATION= of *BEAM
+// SECTION): Reduced, the default, is Abaqus' rule (1 point for B21/B31, 2 for B22/B32); Full
+// integrates exactly on a straight element (2 and 3 points) and locks in shear when slender.
+enum class BeamIntegration { Reduced, Full };
+struct BeamSection {
+  BeamShape shape = BeamShape::Rect;
+  std::vector<double> dimensions;  // first data line (beam_section.hpp)
+  Vec3 direction{0.0, 0.0, -1.0};  // approximate first section axis n1 (second data line)
+  bool direction_given = false;
+  BeamIntegration integration = BeamIntegration::Reduced;
+  bool integration_given = false;  // INTEGRATION= appeared on the keyword line
+};
+
 struct Section {
   std::string elset;          // upper-case
   std::string material;       // upper-case
   int material_index = -1;
   std::optional<double> thickness;  // for plane and truss elements (first data line)
+  std::optional<BeamSection> beam;  // set for a *BEAM SECTION (beam elements)
   // Styk-only: integrate the volumetric part of the strain selectively (B-bar, mean dilatation)
   // against volumetric locking in near-incompressible materials.
   bool selective_volumetric = false;
@@ -74,7 +91,8 @@ struct Section {
 };
 
 // Prescribed value of one degree of freedom (1-based dof as in the deck: 1..3 = ux, uy, uz;
-// 11 = temperature, 9 = electric potential in scalar-field steps).
+// 4..6 = rotations rx, ry, rz at nodes of beam elements; 11 = temperature, 9 = electric potential
+// in scalar-field steps).
 struct Boundary {
   int node = 0;               // node index
   int dof = 1;
@@ -84,7 +102,7 @@ struct Boundary {
 
 struct ConcentratedLoad {
   int node = 0;               // node index
-  int dof = 1;                // 1..3; *CFLUX 11 (heat flow), *CECUR 9 (current)
+  int dof = 1;                // 1..3 forces, 4..6 moments; *CFLUX 11 (heat flow), *CECUR 9
   double value = 0.0;
   SourceLoc where;
 };
@@ -193,7 +211,7 @@ struct Transform {
 // dof (its coefficient is non-zero); at least two terms.
 struct EquationTerm {
   int node = 0;                    // node index
-  int dof = 1;                     // 1..3 (in the node's *TRANSFORM system if it has one)
+  int dof = 1;                     // 1..6 (in the node's *TRANSFORM system if it has one)
   double coefficient = 0.0;
 };
 struct Equation {

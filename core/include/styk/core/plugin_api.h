@@ -37,8 +37,12 @@ extern "C" {
  * incompatible-mode and stabilisation hooks (new virtual functions); 3 = TElement gained
  * active_displacements(), section_measure() and the kinematics hooks point_measure(),
  * face_quadrature(), complete_strain() (plane and truss elements), ElementGeometry gained
- * cross_section. */
-#define STYK_PLUGIN_ABI_VERSION 3u
+ * cross_section; 4 = rotational dofs: TElement gained node_dofs() and active_dofs() (replacing
+ * active_displacements()), distributed_load_labels(), section_stations() and
+ * section_resultants() (beam section forces), and its template methods (stiffness,
+ * thermal_load, internal_force, pressure_load, strains_stresses) became virtual; ElementGeometry
+ * gained section; SectionMeasure gained Beam. */
+#define STYK_PLUGIN_ABI_VERSION 4u
 
 /* The name of the entry point, for dlsym. */
 #define STYK_PLUGIN_ENTRY_NAME "styk_plugin_register"

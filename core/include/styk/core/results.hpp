@@ -63,6 +63,18 @@ struct IncrementResult {
   double total_time = 1.0;      // time accumulated over the steps
   std::vector<Vec3> U;          // displacement per node
   std::vector<Vec3> RF;         // reaction force per node (zero where no dof is prescribed)
+  // Rotation (rx, ry, rz; small, about the global axes) and reaction moment per node, in models
+  // whose nodes carry rotations (beams); empty otherwise. Zero at nodes without rotations.
+  std::vector<Vec3> UR;
+  std::vector<Vec3> RM;
+  // Section resultants of structural elements (beams) at their stations: element e owns
+  // stations station_offset[e] .. station_offset[e+1]-1 (none for continuum elements). SF = SF1
+  // axial force, SF2 and SF3 transverse shear forces along section axes 2 and 1; SM = SM1, SM2
+  // bending moments about section axes 1 and 2, SM3 torque (Abaqus' names and order). All three
+  // empty in models without structural elements.
+  std::vector<int> station_offset;
+  std::vector<Vec3> SF;
+  std::vector<Vec3> SM;
   // Integration-point values: element e owns points ip_offset[e] .. ip_offset[e+1]-1.
   std::vector<int> ip_offset;
   std::vector<Tensor6> S;       // stress

@@ -5,7 +5,7 @@
 //   measure is det J2 x thickness, the thickness being the section's first data line
 //   (ElementGeometry::cross_section; 1 when absent, as in CalculiX).
 // - Strains: B has the rows 11, 22 and 12 only; eps33 = gamma13 = gamma23 = 0 in B, so uz has no
-//   stiffness (active_displacements() = ux, uy) and the solver drops it.
+//   stiffness (active_dofs() = ux, uy) and the solver drops it.
 // - Plane strain: the 3D D on that B, so S33 = nu (S11 + S22) (- E alpha dT) and E33 = 0.
 //   Plane stress: D condensed for sigma33 = 0 (row and column 33 zero), so S33 = 0, and the
 //   reported E33 = -nu/(1-nu) (E11 + E22) + (1+nu)/(1-nu) alpha dT (complete_strain()).
@@ -27,7 +27,7 @@ class PlaneElement : public TElement {
 
   PlaneKind kind() const { return kind_; }
 
-  std::array<bool, 3> active_displacements() const override { return {true, true, false}; }
+  DofSet active_dofs() const override { return {true, true, false, false, false, false}; }
   SectionMeasure section_measure() const override { return SectionMeasure::Thickness; }
 
   void bee(const Eigen::Ref<const Eigen::MatrixXd>& dNdx,

@@ -7,6 +7,7 @@
 #pragma once
 
 #include <array>
+#include <functional>
 #include <string>
 #include <utility>
 #include <vector>
@@ -65,6 +66,15 @@ struct ScalarField {
   // Whether face `face` (0-based) of `element`, whose nodes are `nodes` and whose outward unit
   // normal is `outward`, is coloured.
   bool carries(int element, int face, const std::vector<int>& nodes, const Vec3& outward) const;
+
+  // Stress and strain fields of models with beams: the tensors at every output point of the
+  // increment (IncrementResult::S or E, element e's points at point_offset[e] ..) and the function
+  // that turns a tensor into the field value. Beams are drawn from these (interpolated over their
+  // sections, then evaluated), since averaging at their nodes would lose the bending stress.
+  // Empty otherwise.
+  std::vector<int> point_offset;
+  std::vector<Tensor6> point_tensors;
+  std::function<double(const Tensor6&)> tensor_value;
 };
 
 // Every field name evaluate_field() accepts, for messages and `--help`.

@@ -39,7 +39,8 @@ struct FrameGeometry {
   std::vector<std::uint32_t> triangles;
   // Line pairs: the line elements (trusses, see is_line_element), one segment per pair of
   // consecutive nodes along the element, in the layer colour or with the field's t per node.
-  // The outline below holds them undeformed too.
+  // The outline below holds them undeformed too. Beams with a section are triangles (tubes) in
+  // face_vertices instead, their undeformed axes in the outline.
   std::vector<Vertex> bars;
   std::vector<Vertex> edges;            // line pairs: every edge of every skin face, once
   std::vector<Vertex> features;         // line pairs: boundary, non-manifold and crease edges
@@ -65,6 +66,7 @@ class SkinModel {
     std::vector<int> elements;    // visible elements of the layer (after the filter)
     std::vector<SkinFace> faces;  // their skin
     std::vector<int> lines;       // the line elements among them (no faces: drawn as bars)
+    std::vector<int> beams;       // the beams with a *BEAM SECTION: drawn as extruded sections
     std::vector<int> nodes;       // their nodes, ascending
   };
 
@@ -102,6 +104,9 @@ class SkinModel {
 struct GeometryRequest {
   const std::vector<Vec3>* displacement = nullptr;  // per node; nullptr = undeformed
   double scale = 0.0;                               // deformation scale factor
+  // Per node rotations (the increment's UR; models with beams): the drawn beam sections turn by
+  // them times `scale`. nullptr: sections keep their undeformed orientation.
+  const std::vector<Vec3>* rotation = nullptr;
   const ScalarField* field = nullptr;               // nullptr = layer colours
   const ColorScale* colors = nullptr;               // required with a field
   // With a field that has values at some nodes only (contact output): leave out the faces it
@@ -111,6 +116,7 @@ struct GeometryRequest {
   // false: on their base grids (2 x degree per direction), e.g. to measure what refining costs.
   bool refine = true;
   bool points = true;                   // fill FrameGeometry::points
+  bool beam_sections = true;            // draw beams as extruded sections (false: not at all)
   bool outline = false;                 // fill FrameGeometry::outline (undeformed)
   double feature_angle_degrees = 30.0;  // crease angle of feature lines
 };

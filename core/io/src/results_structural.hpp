@@ -1,0 +1,34 @@
+// The structural part of the results file (docs/results.md): per increment the nodal rotations
+// UR and reaction moments RM of models whose nodes carry rotations, and the section forces SF and
+// moments SM of beam elements at their stations; in /model the beam sections (shape, dimensions,
+// first section axis, integration), which the renderer extrudes. All written only when present,
+// so the files of solid models are unchanged; files without them read as empty fields.
+#pragma once
+
+#include <string>
+
+#include "h5_util.hpp"
+#include "styk/core/model.hpp"
+#include "styk/core/results.hpp"
+
+namespace styk::io {
+
+// Datasets "UR", "RM" (nodes x 3), "station_offsets" (elements + 1), "SF", "SM" (stations x 3)
+// under `increment` when the increment holds them.
+void write_structural(hid_t increment, const IncrementResult& inc);
+
+// Reads them back if present; sizes are checked against the model.
+void read_structural(hid_t increment, const std::string& label, const Model& model,
+                     IncrementResult& inc);
+
+// Size checks before anything is written: "" when consistent, else what is wrong.
+std::string structural_size_error(const Model& model, const IncrementResult& inc);
+
+// Group "beam_sections" under `mesh` with one row per *BEAM SECTION of the model (none: no group).
+void write_beam_sections(hid_t mesh, const Model& model);
+
+// Rebuilds those sections (elset, shape, dimensions, direction, integration; no material) and
+// assigns them to the elements of their sets. The element sets must have been read.
+void read_beam_sections(hid_t mesh, const SourceLoc& where, Model& model);
+
+}  // namespace styk::io

@@ -1,0 +1,165 @@
+#include "beam_warnings.hpp"
+
+#include <cmath>
+#include <cstdio>
+#include <map>
+#include <utility>
+
+#include <Eigen/Eigenvalues>
+
+#include "assembly.hpp"
+#include "styk/core/beam_section.hpp"
+
+namespace styk::solver_detail {
+namespace {
+
+// Locking beyond this bending stiffening (2 %, grade A of SPEC Tab 3.12) is warned of.
+constexpr double kLockingWarned = 0.02;
+
+std::string format(const char* pattern, double value) {
+  char buffer[64];
+  std::snprintf(buffer, sizeof buffer, pattern, value);
+  return buffer;
+}
+
+bool is_beam(const TElement& element) { return element.section_measure() == SectionMeasure::Beam; }
+
+// The section depth across which a bending about section axis `axis` (0: axis 1, 1: axis 2)
+// acts: the extent of the section along the other axis.
+double depth(const BeamSection& section, int axis) {
+  const std::vector<double>& d = section.dimensions;
+  switch (section.shape) {
+    case BeamShape::Rect:
+    case BeamShape::Box:
+      return axis == 0 ? d[1] : d[0];
+    case BeamShape::Circ:
+      return axis == 0 ? (d.size() > 1 ? d[1] : d[0]) : d[0];
+    case BeamShape::Pipe:
+      return 2.0 * d[0];
+  }
+  return 1.0;
+}
+
+std::string locking_warning(const Model& model, const Section& section, const TElement& type,
+                            int count, const BeamLocking& worst, int worst_element) {
+  const bool linear = type.node_count() == 2;
+  const std::string quadratic = type.name() == "B21" ? "B22" : "B32";
+  return section.where.file + ":" + std::to_string(section.where.line) + ": " +
+         std::to_string(count) + " " + type.name() + " elements of element set " + section.elset +
+         " are fully integrated (INTEGRATION=FULL) and slender: element length " +
+         "/ section depth up to " + format("%.3g", worst.slenderness) + " (element " +
+         std::to_string(model.elements[worst_element].id) + "), so shear locking makes " +
+         (linear ? "their bending" : "the varying part of their bending") + " about " +
+         format("%.3g", 1.0 + worst.factor) + " times too stiff (k G A l^2 / (" +
+         (linear ? "12" : "60") + " E I) = " + format("%.3g", worst.factor) +
+         "); remedy: reduced integration (drop INTEGRATION=FULL, the Abaqus default)" +
+         (linear ? ", the quadratic " + quadratic + " elements" : std::string()) +
+         " or more elements (the error falls with the element length squared)";
+}
+
+}  // namespace
+
+BeamLocking beam_locking(const Model& model, const PreparedModel& prepared, int e) {
+  BeamLocking out;
+  const Section& section = model.sections[model.elements[e].section];
+  const Material& material = *prepared.material[e];
+  if (!section.beam || !check_beam_section(*section.beam).empty()) return out;
+  const BeamSectionProperties p = beam_section_properties(*section.beam);
+  const double E = *material.young, G = E / (2.0 * (1.0 + *material.poisson));
+  const int* nodes = model.element_nodes(e);
+  const Vec3& a = model.coords[nodes[0]];
+  const Vec3& b = model.coords[nodes[model.elements[e].node_count - 1]];
+  const double l = std::sqrt((b[0] - a[0]) * (b[0] - a[0]) + (b[1] - a[1]) * (b[1] - a[1]) +
+                             (b[2] - a[2]) * (b[2] - a[2]));
+  const double c = prepared.formulation[e]->node_count() == 2 ? 12.0 : 60.0;
+  const bool planar = !prepared.formulation[e]->active_dofs()[2];
+  // Bending about axis 1 is resisted with shear along axis 2, and about axis 2 with axis 1.
+  const double about1 = G * p.shear_area2 * l * l / (c * E * p.I11);
+  const double about2 = planar ? 0.0 : G * p.shear_area1 * l * l / (c * E * p.I22);
+  const int axis = about1 >= about2 ? 0 : 1;
+  out.factor = std::max(about1, about2);
+  out.slenderness = l / depth(*section.beam, axis);
+  return out;
+}
+
+int spurious_beam_modes(const TElement& element, RuleKind kind) {
+  if (!is_beam(element)) return 0;
+  Section section;
+  section.elset = "PATCH";
+  section.beam = BeamSection{};
+  section.beam->dimensions = {1.0, 1.0};
+  Material unit;
+  unit.name = "UNIT";
+  unit.young = 1.0;
+  unit.poisson = 0.3;
+  const int n = element.node_count();
+  const int nodes = 2 * n - 1;  // two elements along x sharing one end node
+  Eigen::MatrixXd K = Eigen::MatrixXd::Zero(6 * nodes, 6 * nodes);
+  ElementGeometry g;
+  g.X.setZero(n, 3);
+  g.section = &section;
+  for (int cell = 0; cell < 2; ++cell) {
+    for (int k = 0; k < n; ++k) g.X(k, 0) = cell + (element.natural_nodes()[k][0] + 1.0) / 2.0;
+    Eigen::MatrixXd Ke;
+    element.stiffness(g, unit, kind, Ke);
+    const int first = cell * (n - 1);
+    K.block(6 * first, 6 * first, 6 * n, 6 * n) += Ke;
+  }
+  // Only the dofs the type stiffens (planar beams: ux, uy, rz).
+  const DofSet active = element.active_dofs();
+  std::vector<int> kept;
+  for (int node = 0; node < nodes; ++node)
+    for (int d = 0; d < 6; ++d)
+      if (active[d]) kept.push_back(6 * node + d);
+  Eigen::MatrixXd Kr(kept.size(), kept.size());
+  for (std::size_t i = 0; i < kept.size(); ++i)
+    for (std::size_t j = 0; j < kept.size(); ++j) Kr(i, j) = K(kept[i], kept[j]);
+  const Eigen::SelfAdjointEigenSolver<Eigen::MatrixXd> eigen(Kr, Eigen::EigenvaluesOnly);
+  const Eigen::VectorXd& values = eigen.eigenvalues();
+  const double largest = values.cwiseAbs().maxCoeff();
+  int zero = 0;
+  for (Eigen::Index k = 0; k < values.size(); ++k) zero += std::abs(values[k]) < 1e-9 * largest;
+  const int rigid = active[2] ? 6 : 3;
+  return std::max(0, zero - rigid);
+}
+
+std::vector<std::string> beam_warnings(const Model& model, const PreparedModel& prepared) {
+  std::vector<std::string> warnings;
+  // Spurious modes, per type and rule (computed once each).
+  std::map<std::pair<const TElement*, RuleKind>, int> count_of;
+  for (int e = 0; e < model.element_count(); ++e)
+    if (is_beam(*prepared.formulation[e]))
+      ++count_of[{prepared.formulation[e], prepared.rule_kind[e]}];
+  for (const auto& [key, count] : count_of) {
+    const int modes = spurious_beam_modes(*key.first, key.second);
+    if (modes > 0)
+      warnings.push_back(std::to_string(count) + " elements of type " + key.first->name() + " (" +
+                         key.first->rule(key.second).label + ") have " + std::to_string(modes) +
+                         " zero-energy modes in a 2-element patch beyond the rigid motions: "
+                         "their displacements and section forces can be garbage; integrate "
+                         "them with more points or use another type");
+  }
+  // Shear locking, per section and type: the worst element and how many are warned of.
+  struct Worst {
+    int count = 0;
+    int element = -1;
+    BeamLocking locking;
+  };
+  std::map<std::pair<int, const TElement*>, Worst> locking;
+  for (int e = 0; e < model.element_count(); ++e) {
+    if (!is_beam(*prepared.formulation[e]) || prepared.rule_kind[e] != RuleKind::Full) continue;
+    const TElement& type = *prepared.formulation[e];
+    if (type.rule(RuleKind::Full).size() == type.rule(RuleKind::Reduced).size()) continue;
+    const BeamLocking l = beam_locking(model, prepared, e);
+    if (l.factor < kLockingWarned) continue;
+    Worst& w = locking[{model.elements[e].section, &type}];
+    ++w.count;
+    if (w.element < 0 || l.factor > w.locking.factor) w.element = e, w.locking = l;
+  }
+  for (const auto& [key, w] : locking)
+    warnings.push_back(locking_warning(model, model.sections[key.first], *key.second, w.count,
+                                       w.locking, w.element));
+  return warnings;
+}
+
+}  // namespace styk::solver_detail

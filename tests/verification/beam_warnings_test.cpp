@@ -1,0 +1,105 @@
+// Where beams fail, the solver says so before solving (docs/solver.md §1 "Warnings"; SPEC §7.3:
+// "full integration of thin beams locks; reduced integration needs enough elements"): a fully
+// integrated slender beam is warned of with its measured slenderness, the stiffening and the
+// remedy; the default (reduced) rule and a stocky full beam are not; an integration rule with
+// spurious zero-energy modes is detected (shown with a deliberately under-integrated B32, since
+// every built-in beam with either rule has none: tests/unit/elements/beam_test.cpp).
+#include <memory>
+#include <string>
+
+#include <gtest/gtest.h>
+
+#include "beam_decks.hpp"
+#include "styk/elements/beam.hpp"
+
+namespace styk {
+namespace {
+
+std::vector<std::string> warnings_of(const test::Cantilever& c, const ElementRegistry& registry) {
+  AnalysisReport report;
+  try {
+    test::solve_cantilever(c, registry, &report);
+  } catch (const InputError&) {
+    // an under-integrated mesh is singular: the warning said why beforehand
+  }
+  return report.warnings;
+}
+
+ElementRegistry builtin() {
+  ElementRegistry registry;
+  register_builtin_elements(registry);
+  return registry;
+}
+
+bool contains(const std::string& text, const std::string& part) {
+  return text.find(part) != std::string::npos;
+}
+
+// SPEC §7.3 Tab 7.1a, thin beam, 4 full B21: l / h = 1 / sqrt(1e-5) = 316; the locking factor
+// k G A l^2 / (12 E I) = (k G / E) (l / h)^2 = 0.3125 x 1e5 = 31250, which is the deflection
+// ratio of the table (0.32E-4 = 1 / 31251 x (1 - 1/64)).
+TEST(BeamWarnings, ThinFullyIntegratedBeamsWarnWithSlendernessAndRemedy) {
+  const ElementRegistry registry = builtin();
+  test::Cantilever c;
+  c.type = "B21";
+  c.elements = 4;
+  c.dimensions = "1., 0.0031622776601683794";
+  c.integration = "FULL";
+  const std::vector<std::string> warnings = warnings_of(c, registry);
+  ASSERT_EQ(warnings.size(), 1u);
+  const std::string& w = warnings[0];
+  EXPECT_TRUE(contains(w,
+                       "B21_4_FULL.inp:19: 4 B21 elements of element set BEAM are fully "
+                       "integrated (INTEGRATION=FULL) and slender"))
+      << w;
+  EXPECT_TRUE(contains(w, "element length / section depth up to 316 (element 1)")) << w;
+  EXPECT_TRUE(contains(w, "about 3.13e+04 times too stiff (k G A l^2 / (12 E I) = 3.12e+04)")) << w;
+  EXPECT_TRUE(contains(w, "remedy: reduced integration (drop INTEGRATION=FULL"));
+  EXPECT_TRUE(contains(w, "the quadratic B22 elements"));
+
+  c.integration = "";  // the default rule: no warning
+  EXPECT_TRUE(warnings_of(c, registry).empty());
+}
+
+// The thick beam: 16 full elements stiffen by 1.95 % (no warning), 8 by 7.8 % (warned).
+TEST(BeamWarnings, StockyFullBeamsPassTheThreshold) {
+  const ElementRegistry registry = builtin();
+  test::Cantilever c;
+  c.type = "B21";
+  c.integration = "FULL";
+  c.elements = 16;
+  EXPECT_TRUE(warnings_of(c, registry).empty());
+  c.elements = 8;
+  const std::vector<std::string> warnings = warnings_of(c, registry);
+  ASSERT_EQ(warnings.size(), 1u);
+  EXPECT_TRUE(contains(warnings[0], "(k G A l^2 / (12 E I) = 0.0781)")) << warnings[0];
+}
+
+// A B32 integrated with a single point: 12 zero-energy modes in a 2-element patch beyond the 6
+// rigid motions (each element keeps 6 of its 18 dofs' deformations).
+class OnePointB32 : public Beam {
+ public:
+  OnePointB32() : Beam(BeamType::B32) {}
+  std::string name() const override { return "B32ONE"; }
+  void stations(RuleKind, std::vector<double>& xi, std::vector<double>& weights) const override {
+    xi = {0.0};
+    weights = {2.0};
+  }
+};
+
+TEST(BeamWarnings, SpuriousModesOfAnIntegrationRuleAreDetected) {
+  ElementRegistry registry = builtin();
+  registry.add(std::make_unique<OnePointB32>(), "test");
+  test::Cantilever c;
+  c.type = "B32ONE";
+  c.elements = 3;
+  const std::vector<std::string> warnings = warnings_of(c, registry);
+  ASSERT_EQ(warnings.size(), 1u);
+  EXPECT_TRUE(contains(warnings[0],
+                       "3 elements of type B32ONE (1-point Gauss along the axis x 4 "
+                       "fibre points) have 12 zero-energy modes in a 2-element patch"))
+      << warnings[0];
+}
+
+}  // namespace
+}  // namespace styk
