@@ -6,6 +6,7 @@
 #include <functional>
 #include <stdexcept>
 
+#include "builder_support.hpp"
 #include "styk/mesher/convert.hpp"
 #include "styk/mesher/hex_topology.hpp"
 #include "styk/mesher/interface.hpp"
@@ -44,11 +45,10 @@ Model contact_model(const Mesh& mesh, const std::string& heading,
 
 void convert_contact_layers(Mesh& mesh, const std::string& family,
                             const std::vector<std::string>& contact_surfaces) {
-  if (family == "C3D14") {
-    convert_to_c3d14(mesh);
+  if (family != "C3D21" && family != "C3D28") {
+    apply_family(mesh, family, "");  // every element: C3D14, C3D8R, C3D8I, C3D20R, C3D27
     return;
   }
-  if (family != "C3D21" && family != "C3D28") return;
   // The conversion rewrites the surface it converts (a closed C3D28 layer may be larger than the
   // contact face); a working copy keeps the named surface to its own faces, which follow the
   // renumbering like every surface.
@@ -115,7 +115,10 @@ OutputRequest contact_print(const std::string& family) {
   OutputRequest r;
   r.kind = OutputRequest::Kind::ContactPrint;
   r.vars = {"CSTR", "CDIS"};
-  if (family != "C3D8" && family != "C3D20") r.vars.push_back("CSTATUS");
+  // CalculiX runs decks of its own element types; the others get the contact status too.
+  if (family != "C3D8" && family != "C3D20" && family != "C3D8R" && family != "C3D8I" &&
+      family != "C3D20R")
+    r.vars.push_back("CSTATUS");
   return r;
 }
 
