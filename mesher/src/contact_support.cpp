@@ -178,18 +178,26 @@ int split_bodies(Mesh& mesh, const std::string& body_a, const std::string& surfa
 }
 
 std::vector<SectionPatch> quarter_o_grid(double c) {
-  const double q = 0.25 * 3.14159265358979323846;
+  return sector_o_grid(c, 0.5 * 3.14159265358979323846);
+}
+
+std::vector<SectionPatch> sector_o_grid(double c, double angle) {
+  const double half = 0.5 * angle, m = c / std::cos(half);
+  const Vec3 A{c, 0, 0}, M{m * std::cos(half), m * std::sin(half), 0};
+  const Vec3 B{c * std::cos(angle), c * std::sin(angle), 0};
   const auto blend = [](const Vec3& in, const Vec3& out, double s) {
     return Vec3{in[0] + s * (out[0] - in[0]), in[1] + s * (out[1] - in[1]), 0};
   };
-  return {[c](double s, double t) {
-            return Vec3{c * s, c * t, 0};
+  return {[=](double s, double t) {  // bilinear in O, A, M, B
+            return Vec3{s * (1 - t) * A[0] + s * t * M[0] + (1 - s) * t * B[0],
+                        s * (1 - t) * A[1] + s * t * M[1] + (1 - s) * t * B[1], 0};
           },
           [=](double s, double t) {
-            return blend({c, c * t, 0}, {std::cos(q * t), std::sin(q * t), 0}, s);
+            return blend(blend(A, M, t), {std::cos(half * t), std::sin(half * t), 0}, s);
           },
           [=](double s, double t) {
-            return blend({c * (1 - t), c, 0}, {std::cos(q * (1 + t)), std::sin(q * (1 + t)), 0}, s);
+            return blend(blend(M, B, t), {std::cos(half * (1 + t)), std::sin(half * (1 + t)), 0},
+                         s);
           }};
 }
 

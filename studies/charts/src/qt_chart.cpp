@@ -71,8 +71,9 @@ std::pair<double, double> data_range(const Chart& chart, bool x_axis) {
   const Axis& axis = x_axis ? chart.x : chart.y;
   if (!std::isfinite(lo)) return axis.log ? std::make_pair(0.1, 10.0) : std::make_pair(0.0, 1.0);
   if (axis.log) {
-    lo = std::pow(10.0, std::floor(std::log10(lo)));
-    hi = std::pow(10.0, std::ceil(std::log10(hi)));
+    // Whole decades, with room for a point that sits on one.
+    lo = std::pow(10.0, std::floor(std::log10(lo) - 0.05));
+    hi = std::pow(10.0, std::ceil(std::log10(hi) + 0.05));
     if (hi <= lo) hi = lo * 10;
   } else {
     const double pad = hi > lo ? 0.05 * (hi - lo) : std::max(1.0, std::abs(lo)) * 0.1;

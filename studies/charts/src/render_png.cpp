@@ -22,10 +22,27 @@ class ApplicationScope {
   ApplicationScope() {
     if (QCoreApplication::instance()) return;
     if (!std::getenv("QT_QPA_PLATFORM")) qputenv("QT_QPA_PLATFORM", "offscreen");
+    previous_ = qInstallMessageHandler(&quiet_runtime_dir);
     app_ = std::make_unique<QApplication>(argc_, argv_);
   }
+  ~ApplicationScope() {
+    if (!app_) return;
+    app_.reset();
+    qInstallMessageHandler(previous_);
+  }
+  ApplicationScope(const ApplicationScope&) = delete;
+  ApplicationScope& operator=(const ApplicationScope&) = delete;
 
  private:
+  // A command-line process has no session, hence no XDG_RUNTIME_DIR; the offscreen platform
+  // says so once per QApplication, which tells a `styk study` user nothing.
+  static void quiet_runtime_dir(QtMsgType type, const QMessageLogContext& context,
+                                const QString& message) {
+    if (message.startsWith("QStandardPaths: XDG_RUNTIME_DIR not set")) return;
+    qt_message_output(type, context, message);
+  }
+
+  QtMessageHandler previous_ = nullptr;
   int argc_ = 1;
   char name_[5] = "styk";
   char* argv_[2] = {name_, nullptr};

@@ -49,12 +49,15 @@ double cost_of(const RunRecord& r, Cost c) {
 
 std::optional<LogLogFit> convergence_fit(const std::vector<const RunRecord*>& series, Measure m,
                                          Cost c, int last) {
+  std::vector<const RunRecord*> above;
+  for (const RunRecord* r : series)
+    if (*r->error_of(m) > kRoundOffFloor) above.push_back(r);
   const std::size_t first =
-      last > 0 && series.size() > static_cast<std::size_t>(last) ? series.size() - last : 0;
+      last > 0 && above.size() > static_cast<std::size_t>(last) ? above.size() - last : 0;
   std::vector<double> x, y;
-  for (std::size_t i = first; i < series.size(); ++i) {
-    x.push_back(cost_of(*series[i], c));
-    y.push_back(*series[i]->error_of(m));
+  for (std::size_t i = first; i < above.size(); ++i) {
+    x.push_back(cost_of(*above[i], c));
+    y.push_back(*above[i]->error_of(m));
   }
   return fit_log_log(x, y);
 }

@@ -83,12 +83,16 @@ void measures_and_families(std::ostringstream& md, const ReportContext& c) {
   for (Measure m : kMeasures) md << "- `" << measure_key(m) << "`: " << measure_label(m) << ".\n";
   md << "\nThe named points are nodes at every level (below, per problem). Point stresses are "
         "the nodal averages of the extrapolated integration-point stresses (method I, what "
-        "`styk render` shows). The L2 error integrates |u_h - u|^2 with 4 x 4 x 4 Gauss points "
-        "per element, the energy norm integrates (sigma_h - sigma) : C^-1 : (sigma_h - sigma) "
-        "over the solver's own integration points. The orders in the tables are the slopes of "
+        "`styk render` shows). The L2 error integrates |u_h - u|^2, the energy norm "
+        "(eps(u_h) - eps(u)) : C : (eps(u_h) - eps(u)) (heat: k |grad T_h - grad T|^2), both "
+        "with 4 x 4 x 4 Gauss points per element, on the displacement field N u_h and on the "
+        "element's strain field (B u_h, plus C3D8I's incompatible modes): independent of each "
+        "element's own integration rule, which for reduced integration samples the stresses "
+        "only at their superconvergent points. The orders in the tables are the slopes of "
         "log(error) against log(h) over the last three levels (h: the element size); the "
         "charts' legends give the slope against DOF (the meshes are refined in two directions, "
-        "so order p shows as a DOF slope of -p/2).\n\n";
+        "so order p shows as a DOF slope of -p/2). Errors below 1e-6 are at the round-off of these "
+        "solves and stay out of the fits (they are plotted).\n\n";
   md << "## Families\n\n| family | complete polynomial p | L2 order (p + 1) | energy order (p) | "
         "meshed as |\n|---|---|---|---|---|\n";
   for (const ElementFamily& f : family_catalogue())

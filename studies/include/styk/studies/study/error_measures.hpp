@@ -47,9 +47,12 @@ ErrorArray measure_errors(const Model& model, const IncrementResult& result,
                           const ElementRegistry& registry, const ExactSolution& exact,
                           const ProblemProbes& probes);
 
-// The pieces, for tests: relative L2 error of the displacement (temperature) over the body, with
-// a 4 x 4 x 4 Gauss rule on hexahedra (the element's full rule otherwise), and the relative
-// energy-norm error from the stresses (gradients) at the solver's integration points.
+// The pieces, for tests: the relative L2 error of the displacement (temperature) and the relative
+// energy norm of its error (strains B u_h against the exact strains, weighted by the material's
+// D; for heat, k |grad T_h - grad T|^2), both over the body with a 4 x 4 x 4 Gauss rule on
+// hexahedra (the element's full rule otherwise). The L2 error measures the displacement field
+// N u_h; the energy norm the element's strain field, with C3D8I's incompatible modes (recovered
+// from u_h as the solver condenses them) included.
 double relative_l2_error(const Model& model, const IncrementResult& result,
                          const ElementRegistry& registry, const ExactSolution& exact);
 double relative_energy_error(const Model& model, const IncrementResult& result,

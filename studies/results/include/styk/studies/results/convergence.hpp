@@ -28,8 +28,12 @@ std::vector<const RunRecord*> series_of(const std::vector<RunRecord>& records,
 enum class Cost { Dof, Time, Size };
 double cost_of(const RunRecord& r, Cost c);
 
-// The slope of log(error) against log(cost) over the last `last` levels of the series (the
-// asymptotic range; all levels when `last` <= 0). Against the element size (Cost::Size) the
+// Relative errors below this are at the round-off of the solves (double precision, condition
+// numbers up to ~1e10): the fits leave them out.
+inline constexpr double kRoundOffFloor = 1e-6;
+
+// The slope of log(error) against log(cost) over the last `last` levels of the series whose
+// error lies above kRoundOffFloor (the asymptotic range; all levels when `last` <= 0). Against the element size (Cost::Size) the
 // slope is the convergence order p of error ~ h^p; against DOF it is -p/d for a mesh refined in
 // d directions.
 std::optional<LogLogFit> convergence_fit(const std::vector<const RunRecord*>& series, Measure m,
