@@ -29,7 +29,9 @@ std::string this_program() {
 }
 
 const std::vector<studies::ReferenceProblem>& problems_of(const std::string& kind) {
-  return kind == "stability" ? studies::stability_sweeps() : studies::accuracy_problems();
+  if (kind == "stability") return studies::stability_sweeps();
+  if (kind == "model-size") return studies::model_size_problems();
+  return studies::accuracy_problems();
 }
 
 void print_list(const StudyArgs& args, const ElementRegistry& registry) {
@@ -146,6 +148,8 @@ int run_study(const StudyArgs& args, const ElementRegistry& registry) {
     check_families(args, args.families, registry);
     studies::SeriesOptions options;
     options.families = args.families;
+    if (args.kind == "model-size" && options.families.empty())
+      options.families = studies::model_size_families();
     options.max_dof = args.max_dof;
     options.max_seconds = args.max_seconds;
     options.repeats = args.repeats;
@@ -163,6 +167,8 @@ int run_study(const StudyArgs& args, const ElementRegistry& registry) {
   std::filesystem::create_directories(layout.image_dir);
   if (args.kind == "stability")
     studies::write_stability_report(records, context, layout);
+  else if (args.kind == "model-size")
+    studies::write_model_size_report(records, context, layout);
   else
     studies::write_accuracy_report(records, context, layout);
   int failed = 0;
@@ -182,8 +188,6 @@ int study_command(const StudyArgs& args) {
     print_list(args, registry);
     return kOk;
   }
-  if (args.kind == "model-size")
-    throw InputError(here(args), "not available yet");
   return run_study(args, registry);
 }
 

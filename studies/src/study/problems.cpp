@@ -209,7 +209,7 @@ const std::vector<ReferenceProblem>& accuracy_problems() {
 }
 
 const ReferenceProblem* find_problem(const std::string& name) {
-  for (const auto* list : {&accuracy_problems(), &stability_sweeps()})
+  for (const auto* list : {&accuracy_problems(), &stability_sweeps(), &model_size_problems()})
     for (const ReferenceProblem& p : *list)
       if (p.name == name) return &p;
   return nullptr;

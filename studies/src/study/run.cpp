@@ -60,6 +60,8 @@ void build_solve_measure(const RunSpec& spec, const ReferenceProblem& problem,
   r.runs = static_cast<int>(seconds.size());
   r.dof = report.dofs;
   r.warnings = warning_kinds(report.warnings);
+  if (setup.quantities) r.quantities = setup.quantities(model, results);
+  if (!setup.exact) return;
   const ErrorArray errors =
       measure_errors(model, results.increments.back(), registry, *setup.exact, setup.probes);
   for (int m = 0; m < kMeasureCount; ++m) r.error[m] = errors[m];

@@ -25,9 +25,11 @@ struct ProblemSetup {
   std::string builder;
   std::map<std::string, std::string> args;
   double h = 0.0;
-  std::shared_ptr<const ExactSolution> exact;
+  std::shared_ptr<const ExactSolution> exact;  // null: no exact solution, no errors measured
   ProblemProbes probes;
   std::function<void(const mesher::BuildResult&, Model&, const ElementRegistry&)> impose;
+  // Absolute results recorded by name (RunRecord::quantities); may be empty.
+  std::function<std::map<std::string, double>(const Model&, const Results&)> quantities;
 };
 
 struct ReferenceProblem {
@@ -52,7 +54,11 @@ struct ReferenceProblem {
 const std::vector<ReferenceProblem>& accuracy_problems();
 // The sweeps of `styk study stability`, in report order.
 const std::vector<ReferenceProblem>& stability_sweeps();
-// Either kind, by name; nullptr if none.
+// The models of `styk study model-size` (the SPEC §4.2 shrink fit as full, quarter and sector
+// model), in report order; the families it compares by default.
+const std::vector<ReferenceProblem>& model_size_problems();
+const std::vector<std::string>& model_size_families();
+// Any kind, by name; nullptr if none.
 const ReferenceProblem* find_problem(const std::string& name);
 
 // The model of one run: the setup's builder with --element `family`, the exact conditions

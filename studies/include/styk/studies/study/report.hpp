@@ -44,6 +44,10 @@ void write_accuracy_report(const std::vector<RunRecord>& records, const ReportCo
                            const ReportLayout& layout);
 void write_stability_report(const std::vector<RunRecord>& records, const ReportContext& context,
                             const ReportLayout& layout);
+std::string model_size_markdown(const std::vector<RunRecord>& records,
+                                const ReportContext& context, const ReportLayout& layout);
+void write_model_size_report(const std::vector<RunRecord>& records, const ReportContext& context,
+                             const ReportLayout& layout);
 
 // The picture file of one problem (or sweep) of a study, e.g. "accuracy-lame.png".
 std::string chart_file(const std::string& study, const std::string& problem);
