@@ -76,11 +76,11 @@ void check_families(const StudyArgs& args, const std::vector<std::string>& famil
                     const ElementRegistry& registry) {
   for (const std::string& f : families) {
     if (!studies::find_family(f))
-      throw InputError(here(args), "unknown element family '" + f +
-                                       "' (styk study " + args.kind + " --list shows them)");
+      throw InputError(here(args), "unknown element family '" + f + "' (styk study " + args.kind +
+                                       " --list shows them)");
     if (!registry.find(f))
-      throw InputError(here(args), "element family " + f +
-                                       " is not registered (element plug-ins not loaded?)");
+      throw InputError(here(args),
+                       "element family " + f + " is not registered (element plug-ins not loaded?)");
   }
 }
 
@@ -89,8 +89,8 @@ std::vector<studies::RunRecord> read_records(const StudyArgs& args) {
   if (!in) throw InputError({args.from_csv, 0}, "cannot read the study CSV");
   try {
     return studies::read_csv(in, args.from_csv);
-  } catch (const std::runtime_error& e) {
-    throw InputError({args.from_csv, 0}, e.what());
+  } catch (const studies::StudyCsvError& e) {
+    throw InputError({e.file(), e.line()}, e.message());
   }
 }
 
@@ -103,8 +103,8 @@ std::string command_line(const StudyArgs& args) {
   };
   if (!args.problems.empty()) c += " --problems " + list(args.problems);
   if (!args.families.empty()) c += " --families " + list(args.families);
-  c += fmt::format(" --max-dof {} --max-seconds {:g} --repeats {}", args.max_dof,
-                   args.max_seconds, args.repeats);
+  c += fmt::format(" --max-dof {} --max-seconds {:g} --repeats {}", args.max_dof, args.max_seconds,
+                   args.repeats);
   if (args.max_levels > 0) c += fmt::format(" --max-levels {}", args.max_levels);
   if (args.in_process) c += " --in-process";
   if (!args.docs_dir.empty()) c += " --docs " + args.docs_dir;
@@ -126,9 +126,9 @@ int run_study(const StudyArgs& args, const ElementRegistry& registry) {
   if (!args.docs_dir.empty() && !args.output_dir.empty())
     throw InputError(here(args), "give either -o DIR or --docs DIR, not both");
   const studies::ReportLayout layout =
-      !args.docs_dir.empty() ? studies::docs_layout(args.docs_dir, args.kind)
-                             : studies::output_layout(
-                                   args.output_dir.empty() ? "study-" + args.kind : args.output_dir,
+      !args.docs_dir.empty()
+          ? studies::docs_layout(args.docs_dir, args.kind)
+          : studies::output_layout(args.output_dir.empty() ? "study-" + args.kind : args.output_dir,
                                    args.kind);
   studies::ReportContext context;
   context.machine = studies::machine_description();

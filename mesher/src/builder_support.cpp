@@ -25,8 +25,8 @@ std::string family(const BuilderParams& params, const std::vector<std::string>& 
   return value;
 }
 
-const std::vector<std::string> kAllHexFamilies = {"C3D8",  "C3D20",  "C3D14", "C3D21", "C3D28",
-                                                 "C3D8R", "C3D8I",  "C3D20R", "C3D27"};
+const std::vector<std::string> kAllHexFamilies = {"C3D8",  "C3D20", "C3D14",  "C3D21", "C3D28",
+                                                  "C3D8R", "C3D8I", "C3D20R", "C3D27"};
 
 std::string base_type(const std::string& family) {
   return family == "C3D8" || family == "C3D8R" || family == "C3D8I" || family == "C3D14" ? "C3D8"

@@ -31,8 +31,8 @@ struct FitMesh {
 
 // A sector of the shaft and the sleeve from `angle` over `sweep` (at most 90 deg) with `around`
 // elements around (even): the quarter of models A and B, or model C's thin sector.
-void mesh_sector(Mesh& mesh, const std::string& type, const FitMesh& m, double angle,
-                 double sweep, int around) {
+void mesh_sector(Mesh& mesh, const std::string& type, const FitMesh& m, double angle, double sweep,
+                 int around) {
   const int n = around / 2;
   const auto shaft = [](double) { return kShaftRadius; };
   const std::vector<SectionPatch> o_grid = sector_o_grid(m.core, sweep);
@@ -142,8 +142,7 @@ BuildResult shrink_fit(const BuilderParams& p, const ElementRegistry&) {
   std::string load_case = p.choice("load-case", {"auto", "axial", "torque", "fit"});
   if (load_case == "auto") load_case = full ? "torque" : "axial";
   if (load_case == "torque" && !full)
-    p.fail("--load-case torque needs --model B: a " +
-           std::string(sector ? "sector" : "quarter") +
+    p.fail("--load-case torque needs --model B: a " + std::string(sector ? "sector" : "quarter") +
            " model cannot carry a torque without cyclic symmetry");
   const std::string fit = p.choice("fit", {"thermal", "clearance"});
   FitMesh m;
@@ -161,9 +160,9 @@ BuildResult shrink_fit(const BuilderParams& p, const ElementRegistry&) {
   const double alpha = p.positive("alpha"), dT = p.number("dT");
   std::string mu_text = p.text("mu");
   if (to_upper(mu_text) == "AUTO") mu_text = load_case == "torque" ? "0.4" : "0.2";
-  const std::string model_text =
-      full ? " (full)"
-           : sector ? " (sector of " + fmt_number(sweep * 180 / kPi) + " deg)" : " (quarter)";
+  const std::string model_text = full     ? " (full)"
+                                 : sector ? " (sector of " + fmt_number(sweep * 180 / kPi) + " deg)"
+                                          : " (quarter)";
   const std::optional<Friction> friction = friction_value(p, "mu", mu_text);
 
   BuildResult r;

@@ -188,17 +188,17 @@ std::vector<SectionPatch> sector_o_grid(double c, double angle) {
   const auto blend = [](const Vec3& in, const Vec3& out, double s) {
     return Vec3{in[0] + s * (out[0] - in[0]), in[1] + s * (out[1] - in[1]), 0};
   };
-  return {[=](double s, double t) {  // bilinear in O, A, M, B
-            return Vec3{s * (1 - t) * A[0] + s * t * M[0] + (1 - s) * t * B[0],
-                        s * (1 - t) * A[1] + s * t * M[1] + (1 - s) * t * B[1], 0};
-          },
-          [=](double s, double t) {
-            return blend(blend(A, M, t), {std::cos(half * t), std::sin(half * t), 0}, s);
-          },
-          [=](double s, double t) {
-            return blend(blend(M, B, t), {std::cos(half * (1 + t)), std::sin(half * (1 + t)), 0},
-                         s);
-          }};
+  return {
+      [=](double s, double t) {  // bilinear in O, A, M, B
+        return Vec3{s * (1 - t) * A[0] + s * t * M[0] + (1 - s) * t * B[0],
+                    s * (1 - t) * A[1] + s * t * M[1] + (1 - s) * t * B[1], 0};
+      },
+      [=](double s, double t) {
+        return blend(blend(A, M, t), {std::cos(half * t), std::sin(half * t), 0}, s);
+      },
+      [=](double s, double t) {
+        return blend(blend(M, B, t), {std::cos(half * (1 + t)), std::sin(half * (1 + t)), 0}, s);
+      }};
 }
 
 BlockMap prism(const SectionPatch& section, double z0, double z1,

@@ -121,7 +121,7 @@ void convert_to_c3d20r(Mesh& mesh, const std::vector<int>& elements) {
 
 void convert_to_c3d27(Mesh& mesh, const std::vector<int>& elements) {
   // Natural coordinates of the face centres S1..S6 (C3D27 nodes 21-26), then the centre (27).
-  static const Vec3 kCentres[7] = {{0, 0, -1}, {0, 0, 1}, {0, -1, 0}, {1, 0, 0},
+  static const Vec3 kCentres[7] = {{0, 0, -1}, {0, 0, 1},  {0, -1, 0}, {1, 0, 0},
                                    {0, 1, 0},  {-1, 0, 0}, {0, 0, 0}};
   std::map<CornerKey, int> centre;
   for (int e : all_of_type(mesh, elements, "C3D20")) {

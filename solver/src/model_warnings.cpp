@@ -191,8 +191,8 @@ std::vector<std::string> model_warnings(const Model& model, const PreparedModel&
     warnings.push_back(section.where.file + ":" + std::to_string(section.where.line) + ": " +
                        std::to_string(count) + " " + f.name() + " elements of element set " +
                        section.elset + " lock volumetrically: " + "material " + material.name +
-                       " has Poisson's ratio " + format("%g", *material.poisson) + " (" +
-                       f.name() + " locks from " + format("%g", locking_onset(f)) + "); " + cure);
+                       " has Poisson's ratio " + format("%g", *material.poisson) + " (" + f.name() +
+                       " locks from " + format("%g", locking_onset(f)) + "); " + cure);
   }
 
   // Distortion: the worst element and how many are beyond the ratio.

@@ -9,8 +9,8 @@
 //   C3D8R (one point cannot carry a conduction; the solver refuses it);
 //   SPEC §3.2.2 cylinders in contact, levels 0-2: C3D8R's second problem.
 // And the documented exceptions, measured (SPEC's "method fails" cases): C3D8 locks at
-// nu = 0.4999 (SPEC §3.1.7) where C3D8R keeps its order (levels 2-4); C3D20's contact faces fail the physical
-// contact condition (SPEC §2.2): its corner nodes carry no pressure.
+// nu = 0.4999 (SPEC §3.1.7) where C3D8R keeps its order (levels 2-4); C3D20's contact faces fail
+// the physical contact condition (SPEC §2.2): its corner nodes carry no pressure.
 #include <gtest/gtest.h>
 
 #include <string>
@@ -40,8 +40,8 @@ class AtlasRates : public ::testing::Test {
     std::vector<RunRecord> runs;
     for (int level = first; level < first + 3; ++level) {
       runs.push_back(run_in_process({"accuracy", problem, family, level, 1}, full_->registry));
-      EXPECT_TRUE(runs.back().ok()) << problem << " " << family << " level " << level << ": "
-                                    << runs.back().failure;
+      EXPECT_TRUE(runs.back().ok())
+          << problem << " " << family << " level " << level << ": " << runs.back().failure;
     }
     return runs;
   }

@@ -75,9 +75,10 @@ TEST_F(ModelWarnings, NearlyIncompressibleElementsWarnOfLockingFromTheirOnset) {
     double nu;
     const char* printed;
   };
-  const Case locking[] = {
-      {"C3D8", 0.49, "0.49"}, {"C3D20", 0.499, "0.499"}, {"C3D21", 0.499, "0.499"},
-      {"C3D8R", 0.499, "0.499"}};
+  const Case locking[] = {{"C3D8", 0.49, "0.49"},
+                          {"C3D20", 0.499, "0.499"},
+                          {"C3D21", 0.499, "0.499"},
+                          {"C3D8R", 0.499, "0.499"}};
   for (const auto& [type, nu, printed] : locking) {
     const auto warnings = warnings_of(cube_of(registry_, type, nu), registry_);
     ASSERT_EQ(warnings.size(), 1u) << type;

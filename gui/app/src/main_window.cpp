@@ -24,8 +24,8 @@
 #include "session/selection_sets.hpp"
 #include "solve_runner.hpp"
 #include "study_chart_window.hpp"
-#include "styk/studies/results/run_record.hpp"
 #include "styk/io/results_file.hpp"
+#include "styk/studies/results/run_record.hpp"
 
 namespace styk::gui {
 

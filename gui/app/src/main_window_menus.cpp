@@ -60,8 +60,7 @@ void MainWindow::build_file_menu() {
   file->addAction("Open study &charts...", this,
                   [this] {
                     const QString path = QFileDialog::getOpenFileName(
-                        this, "Open a study's CSV", QString(),
-                        "Study CSV (*.csv);;All files (*)");
+                        this, "Open a study's CSV", QString(), "Study CSV (*.csv);;All files (*)");
                     if (!path.isEmpty()) open_study(path);
                   })
       ->setObjectName("action_open_study");

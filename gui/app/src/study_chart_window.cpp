@@ -74,8 +74,9 @@ StudyChartWindow::StudyChartWindow(std::vector<studies::RunRecord> records, cons
   view_->setRenderHint(QPainter::Antialiasing);
   view_->setRubberBand(QChartView::RectangleRubberBand);  // right click zooms back out
   view_->setMinimumSize(900, 560);
-  status_ = new QLabel("Rest the mouse on a point to read its run; click a legend entry to hide "
-                       "or show a family; drag a rectangle to zoom.");
+  status_ = new QLabel(
+      "Rest the mouse on a point to read its run; click a legend entry to hide "
+      "or show a family; drag a rectangle to zoom.");
   status_->setObjectName("study_status");
   status_->setWordWrap(true);
   auto* layout = new QVBoxLayout(this);
@@ -117,8 +118,7 @@ void StudyChartWindow::fill_measures_and_axes() {
 
 void StudyChartWindow::redraw() {
   const std::string problem = problem_->currentText().toStdString();
-  const auto measure =
-      studies::measure_from_key(measure_->currentData().toString().toStdString());
+  const auto measure = studies::measure_from_key(measure_->currentData().toString().toStdString());
   if (problem.empty() || !measure) return;
   const QString axis = axis_->currentText();
   charts::Chart chart;

@@ -54,7 +54,8 @@ class ApplicationScope {
 void write_png(const Figure& figure, const std::string& path) {
   const ApplicationScope application;
   const int columns = std::max(1, figure.columns);
-  const int rows = std::max<int>(1, (static_cast<int>(figure.charts.size()) + columns - 1) / columns);
+  const int rows =
+      std::max<int>(1, (static_cast<int>(figure.charts.size()) + columns - 1) / columns);
   const double cell_w = static_cast<double>(figure.width) / columns;
   const double cell_h = static_cast<double>(figure.height) / rows;
   QImage image(figure.width, figure.height, QImage::Format_ARGB32);

@@ -20,9 +20,12 @@ int colour_of(const std::vector<std::string>& order, const std::string& family) 
 
 const char* axis_title(Cost c) {
   switch (c) {
-    case Cost::Dof: return "degrees of freedom";
-    case Cost::Time: return "wall time of the solve, s (median)";
-    case Cost::Size: return "element size h";
+    case Cost::Dof:
+      return "degrees of freedom";
+    case Cost::Time:
+      return "wall time of the solve, s (median)";
+    case Cost::Size:
+      return "element size h";
   }
   return "";
 }
@@ -64,7 +67,9 @@ charts::Chart convergence_chart(const std::vector<RunRecord>& records, const std
                                 bool pareto) {
   charts::Chart chart;
   chart.title = problem + ": " + measure_label(m) + " vs " +
-                (x == Cost::Dof ? "DOF" : x == Cost::Time ? "wall time" : "element size");
+                (x == Cost::Dof    ? "DOF"
+                 : x == Cost::Time ? "wall time"
+                                   : "element size");
   chart.x = {axis_title(x), true, {}, {}};
   chart.y = {std::string(measure_label(m)) + " (relative)", true, {}, {}};
   std::vector<const RunRecord*> all;
@@ -77,7 +82,8 @@ charts::Chart convergence_chart(const std::vector<RunRecord>& records, const std
     if (const auto fit = convergence_fit(series, m, x))
       s.name += (x == Cost::Size ? "  order " : "  slope ") + format("%.2f", fit->slope);
     s.colour = colour_of(family_order, family);
-    for (const RunRecord* r : series) s.points.push_back({cost_of(*r, x), *r->error_of(m), tip(*r, m)});
+    for (const RunRecord* r : series)
+      s.points.push_back({cost_of(*r, x), *r->error_of(m), tip(*r, m)});
     chart.series.push_back(std::move(s));
   }
   if (pareto && x != Cost::Size) {

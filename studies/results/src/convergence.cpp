@@ -40,9 +40,12 @@ std::vector<const RunRecord*> series_of(const std::vector<RunRecord>& records,
 
 double cost_of(const RunRecord& r, Cost c) {
   switch (c) {
-    case Cost::Dof: return static_cast<double>(r.dof);
-    case Cost::Time: return r.time_s;
-    case Cost::Size: return r.h;
+    case Cost::Dof:
+      return static_cast<double>(r.dof);
+    case Cost::Time:
+      return r.time_s;
+    case Cost::Size:
+      return r.h;
   }
   return kNaN;
 }

@@ -15,9 +15,8 @@ namespace {
 // Columns in file order; the error columns follow kMeasures.
 const std::vector<std::string>& columns() {
   static const std::vector<std::string> names = [] {
-    std::vector<std::string> c = {"study", "problem", "family", "level",  "parameter",
-                                  "value", "h",       "dof",    "elements", "time_s",
-                                  "runs",  "memory_mb"};
+    std::vector<std::string> c = {"study", "problem",  "family", "level", "parameter", "value", "h",
+                                  "dof",   "elements", "time_s", "runs",  "memory_mb"};
     for (Measure m : kMeasures) c.push_back(measure_key(m));
     c.insert(c.end(), {"warnings", "quantities", "failure"});
     return c;
@@ -67,8 +66,7 @@ std::vector<std::string> split_fields(const std::string& row, const std::string&
       fields.back() += c;
     }
   }
-  if (in_quotes)
-    throw std::runtime_error(name + ":" + std::to_string(line) + ": unterminated quote");
+  if (in_quotes) throw StudyCsvError(name, line, "unterminated quote");
   return fields;
 }
 
@@ -102,8 +100,7 @@ class FieldReader {
     return static_cast<long long>(v);
   }
   [[noreturn]] void fail(int column, const std::string& message) const {
-    throw std::runtime_error(name_ + ":" + std::to_string(line_) + ": column " +
-                             columns()[column] + ": " + message);
+    throw StudyCsvError(name_, line_, "column " + columns()[column] + ": " + message);
   }
 
  private:
@@ -114,24 +111,40 @@ class FieldReader {
 
 }  // namespace
 
+StudyCsvError::StudyCsvError(std::string file, int line, std::string message)
+    : std::runtime_error(file + ":" + std::to_string(line) + ": " + message),
+      file_(std::move(file)),
+      line_(line),
+      message_(std::move(message)) {}
+
 const char* measure_key(Measure m) {
   switch (m) {
-    case Measure::PointDisplacement: return "err_u_point";
-    case Measure::PointStress: return "err_s_point";
-    case Measure::DisplacementL2: return "err_u_l2";
-    case Measure::Energy: return "err_energy";
-    case Measure::ContactPressure: return "err_contact_p";
+    case Measure::PointDisplacement:
+      return "err_u_point";
+    case Measure::PointStress:
+      return "err_s_point";
+    case Measure::DisplacementL2:
+      return "err_u_l2";
+    case Measure::Energy:
+      return "err_energy";
+    case Measure::ContactPressure:
+      return "err_contact_p";
   }
   return "";
 }
 
 const char* measure_label(Measure m) {
   switch (m) {
-    case Measure::PointDisplacement: return "displacement error at the named point";
-    case Measure::PointStress: return "stress error at the named point";
-    case Measure::DisplacementL2: return "L2 displacement error";
-    case Measure::Energy: return "energy-norm error";
-    case Measure::ContactPressure: return "contact-pressure error (worst node)";
+    case Measure::PointDisplacement:
+      return "displacement error at the named point";
+    case Measure::PointStress:
+      return "stress error at the named point";
+    case Measure::DisplacementL2:
+      return "L2 displacement error";
+    case Measure::Energy:
+      return "energy-norm error";
+    case Measure::ContactPressure:
+      return "contact-pressure error (worst node)";
   }
   return "";
 }
@@ -145,12 +158,18 @@ std::optional<Measure> measure_from_key(const std::string& key) {
 std::string csv_header() { return joined(columns(), ','); }
 
 std::string csv_row(const RunRecord& r) {
-  std::vector<std::string> f = {r.study,          r.problem,
-                                r.family,         std::to_string(r.level),
-                                r.parameter,      number(r.value),
-                                number(r.h),      std::to_string(r.dof),
-                                std::to_string(r.elements), number(r.time_s),
-                                std::to_string(r.runs),     number(r.memory_mb)};
+  std::vector<std::string> f = {r.study,
+                                r.problem,
+                                r.family,
+                                std::to_string(r.level),
+                                r.parameter,
+                                number(r.value),
+                                number(r.h),
+                                std::to_string(r.dof),
+                                std::to_string(r.elements),
+                                number(r.time_s),
+                                std::to_string(r.runs),
+                                number(r.memory_mb)};
   for (const std::optional<double>& e : r.error) f.push_back(e ? number(*e) : "");
   f.push_back(joined(r.warnings, ';'));
   std::vector<std::string> quantities;
@@ -171,9 +190,9 @@ RunRecord parse_csv_row(const std::string& row, const std::string& name, int lin
   const std::vector<std::string> fields = split_fields(row, name, line);
   const int n = static_cast<int>(columns().size());
   if (static_cast<int>(fields.size()) != n)
-    throw std::runtime_error(name + ":" + std::to_string(line) + ": expected " +
-                             std::to_string(n) + " columns, found " +
-                             std::to_string(fields.size()));
+    throw StudyCsvError(
+        name, line,
+        "expected " + std::to_string(n) + " columns, found " + std::to_string(fields.size()));
   const FieldReader in(fields, name, line);
   RunRecord r;
   int c = 0;
@@ -206,18 +225,17 @@ RunRecord parse_csv_row(const std::string& row, const std::string& name, int lin
   ++c;
   r.failure = in.text(c++);
   if (r.study.empty() || r.problem.empty() || r.family.empty())
-    throw std::runtime_error(name + ":" + std::to_string(line) +
-                             ": study, problem and family must not be empty");
+    throw StudyCsvError(name, line, "study, problem and family must not be empty");
   return r;
 }
 
 std::vector<RunRecord> read_csv(std::istream& in, const std::string& name) {
   std::string line;
-  if (!std::getline(in, line)) throw std::runtime_error(name + ":1: empty file");
+  if (!std::getline(in, line)) throw StudyCsvError(name, 1, "empty file");
   if (!line.empty() && line.back() == '\r') line.pop_back();
   if (line != csv_header())
-    throw std::runtime_error(name + ":1: not a study CSV (the header differs from '" +
-                             csv_header() + "')");
+    throw StudyCsvError(name, 1,
+                        "not a study CSV (the header differs from '" + csv_header() + "')");
   std::vector<RunRecord> records;
   int number_of_line = 1;
   while (std::getline(in, line)) {

@@ -93,8 +93,8 @@ double point_displacement_error(const Model& model, const IncrementResult& r,
   return relative(dot(r.U.at(n), p.direction), dot(u, p.direction));
 }
 
-double point_stress_error(const Model& model, const IncrementResult& r,
-                          const ExactSolution& exact, const StressProbe& p) {
+double point_stress_error(const Model& model, const IncrementResult& r, const ExactSolution& exact,
+                          const StressProbe& p) {
   const int n = node_at(model, p.at, p.label);
   if (exact.scalar()) {
     const Vec3 g = exact.gradient(model.coords[n]);

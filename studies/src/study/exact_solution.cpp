@@ -10,8 +10,12 @@ namespace {
 // no shear out of the plane).
 Tensor6 from_polar(double srr, double stt, double srt, double szz, double theta) {
   const double c = std::cos(theta), s = std::sin(theta);
-  return {srr * c * c + stt * s * s - 2 * srt * s * c, srr * s * s + stt * c * c + 2 * srt * s * c,
-          szz, (srr - stt) * s * c + srt * (c * c - s * s), 0.0, 0.0};
+  return {srr * c * c + stt * s * s - 2 * srt * s * c,
+          srr * s * s + stt * c * c + 2 * srt * s * c,
+          szz,
+          (srr - stt) * s * c + srt * (c * c - s * s),
+          0.0,
+          0.0};
 }
 
 Vec3 from_polar(double ur, double ut, double uz, double theta) {
@@ -117,8 +121,8 @@ class CurvedBar final : public ExactSolution {
     const double c = std::cos(th), s = std::sin(th), lr = std::log(r);
     // nu = 0 in the plane-stress displacements of the cos(theta) stress function.
     const double ur = 2 * D_ / E_ * th * s + c / E_ * (D_ * lr + A_ * r * r + B_ / (r * r));
-    const double ut = 2 * D_ / E_ * th * c + s / E_ * (5 * A_ * r * r + B_ / (r * r) - D_ * lr) -
-                      D_ / E_ * s;
+    const double ut =
+        2 * D_ / E_ * th * c + s / E_ * (5 * A_ * r * r + B_ / (r * r) - D_ * lr) - D_ / E_ * s;
     return from_polar(ur, ut, 0.0, th);
   }
   Tensor6 stress(const Vec3& x, int) const override {

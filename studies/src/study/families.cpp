@@ -30,8 +30,10 @@ const std::vector<ElementFamily>& family_catalogue() {
       {"C3D20", 2, "whole mesh"},
       {"C3D20R", 2, "whole mesh"},
       {"C3D27", 2, "whole mesh"},
-      {"C3D21", 2, "the builder's contact layer, C3D20 elsewhere (one element thick: every element)"},
-      {"C3D28", 2, "the builder's contact layer, C3D20 elsewhere (one element thick: every element)"},
+      {"C3D21", 2,
+       "the builder's contact layer, C3D20 elsewhere (one element thick: every element)"},
+      {"C3D28", 2,
+       "the builder's contact layer, C3D20 elsewhere (one element thick: every element)"},
   };
   return families;
 }

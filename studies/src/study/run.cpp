@@ -54,7 +54,8 @@ void build_solve_measure(const RunSpec& spec, const ReferenceProblem& problem,
     report = AnalysisReport{};
     const auto start = std::chrono::steady_clock::now();
     results = run_static_analysis(model, registry, SolveOptions{}, nullptr, &report);
-    seconds.push_back(std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count());
+    seconds.push_back(
+        std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count());
   }
   r.time_s = median(seconds);
   r.runs = static_cast<int>(seconds.size());
@@ -113,11 +114,19 @@ RunRecord run_isolated(const RunSpec& spec, const std::string& program) {
     failed.failure = std::string("pipe: ") + std::strerror(errno);
     return failed;
   }
-  std::vector<std::string> args = {program,       "study",    "run",
-                                   "--study",     spec.study, "--problem",
-                                   spec.problem,  "--family", spec.family,
-                                   "--level",     std::to_string(spec.level),
-                                   "--repeats",   std::to_string(spec.repeats)};
+  std::vector<std::string> args = {program,
+                                   "study",
+                                   "run",
+                                   "--study",
+                                   spec.study,
+                                   "--problem",
+                                   spec.problem,
+                                   "--family",
+                                   spec.family,
+                                   "--level",
+                                   std::to_string(spec.level),
+                                   "--repeats",
+                                   std::to_string(spec.repeats)};
   std::vector<char*> argv;
   for (std::string& a : args) argv.push_back(a.data());
   argv.push_back(nullptr);
@@ -149,10 +158,9 @@ RunRecord run_isolated(const RunSpec& spec, const std::string& program) {
   while (wait4(pid, &status, 0, &usage) < 0 && errno == EINTR) {
   }
   if (!WIFEXITED(status) || WEXITSTATUS(status) != 0) {
-    failed.failure = WIFSIGNALED(status) ? "the run was killed by signal " +
-                                               std::to_string(WTERMSIG(status))
-                                         : "the run exited with status " +
-                                               std::to_string(WEXITSTATUS(status));
+    failed.failure = WIFSIGNALED(status)
+                         ? "the run was killed by signal " + std::to_string(WTERMSIG(status))
+                         : "the run exited with status " + std::to_string(WEXITSTATUS(status));
     return failed;
   }
   std::istringstream lines(text);
@@ -200,8 +208,7 @@ std::vector<RunRecord> run_problem(const ReferenceProblem& problem, const std::s
         options.progress(problem.name + " " + family + " level " + std::to_string(level));
       out.push_back(options.program.empty() ? run_in_process(spec, registry)
                                             : run_isolated(spec, options.program));
-      if (options.progress && !out.back().ok())
-        options.progress("  failed: " + out.back().failure);
+      if (options.progress && !out.back().ok()) options.progress("  failed: " + out.back().failure);
       if (!sweep && !out.back().ok()) break;
       done.push_back(out.size() - 1);
     }

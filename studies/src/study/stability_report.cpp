@@ -29,9 +29,8 @@ charts::Figure sweep_figure(const std::vector<RunRecord>& records, const Referen
   figure.columns = 2;
   figure.width = 2000;
   figure.height = 760;
-  figure.charts = {
-      sweep_chart(records, sweep.name, kStabilityMeasure, order, sweep.log_parameter),
-      sweep_chart(records, sweep.name, Measure::Energy, order, sweep.log_parameter)};
+  figure.charts = {sweep_chart(records, sweep.name, kStabilityMeasure, order, sweep.log_parameter),
+                   sweep_chart(records, sweep.name, Measure::Energy, order, sweep.log_parameter)};
   return figure;
 }
 
@@ -75,9 +74,9 @@ std::string stability_markdown(const std::vector<RunRecord>& records, const Repo
         "\"Warnings\": volumetric locking, hourglass modes, distorted elements); the tables show "
         "where a family fails, whether a warning fired there, and where a warning fired "
         "although the error stayed below 10 % (a false alarm).\n\n";
-  md << "- Command: `" << c.command << "`\n- Machine: " << c.machine << "\n- Runs: "
-     << records.size() << " (" << failed << " without a result); data: [" << layout.csv_link
-     << "](" << layout.csv_link << ").\n\n";
+  md << "- Command: `" << c.command << "`\n- Machine: " << c.machine
+     << "\n- Runs: " << records.size() << " (" << failed << " without a result); data: ["
+     << layout.csv_link << "](" << layout.csv_link << ").\n\n";
   const std::vector<std::string> order = detail::family_order(records);
   for (const ReferenceProblem& sweep : stability_sweeps())
     sweep_section(md, sweep, records, order, layout);
@@ -104,10 +103,9 @@ void write_stability_report(const std::vector<RunRecord>& records, const ReportC
     bool any = false;
     for (const RunRecord& r : records) any |= r.problem == sweep.name;
     if (!any) continue;
-    detail::write_chart(sweep_figure(records, sweep, order),
-                        (std::filesystem::path(layout.image_dir) /
-                         chart_file("stability", sweep.name))
-                            .string());
+    detail::write_chart(
+        sweep_figure(records, sweep, order),
+        (std::filesystem::path(layout.image_dir) / chart_file("stability", sweep.name)).string());
   }
   write_file_atomically(layout.markdown, stability_markdown(records, context, layout));
 }

@@ -90,8 +90,8 @@ ReferenceProblem incompressibility() {
 const std::vector<ReferenceProblem>& stability_sweeps() {
   static const std::vector<ReferenceProblem> sweeps = {
       distortion("distortion-parallelogram", {0, 10, 20, 30, 40, 50, 60}),
-      distortion("distortion-trapezoid", {0, 5, 10, 15, 20, 25, 30, 35, 40}),
-      aspect_ratio(), incompressibility()};
+      distortion("distortion-trapezoid", {0, 5, 10, 15, 20, 25, 30, 35, 40}), aspect_ratio(),
+      incompressibility()};
   return sweeps;
 }
 

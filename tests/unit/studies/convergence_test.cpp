@@ -45,7 +45,7 @@ TEST(Convergence, SlopesOfExactPowerLaws) {
 }
 
 TEST(Convergence, ParetoFrontAndCheapestRun) {
-  std::vector<RunRecord> runs = series("C3D8", 1.0, 1.0, 4);  // errors 1, .5, .25, .125
+  std::vector<RunRecord> runs = series("C3D8", 1.0, 1.0, 4);         // errors 1, .5, .25, .125
   const std::vector<RunRecord> quad = series("C3D20", 0.2, 2.0, 3);  // .2, .05, .0125
   runs.insert(runs.end(), quad.begin(), quad.end());
   for (RunRecord& r : runs)

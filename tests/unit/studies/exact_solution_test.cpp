@@ -30,8 +30,12 @@ Tensor6 strain_by_differences(const ExactSolution& s, const Vec3& x, int region,
 
 Tensor6 strain_of_stress(const Tensor6& s, double E, double nu) {
   const double G = E / (2 * (1 + nu));
-  return {(s[0] - nu * (s[1] + s[2])) / E, (s[1] - nu * (s[0] + s[2])) / E,
-          (s[2] - nu * (s[0] + s[1])) / E, s[3] / G, s[4] / G, s[5] / G};
+  return {(s[0] - nu * (s[1] + s[2])) / E,
+          (s[1] - nu * (s[0] + s[2])) / E,
+          (s[2] - nu * (s[0] + s[1])) / E,
+          s[3] / G,
+          s[4] / G,
+          s[5] / G};
 }
 
 // div sigma by central differences.

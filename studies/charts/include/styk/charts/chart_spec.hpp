@@ -25,10 +25,10 @@ struct Series {
   std::string name;  // legend text; empty: not listed in the legend
   std::vector<Point> points;
   SeriesStyle style = SeriesStyle::LineAndMarkers;
-  int colour = -1;      // index into the palette (palette_colour); -1: grey
+  int colour = -1;  // index into the palette (palette_colour); -1: grey
   bool dashed = false;
-  double width = 2.0;   // line width, pixels
-  double marker = 7.0;  // marker diameter, pixels
+  double width = 2.0;      // line width, pixels
+  double marker = 7.0;     // marker diameter, pixels
   bool highlight = false;  // drawn wide and translucent behind the others (a Pareto front)
 };
 

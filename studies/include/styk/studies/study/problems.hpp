@@ -33,10 +33,10 @@ struct ProblemSetup {
 };
 
 struct ReferenceProblem {
-  std::string name;      // e.g. "lame"; `styk study run --problem NAME`
-  std::string title;     // e.g. "Lamé thick cylinder, nu = 0.3"
-  std::string source;    // SPEC section and the published solution
-  std::string details;   // mesh series, supports, named points: for the docs
+  std::string name;     // e.g. "lame"; `styk study run --problem NAME`
+  std::string title;    // e.g. "Lamé thick cylinder, nu = 0.3"
+  std::string source;   // SPEC section and the published solution
+  std::string details;  // mesh series, supports, named points: for the docs
   // A stability sweep varies `parameter` over `values` on one mesh (level = index into values);
   // a refinement series has no parameter and levels 0 .. levels - 1.
   std::string parameter;
@@ -45,6 +45,9 @@ struct ReferenceProblem {
   int levels = 0;
   std::vector<std::string> skip_families;  // families the problem cannot run, with the reason in
                                            // `details`
+  // Why a family's fitted orders may miss the theory on this problem (family -> reason), for the
+  // page's list of deviations; a deviation without an entry is listed as unexplained.
+  std::map<std::string, std::string> deviations;
   std::function<ProblemSetup(int level)> setup;
 
   int level_count() const { return parameter.empty() ? levels : static_cast<int>(values.size()); }

@@ -44,8 +44,8 @@ void write_accuracy_report(const std::vector<RunRecord>& records, const ReportCo
                            const ReportLayout& layout);
 void write_stability_report(const std::vector<RunRecord>& records, const ReportContext& context,
                             const ReportLayout& layout);
-std::string model_size_markdown(const std::vector<RunRecord>& records,
-                                const ReportContext& context, const ReportLayout& layout);
+std::string model_size_markdown(const std::vector<RunRecord>& records, const ReportContext& context,
+                                const ReportLayout& layout);
 void write_model_size_report(const std::vector<RunRecord>& records, const ReportContext& context,
                              const ReportLayout& layout);
 

@@ -35,11 +35,11 @@ std::vector<std::string> warning_kinds(const std::vector<std::string>& warnings)
 
 struct SeriesOptions {
   std::vector<std::string> families;  // empty: every available family
-  long long max_dof = 500000;  // refinement stops before a level predicted to exceed it
-  double max_seconds = 120;    // ... or predicted to solve slower than this
-  int repeats = 3;             // timed solves per run (1 for runs predicted over 30 s)
-  int max_levels = 0;          // > 0: at most this many levels per series
-  std::string program;         // `styk` to isolate each run in a child; empty: in-process
+  long long max_dof = 500000;         // refinement stops before a level predicted to exceed it
+  double max_seconds = 120;           // ... or predicted to solve slower than this
+  int repeats = 3;                    // timed solves per run (1 for runs predicted over 30 s)
+  int max_levels = 0;                 // > 0: at most this many levels per series
+  std::string program;                // `styk` to isolate each run in a child; empty: in-process
   std::function<void(const std::string&)> progress;  // one line per run (may be empty)
 };
 

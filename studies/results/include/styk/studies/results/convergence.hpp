@@ -33,9 +33,9 @@ double cost_of(const RunRecord& r, Cost c);
 inline constexpr double kRoundOffFloor = 1e-6;
 
 // The slope of log(error) against log(cost) over the last `last` levels of the series whose
-// error lies above kRoundOffFloor (the asymptotic range; all levels when `last` <= 0). Against the element size (Cost::Size) the
-// slope is the convergence order p of error ~ h^p; against DOF it is -p/d for a mesh refined in
-// d directions.
+// error lies above kRoundOffFloor (the asymptotic range; all levels when `last` <= 0). Against the
+// element size (Cost::Size) the slope is the convergence order p of error ~ h^p; against DOF it is
+// -p/d for a mesh refined in d directions.
 std::optional<LogLogFit> convergence_fit(const std::vector<const RunRecord*>& series, Measure m,
                                          Cost c, int last = 3);
 

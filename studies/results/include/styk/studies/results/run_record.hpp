@@ -8,6 +8,7 @@
 #include <limits>
 #include <map>
 #include <optional>
+#include <stdexcept>
 #include <string>
 #include <vector>
 
@@ -57,8 +58,22 @@ struct RunRecord {
 std::string csv_header();
 std::string csv_row(const RunRecord& record);
 void write_csv(std::ostream& out, const std::vector<RunRecord>& records);
-// Reads a file written by write_csv. Throws std::runtime_error "NAME:LINE: message" for a
-// malformed file (missing columns, bad numbers).
+// A malformed study CSV: what() is "FILE:LINE: message".
+class StudyCsvError : public std::runtime_error {
+ public:
+  StudyCsvError(std::string file, int line, std::string message);
+  const std::string& file() const { return file_; }
+  int line() const { return line_; }
+  const std::string& message() const { return message_; }
+
+ private:
+  std::string file_;
+  int line_;
+  std::string message_;
+};
+
+// Reads a file written by write_csv. Throws StudyCsvError for a malformed file (a foreign header,
+// missing columns, bad numbers), naming the line and the column.
 std::vector<RunRecord> read_csv(std::istream& in, const std::string& name);
 // One row (no header) as written by csv_row.
 RunRecord parse_csv_row(const std::string& row, const std::string& name, int line);
