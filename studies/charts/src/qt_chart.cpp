@@ -76,8 +76,9 @@ std::pair<double, double> data_range(const Chart& chart, bool x_axis) {
     hi = std::pow(10.0, std::ceil(std::log10(hi) + 0.05));
     if (hi <= lo) hi = lo * 10;
   } else {
+    // A little room around the data, but no negative range for data that has none.
     const double pad = hi > lo ? 0.05 * (hi - lo) : std::max(1.0, std::abs(lo)) * 0.1;
-    lo -= pad;
+    lo = lo >= 0 ? std::max(0.0, lo - pad) : lo - pad;
     hi += pad;
   }
   return {axis.min.value_or(lo), axis.max.value_or(hi)};

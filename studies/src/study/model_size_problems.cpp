@@ -60,7 +60,7 @@ ReferenceProblem fit_model(const std::string& name, const std::string& model,
   p.name = name;
   p.title = title;
   p.source = "SPEC §4.2 shrink fit, step 1 (heating)";
-  p.details = "shaft 60 x D20 heated by 100 (alpha 2e-5) into the sleeve 20 x D20/D30, mu = 0.2";
+  p.details = "Shaft 60 x D20 heated by 100 (alpha 2e-5) into the sleeve 20 x D20/D30, mu = 0.2";
   p.levels = 1;
   p.setup = [model](int) {
     ProblemSetup s;

@@ -110,7 +110,7 @@ ReferenceProblem cantilever() {
   p.title = "Cantilever with an exact solution (nu = 0)";
   p.source = "SPEC §2.1 beam; Timoshenko & Goodier §21 (exact in 3D for nu = 0)";
   p.details =
-      "l 150 x h 5 x b 2.5, E = 70 000, nu = 0, P = 5: the root face takes the exact "
+      "Beam l 150 x h 5 x b 2.5, E = 70 000, nu = 0, P = 5: the root face takes the exact "
       "displacements, the free end the exact parabolic shear (consistent nodal forces); meshes "
       "12 x 2, 24 x 4, ... (one element across the width, C3D21/C3D28 layer on the side face: "
       "every element). Named points: tip deflection at mid-height (exact P l^3 / 3EI = 3.0857) "
@@ -181,7 +181,7 @@ ReferenceProblem heat() {
   p.title = "Steady heat through a cylinder wall";
   p.source = "SPEC §6.2: T(r) = T1 - (T1 - T2) ln(r/r1) / ln(r2/r1)";
   p.details =
-      "r 2-3, T = 100 on r = 2 and 25 on r = 3, k = 1, full ring, one element along the axis "
+      "Wall r 2-3, T = 100 on r = 2 and 25 on r = 3, k = 1, full ring, one element along the axis "
       "(length 1); nr = 2, 4, 8, ... through the wall, 16 nr around; C3D21/C3D28 layer on "
       "z = 0 (every element). Named points: T at r = 2.5 and the radial heat flux at r = 2. "
       "C3D8R is left out: its one-point rule cannot carry a conduction (the solver refuses it).";
@@ -207,7 +207,7 @@ ReferenceProblem contact() {
   p.title = "Concentric cylinders in contact (Lamé)";
   p.source = "SPEC §3.2.2: analytic contact pressure 3.294 (compound Lamé cylinders)";
   p.details =
-      "inner r 1-2 (E 10, nu 0.3, 5 inside), outer r 2-3 (E 20, nu 0.2, 3 outside), plane "
+      "Inner r 1-2 (E 10, nu 0.3, 5 inside), outer r 2-3 (E 20, nu 0.2, 3 outside), plane "
       "strain, quarter, frictionless node-to-surface contact; nr = 2, 4, 8, ... per wall, 2 nr "
       "around; C3D21/C3D28 on the two contact layers (C3D20 elsewhere). Named points: u_r at the "
       "bore (1, 0, 0), the hoop stress at the rim (3, 0, 0); the contact pressure at every slave "

@@ -73,7 +73,20 @@ std::string stability_markdown(const std::vector<RunRecord>& records, const Repo
         "above 10 %. Every run also records the solver's pre-solve warnings (docs/solver.md, "
         "\"Warnings\": volumetric locking, hourglass modes, distorted elements); the tables show "
         "where a family fails, whether a warning fired there, and where a warning fired "
-        "although the error stayed below 10 % (a false alarm).\n\n";
+        "although the error stayed below 10 % (a false alarm). The right-hand charts give the "
+        "energy-norm error of the element's strain field (4 x 4 x 4 points per element, as in "
+        "docs/accuracy.md): near incompressibility it weighs the volumetric strain with the "
+        "bulk modulus, so the reduced rules (C3D20R, C3D8R), which keep the volume constant "
+        "only at their own integration points, show large energy errors while their "
+        "displacements stay right.\n\n"
+        "What the warnings cannot see, and why they stay silent there (the sweeps measure it, "
+        "tests/verification/atlas_warnings_test.cpp asserts it): the linear bricks C3D8 and "
+        "C3D14 shear-lock in bending and C3D8R is too flexible with two elements through a bent "
+        "height, whatever the shape (the 'not warned' cells of the beam sweeps), and C3D8I "
+        "loses its bending accuracy on trapezoids whose det J varies less than that of the "
+        "Lamé cylinder's accurate C3D8I elements. A pre-solve check does not know the load: a "
+        "warning on these shapes would be a false alarm in the membrane, thermal and contact "
+        "models of docs/accuracy.md, where the same elements are accurate.\n\n";
   md << "- Command: `" << c.command << "`\n- Machine: " << c.machine
      << "\n- Runs: " << records.size() << " (" << failed << " without a result); data: ["
      << layout.csv_link << "](" << layout.csv_link << ").\n\n";

@@ -22,7 +22,7 @@ detail::BeamSpec sweep_beam() {
 }
 
 const char* kBeamDetails =
-    "beam 10 x 1 x 1 (x, z, y), E = 1000, nu = 0, unit end shear, the exact solution's root "
+    "Beam 10 x 1 x 1 (x, z, y), E = 1000, nu = 0, unit end shear, the exact solution's root "
     "displacements and end tractions; 10 x 2 elements (1 x 0.5), one across the width, "
     "C3D21/C3D28 layer on the side face (every element).";
 
@@ -74,7 +74,7 @@ ReferenceProblem incompressibility() {
   p.title = "Near incompressibility: nu -> 0.5";
   p.source = "SPEC §3.1.7 (volumetric locking); Lamé, plane strain";
   p.details =
-      "the Lamé cylinder of the accuracy series (R 3-9, unit pressure, E = 1000) on its level-1 "
+      "The Lamé cylinder of the accuracy series (R 3-9, unit pressure, E = 1000) on its level-1 "
       "mesh, 4 x 6 elements, nu = 0.3 ... 0.49999 (the parameter is 0.5 - nu).";
   p.parameter = "0.5 - nu";
   p.values = {0.2, 0.1, 0.05, 0.01, 1e-3, 1e-4, 1e-5};

@@ -53,10 +53,11 @@ struct Figure {
 };
 
 // The palette's colour `index` (wrapping) as 0xRRGGBB: ten colours that stay apart on screen and
-// in print (the "tab10" set); grey for a negative index.
+// in print (the "tab10" set with black for its grey, which guides and fronts use); grey for a
+// negative index.
 inline unsigned palette_colour(int index) {
   constexpr unsigned kPalette[10] = {0x1f77b4, 0xff7f0e, 0x2ca02c, 0xd62728, 0x9467bd,
-                                     0x8c564b, 0xe377c2, 0x7f7f7f, 0xbcbd22, 0x17becf};
+                                     0x8c564b, 0xe377c2, 0x000000, 0xbcbd22, 0x17becf};
   return index < 0 ? 0x808080u : kPalette[index % 10];
 }
 
