@@ -13,6 +13,7 @@ add_executable(styk
   src/output_paths.cpp
   src/command_mesh.cpp
   src/command_verify.cpp
+  src/command_study.cpp
 )
 target_include_directories(styk PRIVATE src)
 target_link_libraries(styk PRIVATE styk_solver styk_inp styk_io styk_elements styk_mesher styk_studies CLI11::CLI11 fmt::fmt

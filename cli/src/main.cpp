@@ -7,6 +7,7 @@
 #include "commands.hpp"
 #include "exit_codes.hpp"
 #include "mesh_args.hpp"
+#include "study_args.hpp"
 #include "verify_args.hpp"
 #ifdef STYK_WITH_RENDER
 #include "render_args.hpp"
@@ -104,6 +105,49 @@ int main(int argc, char** argv) {
   verify_cmd->add_option("--write", verify.write_path,
                          "With --table: replace the marked section of this Markdown file");
 
+  StudyArgs study;
+  CLI::App* study_cmd = app.add_subcommand(
+      "study", "Studies against exact solutions: accuracy atlas, stability sweeps, model size");
+  study_cmd->require_subcommand(1);
+  CLI::App* study_run =
+      study_cmd->add_subcommand("run", "One run: build, solve, measure; print its CSV row");
+  study_run->add_option("--study", study.study, "Study the run belongs to (recorded)");
+  study_run->add_option("--problem", study.problem, "Problem or sweep (styk study accuracy --list)")
+      ->required();
+  study_run->add_option("--family", study.family, "Element family")->required();
+  study_run->add_option("--level", study.level, "Refinement level (sweep: index of the value)")
+      ->check(CLI::NonNegativeNumber);
+  study_run->add_option("--repeats", study.repeats, "Timed solves (the median is kept)")
+      ->check(CLI::PositiveNumber);
+  for (const char* name : {"accuracy", "stability", "model-size"}) {
+    CLI::App* sub = study_cmd->add_subcommand(
+        name, std::string(name) == "accuracy"
+                  ? "Refinement series of every element family on problems with exact solutions"
+              : std::string(name) == "stability"
+                  ? "Sweeps where methods fail: distortion, aspect ratio, nu -> 0.5"
+                  : "The SPEC §4.2 shrink fit as full, quarter and sector models");
+    sub->add_option("--problems", study.problems, "Problems to run (default: all)")->delimiter(',');
+    sub->add_option("--families", study.families, "Element families (default: all available)")
+        ->delimiter(',');
+    sub->add_option("--max-dof", study.max_dof, "Stop a series before a level over this many DOF")
+        ->check(CLI::PositiveNumber);
+    sub->add_option("--max-seconds", study.max_seconds,
+                    "Stop a series before a solve predicted slower than this")
+        ->check(CLI::PositiveNumber);
+    sub->add_option("--max-levels", study.max_levels, "At most this many levels per series")
+        ->check(CLI::NonNegativeNumber);
+    sub->add_option("--repeats", study.repeats, "Timed solves per run (median kept)")
+        ->check(CLI::PositiveNumber);
+    sub->add_flag("--in-process", study.in_process, "Run in this process (no peak-memory figures)");
+    sub->add_flag("--list", study.list, "List the problems and families");
+    sub->add_option("-o,--output-dir", study.output_dir, "Directory for the CSV, charts and page");
+    sub->add_option(
+        "--docs", study.docs_dir,
+        "Write the documentation: DIR/<study>.md, DIR/atlas/<study>.csv, DIR/images/atlas/");
+    sub->add_option("--from-csv", study.from_csv,
+                    "Draw the charts and page from this CSV, run nothing");
+  }
+
   app.add_subcommand("elements", "List the element types available, with rules and source");
 
   try {
@@ -128,6 +172,10 @@ int main(int argc, char** argv) {
       return mesh_command(mesh);
     }
     if (*verify_cmd) return verify_command(verify);
+    if (*study_cmd) {
+      for (CLI::App* sub : study_cmd->get_subcommands()) study.kind = sub->get_name();
+      return study_command(study);
+    }
     return elements_command();
   });
 }

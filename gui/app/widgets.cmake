@@ -14,6 +14,7 @@ add_library(styk_gui_widgets STATIC
   src/model_tree.cpp
   src/results_panel.cpp
   src/path_chart.cpp
+  src/study_chart_window.cpp
   src/solve_runner.cpp
   src/child_process_solve.cpp
   src/main_window.cpp
@@ -22,8 +23,8 @@ add_library(styk_gui_widgets STATIC
 set_target_properties(styk_gui_widgets PROPERTIES AUTOMOC ON)
 target_include_directories(styk_gui_widgets PUBLIC ${CMAKE_CURRENT_SOURCE_DIR}/src)
 target_link_libraries(styk_gui_widgets
-  PUBLIC styk_gui_session Qt6::Widgets Qt6::OpenGL Qt6::OpenGLWidgets Qt6::Charts
-  PRIVATE styk_inp styk_io styk_mesher styk_warnings)
+  PUBLIC styk_gui_session styk_study_results Qt6::Widgets Qt6::OpenGL Qt6::OpenGLWidgets Qt6::Charts
+  PRIVATE styk_charts styk_inp styk_io styk_mesher styk_warnings)
 # Solving runs `styk solve` as a child process; in the build tree it is found here (cli/ is
 # added after gui/, so no if(TARGET styk): the generator expression resolves at generation).
 target_compile_definitions(styk_gui_widgets PRIVATE STYK_CLI_BUILD_PATH="$<TARGET_FILE:styk>")

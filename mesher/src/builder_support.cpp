@@ -25,17 +25,29 @@ std::string family(const BuilderParams& params, const std::vector<std::string>& 
   return value;
 }
 
+const std::vector<std::string> kAllHexFamilies = {"C3D8",  "C3D20", "C3D14",  "C3D21", "C3D28",
+                                                  "C3D8R", "C3D8I", "C3D20R", "C3D27"};
+
 std::string base_type(const std::string& family) {
-  return family == "C3D8" || family == "C3D14" ? "C3D8" : "C3D20";
+  return family == "C3D8" || family == "C3D8R" || family == "C3D8I" || family == "C3D14" ? "C3D8"
+                                                                                         : "C3D20";
 }
 
 void apply_family(Mesh& mesh, const std::string& family, const std::string& contact_surface) {
-  if (family == "C3D14")
+  if (family == "C3D8R" || family == "C3D8I") {
+    for (MeshElement& e : mesh.elements)
+      if (e.type == "C3D8") e.type = family;  // the same nodes, another formulation
+  } else if (family == "C3D20R") {
+    convert_to_c3d20r(mesh);
+  } else if (family == "C3D27") {
+    convert_to_c3d27(mesh);
+  } else if (family == "C3D14") {
     convert_to_c3d14(mesh);
-  else if (family == "C3D21")
+  } else if (family == "C3D21") {
     convert_layer_to_c3d21(mesh, contact_surface);
-  else if (family == "C3D28")
+  } else if (family == "C3D28") {
     convert_layer_to_c3d28(mesh, contact_surface);
+  }
 }
 
 BlockMap box_map(const Vec3& origin, const Vec3& size) {

@@ -20,10 +20,14 @@ constexpr double kPi = 3.14159265358979323846;
 ParamDecl family_param(const std::string& default_family, const std::vector<std::string>& allowed);
 // Reads and checks it.
 std::string family(const BuilderParams& params, const std::vector<std::string>& allowed);
-// What to mesh blocks with: C3D8 for C3D8/C3D14, C3D20 otherwise.
+// Every hexahedron family a builder can mesh with: the thesis' five, then the other built-in
+// formulations (the studies' refinement series use them; builders opt in one by one).
+extern const std::vector<std::string> kAllHexFamilies;
+// What to mesh blocks with: C3D8 for the 8-node families (C3D8, C3D8R, C3D8I, C3D14), C3D20
+// otherwise.
 std::string base_type(const std::string& family);
-// Converts a base mesh to the family: C3D14 everywhere; C3D21/C3D28 on the layer of
-// `contact_surface` (its faces become S1).
+// Converts a base mesh to the family: C3D14, C3D8R, C3D8I, C3D20R and C3D27 everywhere;
+// C3D21/C3D28 on the layer of `contact_surface` (its faces become S1).
 void apply_family(Mesh& mesh, const std::string& family, const std::string& contact_surface);
 
 // An axis-aligned box as a block map.

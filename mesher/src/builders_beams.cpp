@@ -19,17 +19,54 @@ std::string fmt_number(double v) {
   return buf;
 }
 
-// A box beam along x: size (L, width y, height z), CONTACT = the z = 0 face, TIPFACE = x = L.
+// A box beam along x: size (L, width y, height z), TIPFACE = x = L, CONTACT = the face of the
+// C3D21/C3D28 layer: the z = 0 face (bottom), or the y = 0 side face (side: with one element
+// across the width every element has a face there, so the whole beam is of the family).
 Mesh box_beam(const std::string& family, const Vec3& size, const std::array<int, 3>& divisions,
-              const std::function<void(Mesh&)>& distort = nullptr) {
+              const std::function<void(Mesh&)>& distort = nullptr, bool side_layer = false) {
   Mesh mesh;
   const Block b =
       mesh_block(mesh, box_map({0, 0, 0}, size), {base_type(family), divisions, {1, 1, 1}, "EALL"});
+  mesh.add_to_surface("ROOTFACE", b.side_faces(0, -1));
   mesh.add_to_surface("TIPFACE", b.side_faces(0, +1));
-  mesh.add_to_surface("CONTACT", b.side_faces(2, -1));
+  mesh.add_to_surface("CONTACT", side_layer ? b.side_faces(1, -1) : b.side_faces(2, -1));
   if (distort) distort(mesh);
   apply_family(mesh, family, "CONTACT");
   return mesh;
+}
+
+// The cantilever's element distortion in the bending plane x-z (MacNeal-Harder's element shape
+// tests): the grid line x_i through the height turns by `angle` about the beam's mid-height,
+// x += s(x) (z - h/2) tan(angle). parallelogram: s = 1 everywhere (the end faces turn too);
+// trapezoid: s = -1, +1, -1, ... on the interior lines, 0 on the end faces, linear in between
+// (mid-edge nodes stay at the middle of straight edges).
+std::function<void(Mesh&)> cantilever_distortion(const BuilderParams& p, double L, double h,
+                                                 int nx) {
+  const std::string kind = p.choice("distortion", {"none", "parallelogram", "trapezoid"});
+  const double angle = p.number("angle");
+  if (kind == "none") return nullptr;
+  if (!(std::abs(angle) < 89.0))
+    p.fail("--angle must lie within +-89 degrees, not " + p.text("angle"));
+  const double t = std::tan(angle * kPi / 180), dx = L / nx;
+  // A trapezoid's narrow side is dx - h tan(angle): it must stay positive.
+  if (kind == "trapezoid" && !(h * std::abs(t) < dx))
+    p.fail("--angle " + p.text("angle") + " inverts the trapezoids: with elements " +
+           fmt_number(dx) + " long and a beam " + fmt_number(h) +
+           " high the angle must stay below " + fmt_number(std::atan(dx / h) * 180 / kPi) +
+           " degrees");
+  const bool trapezoid = kind == "trapezoid";
+  return [=](Mesh& mesh) {
+    auto line_sign = [&](int i) {
+      if (!trapezoid) return 1.0;
+      return i == 0 || i == nx ? 0.0 : (i % 2 ? 1.0 : -1.0);
+    };
+    for (Vec3& x : mesh.nodes) {
+      const double u = x[0] / dx;
+      const int i = std::min(nx - 1, std::max(0, static_cast<int>(std::floor(u))));
+      const double f = u - i, s = (1 - f) * line_sign(i) + f * line_sign(i + 1);
+      x[0] += s * (x[2] - h / 2) * t;
+    }
+  };
 }
 
 // Clamps ROOT, writes the step with the loads and the usual prints.
@@ -54,7 +91,7 @@ std::vector<ConcentratedLoad> loaded_point(BuildResult& r, const std::vector<int
 }
 
 BuildResult cantilever(const BuilderParams& p, const ElementRegistry& registry) {
-  const std::string fam = family(p, kFamilies);
+  const std::string fam = family(p, kAllHexFamilies);
   const std::string mesh_text = p.text("mesh");
   int nx = 0, nz = 0;
   char extra = 0;
@@ -63,9 +100,9 @@ BuildResult cantilever(const BuilderParams& p, const ElementRegistry& registry) 
            mesh_text + "'");
   const double L = p.positive("length"), b = p.positive("width"), h = p.positive("height");
   const double P = p.number("force");
+  const bool side_layer = p.choice("layer", {"bottom", "side"}) == "side";
   BuildResult r;
-  r.mesh = box_beam(fam, {L, b, h}, {nx, 1, nz});
-  const double tol = 1e-6 * r.mesh.size();
+  r.mesh = box_beam(fam, {L, b, h}, {nx, 1, nz}, cantilever_distortion(p, L, h, nx), side_layer);
   const double E = p.positive("young");
   r.model = finish_model(r.mesh,
                          "SPEC 2.1 cantilever " + fam + " " + mesh_text + ": P = " + fmt_number(P) +
@@ -73,8 +110,9 @@ BuildResult cantilever(const BuilderParams& p, const ElementRegistry& registry) 
                              "u = P l^3 / (3 E I) = " +
                              fmt_number(P * L * L * L / (3 * E * b * h * h * h / 12)),
                          E, p.number("poisson"));
-  const auto root = nodes_where(r.mesh, [&](const Vec3& x) { return x[0] < tol; });
-  const auto tip = nodes_where(r.mesh, [&](const Vec3& x) { return x[0] > L - tol; });
+  // The end faces by their element faces (a parallelogram mesh turns them).
+  const std::vector<int> root = r.mesh.surface_nodes("ROOTFACE");
+  const std::vector<int> tip = r.mesh.surface_nodes("TIPFACE");
   finish_cantilever(r, root, tip,
                     traction_loads(r.model, registry, r.mesh.surfaces.at("TIPFACE"), {0, 0, P}));
   return r;
@@ -141,9 +179,9 @@ BuildResult beam_312(const BuilderParams& p, const ElementRegistry& registry) {
 }
 
 BuildResult curved_beam(const BuilderParams& p, const ElementRegistry& registry) {
-  const std::string fam = family(p, kFamilies);
+  const std::string fam = family(p, kAllHexFamilies);
   const std::string load = p.choice("load", {"inplane", "outofplane"});
-  const int n = p.count("n");
+  const int n = p.count("n"), nr = p.count("nr");
   const double ri = 4.12, ro = 4.32, t = 0.1;
   // xi: thickness (z), eta: radius, zeta: angle 0..90 deg about z -> (z, r, theta) right-handed.
   const BlockMap map = [=](const Vec3& xi) {
@@ -152,7 +190,8 @@ BuildResult curved_beam(const BuilderParams& p, const ElementRegistry& registry)
     return Vec3{r * std::cos(a), r * std::sin(a), z};
   };
   BuildResult r;
-  const Block b = mesh_block(r.mesh, map, {base_type(fam), {1, 1, n}, {1, 1, 1}, "EALL"});
+  const Block b = mesh_block(r.mesh, map, {base_type(fam), {1, nr, n}, {1, 1, 1}, "EALL"});
+  r.mesh.add_to_surface("ROOTFACE", b.side_faces(2, -1));
   r.mesh.add_to_surface("TIPFACE", b.side_faces(2, +1));
   r.mesh.add_to_surface("CONTACT", b.side_faces(0, -1));
   apply_family(r.mesh, fam, "CONTACT");
@@ -212,18 +251,23 @@ BuildResult twisted_beam(const BuilderParams& p, const ElementRegistry&) {
 }  // namespace
 
 void add_beam_builders(std::vector<BuilderInfo>& all) {
-  all.push_back({"cantilever",
-                 "§2.1",
-                 "Cantilever l = 150, b = 2.5, h = 5 (meshes 6x1, 12x2, 12x4, 24x8)",
-                 {family_param("C3D8", kFamilies),
-                  {"mesh", "6x1", "divisions along the length x height (1 across the width)"},
-                  {"length", "150", "beam length l"},
-                  {"width", "2.5", "width b"},
-                  {"height", "5", "height h (load direction)"},
-                  {"young", "70000", "Young's modulus E"},
-                  {"poisson", "0", "Poisson's ratio"},
-                  {"force", "5", "tip force P (uniform shear traction on the end face)"}},
-                 cantilever});
+  all.push_back(
+      {"cantilever",
+       "§2.1",
+       "Cantilever l = 150, b = 2.5, h = 5 (meshes 6x1, 12x2, 12x4, 24x8)",
+       {family_param("C3D8", kAllHexFamilies),
+        {"mesh", "6x1", "divisions along the length x height (1 across the width)"},
+        {"layer", "bottom",
+         "face of the C3D21/C3D28 layer: bottom (z = 0) or side (y = 0: every element)"},
+        {"distortion", "none", "element shapes in the x-z plane: none, parallelogram or trapezoid"},
+        {"angle", "0", "distortion angle of the element sides, degrees"},
+        {"length", "150", "beam length l"},
+        {"width", "2.5", "width b"},
+        {"height", "5", "height h (load direction)"},
+        {"young", "70000", "Young's modulus E"},
+        {"poisson", "0", "Poisson's ratio"},
+        {"force", "5", "tip force P (uniform shear traction on the end face)"}},
+       cantilever});
   all.push_back({"straight-beam",
                  "§3.1.1",
                  "Straight cantilever 6 x 0.2 x 0.1 (1a tension, 1b bending)",
@@ -249,8 +293,9 @@ void add_beam_builders(std::vector<BuilderInfo>& all) {
   all.push_back({"curved-beam",
                  "§3.1.3",
                  "Curved beam stand-in: MacNeal-Harder 90° arc r 4.12-4.32, t 0.1",
-                 {family_param("C3D21", kFamilies),
+                 {family_param("C3D21", kAllHexFamilies),
                   {"n", "6", "elements along the arc"},
+                  {"nr", "1", "elements across the radial depth"},
                   {"load", "inplane", "inplane (0.08734) or outofplane (0.5022) unit tip shear"},
                   {"young", "1e7", "Young's modulus E"},
                   {"poisson", "0.25", "Poisson's ratio"}},

@@ -108,7 +108,7 @@ double lame_displacement(double r, double a, double b, double pa, double pb, dou
 }
 
 BuildResult concentric_cylinders(const BuilderParams& p, const ElementRegistry&) {
-  const std::string fam = family(p, kFamilies);
+  const std::string fam = family(p, kAllHexFamilies);
   const int nr = p.count("nr"), ntheta = p.count("ntheta");
   const double r1 = 1, r2 = 2, r3 = 3, length = 1;
   const double pi = p.number("p-inner"), po = p.number("p-outer");
@@ -302,7 +302,7 @@ void add_contact_builders(std::vector<BuilderInfo>& all) {
   all.push_back({"cylinders",
                  "§3.2.2",
                  "Two concentric cylinders (Lamé), plane strain, quarter",
-                 {family_param("C3D21", kFamilies),
+                 {family_param("C3D21", kAllHexFamilies),
                   {"nr", "3", "elements through each wall"},
                   {"ntheta", "16", "elements around the quarter (contact elements per side)"},
                   {"p-inner", "5", "internal pressure"},

@@ -17,8 +17,6 @@
 namespace styk::mesher::detail {
 namespace {
 
-const std::vector<std::string> kFamilies = {"C3D8", "C3D20", "C3D14", "C3D21", "C3D28"};
-
 constexpr double kShaftRadius = 10, kSleeveRadius = 15, kShaftLength = 60;
 constexpr double kFitStart = 20, kFitEnd = 40;
 
@@ -31,11 +29,13 @@ struct FitMesh {
   double core = 0.5;  // core half-width / shaft radius
 };
 
-// One quarter of the shaft and the sleeve (angles angle .. angle + 90 deg).
-void mesh_quarter(Mesh& mesh, const std::string& type, const FitMesh& m, double angle) {
-  const int n = m.around / 2;
+// A sector of the shaft and the sleeve from `angle` over `sweep` (at most 90 deg) with `around`
+// elements around (even): the quarter of models A and B, or model C's thin sector.
+void mesh_sector(Mesh& mesh, const std::string& type, const FitMesh& m, double angle, double sweep,
+                 int around) {
+  const int n = around / 2;
   const auto shaft = [](double) { return kShaftRadius; };
-  const std::vector<SectionPatch> o_grid = quarter_o_grid(m.core);
+  const std::vector<SectionPatch> o_grid = sector_o_grid(m.core, sweep);
   const double z[4] = {0, kFitStart, kFitEnd, kShaftLength};
   const int rows[3] = {m.end_rows, m.fit_rows, m.end_rows};
   for (int k = 0; k < 3; ++k)
@@ -44,12 +44,12 @@ void mesh_quarter(Mesh& mesh, const std::string& type, const FitMesh& m, double 
                  {type, {part == 0 ? n : m.shaft_rings, n, rows[k]}, {1, 1, 1}, "SHAFT"});
   // The sleeve in units of its inner radius: s from 1 to R_o / R_i.
   const double outer = kSleeveRadius / kShaftRadius;
-  const SectionPatch sleeve = [outer](double s, double t) {
-    const double r = 1 + s * (outer - 1), a = 0.5 * kPi * t;
+  const SectionPatch sleeve = [outer, sweep](double s, double t) {
+    const double r = 1 + s * (outer - 1), a = sweep * t;
     return Vec3{r * std::cos(a), r * std::sin(a), 0};
   };
   const Block b = mesh_block(mesh, prism(sleeve, kFitStart, kFitEnd, shaft, angle),
-                             {type, {m.sleeve_rings, m.around, m.fit_rows}, {1, 1, 1}, "SLEEVE"});
+                             {type, {m.sleeve_rings, around, m.fit_rows}, {1, 1, 1}, "SLEEVE"});
   mesh.add_to_surface("SLEEVE_TOP", b.side_faces(2, +1));
 }
 
@@ -108,20 +108,51 @@ std::vector<ConcentratedLoad> torque_loads(const Mesh& mesh, const std::vector<i
   return loads;
 }
 
+// Model C's symmetry planes: theta = 0 holds y; theta = sweep holds the tangential displacement
+// through a cylindrical *TRANSFORM (the heating and the axial load are axisymmetric, so a sector
+// sees what the whole joint sees); the nodes on the axis lie on both planes and hold x and y.
+void hold_sector_planes(Model& model, const Mesh& mesh, double sweep, double tol) {
+  std::vector<int> axis, first, second;
+  for (int node = 0; node < static_cast<int>(mesh.nodes.size()); ++node) {
+    const Vec3& x = mesh.nodes[node];
+    const double r = std::hypot(x[0], x[1]);
+    if (r < tol)
+      axis.push_back(node);
+    else if (std::abs(x[1]) < tol)
+      first.push_back(node);
+    else if (std::abs(x[0] * std::sin(sweep) - x[1] * std::cos(sweep)) < tol)
+      second.push_back(node);
+  }
+  fix(model, axis, {1, 2});
+  fix(model, first, {2});
+  add_node_set(model, "SECTOR_PLANE", second);
+  Transform t;
+  t.nset = "SECTOR_PLANE";
+  t.axes.system = CoordinateSystem::Cylindrical;
+  t.axes.a = {0, 0, 0};
+  t.axes.b = {0, 0, 1};
+  model.transforms.push_back(t);
+  fix(model, second, {2});
+}
+
 BuildResult shrink_fit(const BuilderParams& p, const ElementRegistry&) {
-  const std::string fam = family(p, kFamilies);
-  const std::string model_name = to_upper(p.choice("model", {"A", "B"}));
-  const bool full = model_name == "B";
-  std::string load_case = p.choice("load-case", {"auto", "axial", "torque"});
+  const std::string fam = family(p, kAllHexFamilies);
+  const std::string model_name = to_upper(p.choice("model", {"A", "B", "C"}));
+  const bool full = model_name == "B", sector = model_name == "C";
+  std::string load_case = p.choice("load-case", {"auto", "axial", "torque", "fit"});
   if (load_case == "auto") load_case = full ? "torque" : "axial";
   if (load_case == "torque" && !full)
-    p.fail(
-        "--load-case torque needs --model B: a quarter model cannot carry a torque "
-        "without cyclic symmetry");
+    p.fail("--load-case torque needs --model B: a " + std::string(sector ? "sector" : "quarter") +
+           " model cannot carry a torque without cyclic symmetry");
   const std::string fit = p.choice("fit", {"thermal", "clearance"});
   FitMesh m;
   m.around = p.count("around", 2);
   if (m.around % 2 != 0) p.fail("--around must be even (two O-grid blocks per quarter)");
+  const int sector_around = p.count("sector", 2);
+  if (sector_around % 2 != 0 || sector_around > m.around)
+    p.fail("--sector must be even (two O-grid blocks) and at most --around (" +
+           std::to_string(m.around) + ")");
+  const double sweep = sector ? 0.5 * kPi * sector_around / m.around : 0.5 * kPi;
   m.shaft_rings = p.count("shaft-rings");
   m.sleeve_rings = p.count("sleeve-rings");
   m.fit_rows = p.count("fit-rows");
@@ -129,13 +160,16 @@ BuildResult shrink_fit(const BuilderParams& p, const ElementRegistry&) {
   const double alpha = p.positive("alpha"), dT = p.number("dT");
   std::string mu_text = p.text("mu");
   if (to_upper(mu_text) == "AUTO") mu_text = load_case == "torque" ? "0.4" : "0.2";
+  const std::string model_text = full     ? " (full)"
+                                 : sector ? " (sector of " + fmt_number(sweep * 180 / kPi) + " deg)"
+                                          : " (quarter)";
   const std::optional<Friction> friction = friction_value(p, "mu", mu_text);
 
   BuildResult r;
   Mesh& mesh = r.mesh;
   const std::string type = base_type(fam);
   for (int quarter = 0; quarter < (full ? 4 : 1); ++quarter)
-    mesh_quarter(mesh, type, m, quarter * 0.5 * kPi);
+    mesh_sector(mesh, type, m, quarter * 0.5 * kPi, sweep, sector ? sector_around : m.around);
   merge_coincident_nodes(mesh);
   split_bodies(mesh, "SLEEVE", "SLEEVE_BORE", "SHAFT_FIT");
   mesh.add_to_element_set("EALL", mesh.element_sets.at("SHAFT"));
@@ -146,14 +180,16 @@ BuildResult shrink_fit(const BuilderParams& p, const ElementRegistry&) {
   const double interference = alpha * dT * kShaftRadius;
   r.model = contact_model(
       mesh,
-      "SPEC 4.2 shrink fit, model " + model_name + (full ? " (full)" : " (quarter)") + ", " + fam +
+      "SPEC 4.2 shrink fit, model " + model_name + model_text + ", " + fam +
           ": shaft 60 x D20, sleeve 20 x D20/D30 centred, E = " + fmt_number(E) +
           ", nu = " + fmt_number(nu) + ", mu = " + mu_text + "; step 1 " +
           (fit == "thermal"
                ? "heats the shaft by " + fmt_number(dT) + " (alpha " + fmt_number(alpha) + ")"
                : "closes a radial interference " + fmt_number(interference)) +
           ", then " +
-          (load_case == "axial" ? "axial pressure on the sleeve top" : "torque on the sleeve") +
+          (load_case == "axial"    ? "axial pressure on the sleeve top"
+           : load_case == "torque" ? "torque on the sleeve"
+                                   : "nothing more") +
           ". Tab 4.1 shaft end (thermal): elongation 0.1268 (C3D21), diametral growth 0.0401",
       {{"SHAFT", "SHAFT", E, nu, fit == "thermal" ? std::optional<double>(alpha) : std::nullopt},
        {"SLEEVE", "SLEEVE", E, nu, {}}});
@@ -167,7 +203,9 @@ BuildResult shrink_fit(const BuilderParams& p, const ElementRegistry&) {
   add_node_set(r.model, "SHAFT_BASE", base);
   add_node_set(r.model, "SHAFT_END", end);
   fix(r.model, base, {3});
-  if (!full) {
+  if (sector) {
+    hold_sector_planes(r.model, mesh, sweep, tol);
+  } else if (!full) {
     fix(r.model, nodes_where(mesh, [&](const Vec3& x) { return std::abs(x[0]) < tol; }), {1});
     fix(r.model, nodes_where(mesh, [&](const Vec3& x) { return std::abs(x[1]) < tol; }), {2});
   } else {
@@ -225,6 +263,7 @@ BuildResult shrink_fit(const BuilderParams& p, const ElementRegistry&) {
 
   const bool quadratic = type == "C3D20";
   int index = 1;
+  if (load_case == "fit") return r;
   if (load_case == "axial") {
     for (double pressure : number_list(p, "pressures")) {
       Step push = static_step();
@@ -259,11 +298,14 @@ void add_shrink_fit_builder(std::vector<BuilderInfo>& all) {
       {"shrink-fit",
        "§4.2",
        "Shrink fit: shaft 60 x Ø20, sleeve 20 x Ø20/Ø30; model A quarter, model B full",
-       {family_param("C3D21", kFamilies),
-        {"model", "A", "A: quarter (3072 elements, 144 contact pairs), B: full (12288)"},
+       {family_param("C3D21", kAllHexFamilies),
+        {"model", "A",
+         "A: quarter (3072 elements, 144 contact pairs), B: full (12288), C: a thin sector of "
+         "--sector elements around (symmetry planes; heating and axial load only)"},
         {"load-case", "auto",
-         "axial (step 2A, pressure on the sleeve top) or torque (2B, model "
-         "B); auto: A axial, B torque"},
+         "axial (step 2A, pressure on the sleeve top), torque (2B, model B) or fit (the heating "
+         "step alone); auto: A and C axial, B torque"},
+        {"sector", "2", "model C: elements around the sector (even; 2 = 15 deg with --around 12)"},
         {"fit", "thermal", "thermal (heat the shaft by dT) or clearance (*CLEARANCE -alpha dT r)"},
         {"mu", "auto", "friction coefficient (auto: 0.2 axial, 0.4 torque; 'rough')"},
         {"pressures", "52.5,72", "axial pressures on the sleeve's top annulus, one step each"},

@@ -161,14 +161,22 @@ void pressure_on(Step& step, const Mesh& mesh, const std::string& surface, doubl
     step.dloads.push_back({f.element, f.face + 1, p, {}});
 }
 
+// The face of the C3D21/C3D28 layer of the ring builders: the inner wall (`inner`, the thesis'
+// contact face) or the z = 0 face (`bottom`: with one element along the axis, every element).
+std::vector<FaceRef> layer_faces(const BuilderParams& p, const Block& b) {
+  return p.choice("layer", {"inner", "bottom"}) == "inner" ? b.side_faces(0, -1)
+                                                           : b.side_faces(2, -1);
+}
+
 BuildResult thick_cylinder(const BuilderParams& p, const ElementRegistry&) {
-  const std::string fam = family(p, kFamilies);
+  const std::string fam = family(p, kAllHexFamilies);
   const double r1 = 3, r2 = 9, nu = p.number("poisson"), E = p.positive("young");
   BuildResult r;
   const Block b = ring(r.mesh, base_type(fam), r1, r2, 0.5 * kPi, 1.0,
                        {p.count("nr"), p.count("ntheta"), 1}, p.positive("grading"));
   r.mesh.add_to_surface("INNERFACE", b.side_faces(0, -1));
-  apply_family(r.mesh, fam, "INNERFACE");
+  r.mesh.add_to_surface("LAYER", layer_faces(p, b));
+  apply_family(r.mesh, fam, "LAYER");
   const double u =
       (1 + nu) * r1 * r1 / (E * (r2 * r2 - r1 * r1)) * (r2 * r2 / r1 + (1 - 2 * nu) * r1);
   char theory[64];
@@ -256,15 +264,17 @@ BuildResult patch_test(const BuilderParams& p, const ElementRegistry&) {
 }
 
 BuildResult cylinder_wall(const BuilderParams& p, const ElementRegistry&) {
-  const std::string fam = family(p, kFamilies);
+  const std::string fam = family(p, kAllHexFamilies);
   const double r1 = 2, r2 = 3, length = p.positive("length");
   const double t1 = p.number("t1"), t2 = p.number("t2"), k = p.positive("conductivity");
   BuildResult r;
   const Block b = ring(r.mesh, base_type(fam), r1, r2, 2 * kPi, length,
                        {p.count("nr"), p.count("ntheta"), p.count("nz")}, 1.0);
   r.mesh.add_to_surface("INNERFACE", b.side_faces(0, -1));
+  r.mesh.add_to_surface("OUTERFACE", b.side_faces(0, +1));
+  r.mesh.add_to_surface("LAYER", layer_faces(p, b));
   merge_coincident_nodes(r.mesh);  // close the ring at 0 / 360 deg
-  apply_family(r.mesh, fam, "INNERFACE");
+  apply_family(r.mesh, fam, "LAYER");
   char theory[160];
   std::snprintf(theory, sizeof theory,
                 "T(r) = %g - (%g - %g) ln(r/2)/ln(3/2); heat flow per unit length 2 pi k "
@@ -281,12 +291,11 @@ BuildResult cylinder_wall(const BuilderParams& p, const ElementRegistry&) {
   material.young.reset();
   material.poisson.reset();
   material.conductivity = std::array<double, 3>{k, k, k};
-  // The inner wall by its faces: the face nodes a C3D21/C3D28 adds there are interpolated on
-  // the quadratic face and sit up to ~1e-6 off the circle.
+  // The walls by their faces: the face nodes a C3D21/C3D28 adds there are interpolated on the
+  // quadratic face and sit up to ~1e-6 off the circle, and a C3D14's face centre (the mean of
+  // the face's corners) lies inside it.
   const std::vector<int> inner = r.mesh.surface_nodes("INNERFACE");
-  const double tol = 1e-7 * r2;
-  const auto outer = nodes_where(
-      r.mesh, [&](const Vec3& x) { return std::abs(std::hypot(x[0], x[1]) - r2) < tol; });
+  const std::vector<int> outer = r.mesh.surface_nodes("OUTERFACE");
   add_node_set(r.model, "INNER", inner);
   add_node_set(r.model, "OUTER", outer);
   std::vector<int> all(r.model.node_count());
@@ -340,12 +349,14 @@ void add_solid_builders(std::vector<BuilderInfo>& all) {
   all.push_back({"thick-cylinder",
                  "§3.1.7",
                  "Thick-walled cylinder R 3-9, plane strain, 4:1 radial grading",
-                 {family_param("C3D21", kFamilies),
+                 {family_param("C3D21", kAllHexFamilies),
                   {"nr", "5", "elements through the wall"},
                   {"ntheta", "9", "elements around the quarter (10° each, as the thesis' sector)"},
                   {"grading", "4", "outer / inner element length"},
                   {"poisson", "0.49", "Poisson's ratio (0.49, 0.499, 0.4999)"},
-                  {"young", "1000", "Young's modulus E"}},
+                  {"young", "1000", "Young's modulus E"},
+                  {"layer", "inner",
+                   "face of the C3D21/C3D28 layer: inner (wall) or bottom (z = 0: every element)"}},
                  thick_cylinder});
   all.push_back({"patch-test",
                  "§3.1.8",
@@ -357,14 +368,17 @@ void add_solid_builders(std::vector<BuilderInfo>& all) {
   all.push_back({"cylinder-wall",
                  "§6.2",
                  "Steady heat through a cylinder wall r 2-3, T 100 inside, 25 outside",
-                 {family_param("C3D28", kFamilies),
+                 {family_param("C3D28", kAllHexFamilies),
                   {"nr", "1", "elements through the wall"},
                   {"ntheta", "40", "elements around"},
                   {"nz", "5", "elements along the axis"},
                   {"length", "1", "axial length"},
                   {"t1", "100", "temperature on r = 2"},
                   {"t2", "25", "temperature on r = 3"},
-                  {"conductivity", "1", "conductivity k"}},
+                  {"conductivity", "1", "conductivity k"},
+                  {"layer", "inner",
+                   "face of the C3D21/C3D28 layer: inner (wall) or bottom (z = 0: with --nz 1, "
+                   "every element)"}},
                  cylinder_wall});
 }
 

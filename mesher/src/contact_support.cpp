@@ -6,6 +6,7 @@
 #include <functional>
 #include <stdexcept>
 
+#include "builder_support.hpp"
 #include "styk/mesher/convert.hpp"
 #include "styk/mesher/hex_topology.hpp"
 #include "styk/mesher/interface.hpp"
@@ -44,11 +45,10 @@ Model contact_model(const Mesh& mesh, const std::string& heading,
 
 void convert_contact_layers(Mesh& mesh, const std::string& family,
                             const std::vector<std::string>& contact_surfaces) {
-  if (family == "C3D14") {
-    convert_to_c3d14(mesh);
+  if (family != "C3D21" && family != "C3D28") {
+    apply_family(mesh, family, "");  // every element: C3D14, C3D8R, C3D8I, C3D20R, C3D27
     return;
   }
-  if (family != "C3D21" && family != "C3D28") return;
   // The conversion rewrites the surface it converts (a closed C3D28 layer may be larger than the
   // contact face); a working copy keeps the named surface to its own faces, which follow the
   // renumbering like every surface.
@@ -115,7 +115,10 @@ OutputRequest contact_print(const std::string& family) {
   OutputRequest r;
   r.kind = OutputRequest::Kind::ContactPrint;
   r.vars = {"CSTR", "CDIS"};
-  if (family != "C3D8" && family != "C3D20") r.vars.push_back("CSTATUS");
+  // CalculiX runs decks of its own element types; the others get the contact status too.
+  if (family != "C3D8" && family != "C3D20" && family != "C3D8R" && family != "C3D8I" &&
+      family != "C3D20R")
+    r.vars.push_back("CSTATUS");
   return r;
 }
 
@@ -175,19 +178,27 @@ int split_bodies(Mesh& mesh, const std::string& body_a, const std::string& surfa
 }
 
 std::vector<SectionPatch> quarter_o_grid(double c) {
-  const double q = 0.25 * 3.14159265358979323846;
+  return sector_o_grid(c, 0.5 * 3.14159265358979323846);
+}
+
+std::vector<SectionPatch> sector_o_grid(double c, double angle) {
+  const double half = 0.5 * angle, m = c / std::cos(half);
+  const Vec3 A{c, 0, 0}, M{m * std::cos(half), m * std::sin(half), 0};
+  const Vec3 B{c * std::cos(angle), c * std::sin(angle), 0};
   const auto blend = [](const Vec3& in, const Vec3& out, double s) {
     return Vec3{in[0] + s * (out[0] - in[0]), in[1] + s * (out[1] - in[1]), 0};
   };
-  return {[c](double s, double t) {
-            return Vec3{c * s, c * t, 0};
-          },
-          [=](double s, double t) {
-            return blend({c, c * t, 0}, {std::cos(q * t), std::sin(q * t), 0}, s);
-          },
-          [=](double s, double t) {
-            return blend({c * (1 - t), c, 0}, {std::cos(q * (1 + t)), std::sin(q * (1 + t)), 0}, s);
-          }};
+  return {
+      [=](double s, double t) {  // bilinear in O, A, M, B
+        return Vec3{s * (1 - t) * A[0] + s * t * M[0] + (1 - s) * t * B[0],
+                    s * (1 - t) * A[1] + s * t * M[1] + (1 - s) * t * B[1], 0};
+      },
+      [=](double s, double t) {
+        return blend(blend(A, M, t), {std::cos(half * t), std::sin(half * t), 0}, s);
+      },
+      [=](double s, double t) {
+        return blend(blend(M, B, t), {std::cos(half * (1 + t)), std::sin(half * (1 + t)), 0}, s);
+      }};
 }
 
 BlockMap prism(const SectionPatch& section, double z0, double z1,

@@ -72,6 +72,10 @@ using SectionPatch = std::function<Vec3(double s, double t)>;
 // core edge to the circle, t along increasing angle); c = core half-width. Meshed with n x n
 // (core) and m x n (rings) elements, the circle has 2n elements of equal angle.
 std::vector<SectionPatch> quarter_o_grid(double core);
+// The same O-grid over a sector 0..angle (at most 90 deg): the core is the kite O, A = (c, 0),
+// M = c / cos(angle/2) at angle/2, B = c at `angle` (right angles at A and B; the square for
+// 90 deg), the ring blocks run from A-M and M-B out to the arcs 0..angle/2 and angle/2..angle.
+std::vector<SectionPatch> sector_o_grid(double core, double angle);
 
 // A section patch extruded from z0 to z1 (zeta), scaled by radius(z) and turned by `angle` about
 // z; s, t become xi, eta (the patch's orientation decides the handedness).

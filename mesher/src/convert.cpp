@@ -119,6 +119,31 @@ void convert_to_c3d20r(Mesh& mesh, const std::vector<int>& elements) {
   }
 }
 
+void convert_to_c3d27(Mesh& mesh, const std::vector<int>& elements) {
+  // Natural coordinates of the face centres S1..S6 (C3D27 nodes 21-26), then the centre (27).
+  static const Vec3 kCentres[7] = {{0, 0, -1}, {0, 0, 1},  {0, -1, 0}, {1, 0, 0},
+                                   {0, 1, 0},  {-1, 0, 0}, {0, 0, 0}};
+  std::map<CornerKey, int> centre;
+  for (int e : all_of_type(mesh, elements, "C3D20")) {
+    if (mesh.elements[e].type != "C3D20")
+      throw std::invalid_argument("convert_to_c3d27: " + element_name(e) + " is " +
+                                  mesh.elements[e].type);
+    const std::vector<Vec3> x = coords_of(mesh, mesh.elements[e]);
+    std::vector<int> added;
+    for (int face = 0; face < 6; ++face) {
+      const CornerKey key = corner_key(mesh.elements[e], face);
+      auto found = centre.find(key);
+      if (found == centre.end())
+        found = centre.emplace(key, mesh.add_node(map_point("C3D20", x, kCentres[face]))).first;
+      added.push_back(found->second);
+    }
+    added.push_back(mesh.add_node(map_point("C3D20", x, kCentres[6])));
+    MeshElement& element = mesh.elements[e];
+    element.nodes.insert(element.nodes.end(), added.begin(), added.end());
+    element.type = "C3D27";
+  }
+}
+
 void convert_layer_to_c3d21(Mesh& mesh, const std::string& surface) {
   const std::map<int, int> layer = layer_faces(mesh, surface);
   std::map<CornerKey, int> centre;  // a face between two layers gets one node

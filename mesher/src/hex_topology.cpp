@@ -22,8 +22,14 @@ std::map<std::string, std::vector<Vec3>> make_layouts() {
   const double a = 1.0 / std::sqrt(5.0);
   std::map<std::string, std::vector<Vec3>> layouts;
   layouts["C3D8"] = kCorners;
+  layouts["C3D8R"] = kCorners;
+  layouts["C3D8I"] = kCorners;
   layouts["C3D20"] = concat(kCorners, kMidEdges);
   layouts["C3D20R"] = layouts["C3D20"];
+  // Face centres in face order S1..S6, then the element centre.
+  layouts["C3D27"] =
+      concat(layouts["C3D20"],
+             {{0, 0, -1}, {0, 0, 1}, {0, -1, 0}, {1, 0, 0}, {0, 1, 0}, {-1, 0, 0}, {0, 0, 0}});
   // elements-ref section 1: face centres 9 S1, 10 S2, 11 S3, 12 S5, 13 S6, 14 S4.
   layouts["C3D14"] =
       concat(kCorners, {{0, 0, -1}, {0, 0, 1}, {0, -1, 0}, {0, 1, 0}, {-1, 0, 0}, {1, 0, 0}});

@@ -19,6 +19,26 @@ constexpr double kLockingPoisson = 0.45;
 constexpr double kBulkDominated = 3.0;
 constexpr double kDistortedRatio = 0.1;
 
+// Poisson's ratio from which a formulation's displacement error passes 10 %, measured by
+// `styk study stability` (sweep "poisson": the SPEC §3.1.7 cylinder on 4 x 6 elements,
+// docs/stability.md; tests/verification/atlas_warnings_test.cpp asserts each bracket). Types not
+// listed: kLockingPoisson if fully integrated (locks()), never otherwise.
+struct LockingOnset {
+  const char* type;
+  double poisson;
+};
+constexpr LockingOnset kMeasuredOnsets[] = {
+    {"C3D8", 0.45},      // passes at 0.4, fails at 0.45
+    {"C3D8R", 0.495},    // the hourglass control's stiffness follows the bulk modulus
+    {"C3D14", 0.495},    // passes at 0.49, fails at 0.499
+    {"C3D20", 0.495},    // ditto
+    {"C3D27", 0.495},    // ditto
+    {"C3D21", 0.495},    // ditto
+    {"C3D28", 0.49995},  // passes at 0.4999, fails at 0.49999 (its bicubic face)
+    {"C3D20R", 1.0},     // never: passes at 0.49999
+    {"C3D8I", 1.0},      // never: passes at 0.49999
+};
+
 std::string format(const char* pattern, double value) {
   char buffer[64];
   std::snprintf(buffer, sizeof buffer, pattern, value);
@@ -36,17 +56,26 @@ bool is_cube_solid(const TElement& element) {
   return true;
 }
 
-// Whether `element` locks volumetrically for `material`: a fully integrated element (more points
-// in its full rule than in its reduced one, no incompatible modes) whose material matrix is
-// bulk-dominated (3D or plane strain, not plane stress).
-bool locks(const TElement& element, const Material& material) {
+bool bulk_dominated(const TElement& element, const Material& material) {
   if (element.section_measure() == SectionMeasure::Area) return false;  // trusses
   if (element.section_measure() == SectionMeasure::Beam) return false;  // uniaxial fibres
-  if (element.incompatible_mode_count() > 0) return false;
-  if (element.rule(RuleKind::Full).size() <= element.rule(RuleKind::Reduced).size()) return false;
   Matrix6d D;
   element.dee(material, D);
   return D.cwiseAbs().maxCoeff() > kBulkDominated * *material.young;
+}
+
+// Whether `element` locks volumetrically by construction: fully integrated (more points in its
+// full rule than in its reduced one), no incompatible modes.
+bool locks(const TElement& element) {
+  if (element.incompatible_mode_count() > 0) return false;
+  return element.rule(RuleKind::Full).size() > element.rule(RuleKind::Reduced).size();
+}
+
+// The Poisson's ratio from which `element` locks (above 0.5: never).
+double locking_onset(const TElement& element) {
+  for (const LockingOnset& o : kMeasuredOnsets)
+    if (element.name() == o.type) return o.poisson;
+  return locks(element) ? kLockingPoisson : 1.0;
 }
 
 // min / max of the point measure (det J) over the element's full rule; 1 when it cannot be
@@ -144,8 +173,12 @@ std::vector<std::string> model_warnings(const Model& model, const PreparedModel&
     const int s = model.elements[e].section;
     const Material* material = prepared.material[e];
     if (s < 0 || material == nullptr || !material->poisson || !material->young) continue;
-    if (*material->poisson < kLockingPoisson || model.sections[s].selective_volumetric) continue;
-    if (!locks(*prepared.formulation[e], *material)) continue;
+    const TElement& f = *prepared.formulation[e];
+    if (*material->poisson < locking_onset(f)) continue;
+    // Mean dilatation cures locking of a rule with more than one point; a one-point rule has
+    // nothing to average (C3D8R's locking comes from its hourglass control).
+    if (model.sections[s].selective_volumetric && f.rule(RuleKind::Full).size() > 1) continue;
+    if (!bulk_dominated(f, *material)) continue;
     auto& entry = locking[{s, prepared.formulation[e]}];
     ++entry.first;
     entry.second = material;
@@ -154,12 +187,16 @@ std::vector<std::string> model_warnings(const Model& model, const PreparedModel&
     const Section& section = model.sections[key.first];
     const int count = entry.first;
     const Material& material = *entry.second;
+    const TElement& f = *key.second;
+    const std::string cure = f.rule(RuleKind::Full).size() > 1
+                                 ? "add TECHNIQUE=SELECTIVE to the *SOLID SECTION"
+                                 : "use C3D8I or C3D20R (TECHNIQUE=SELECTIVE cannot help a "
+                                   "one-point rule)";
     warnings.push_back(section.where.file + ":" + std::to_string(section.where.line) + ": " +
-                       std::to_string(count) + " " + key.second->name() +
-                       " elements of element set " + section.elset +
-                       " lock volumetrically: " + "material " + material.name +
-                       " has Poisson's ratio " + format("%g", *material.poisson) +
-                       " (>= 0.45); add TECHNIQUE=SELECTIVE to the *SOLID SECTION");
+                       std::to_string(count) + " " + f.name() + " elements of element set " +
+                       section.elset + " lock volumetrically: " + "material " + material.name +
+                       " has Poisson's ratio " + format("%g", *material.poisson) + " (" + f.name() +
+                       " locks from " + format("%g", locking_onset(f)) + "); " + cure);
   }
 
   // Beams: shear locking of fully integrated slender beams, spurious modes (beam_warnings.hpp).

@@ -3,9 +3,11 @@
 // - an element type with zero-energy (hourglass) modes that a mesh does not suppress: a 2 x 2 x 2
 //   patch of reference elements has more than the 6 rigid-body modes (C3D8R0; not C3D20R, whose
 //   single-element modes do not spread);
-// - volumetric locking: nu >= 0.45 on a fully integrated element (its full rule has more points
-//   than its reduced one, no incompatible modes) that is not plane stress, without
-//   TECHNIQUE=SELECTIVE;
+// - volumetric locking: nu at or above the type's measured onset (C3D8 0.45; C3D8R, C3D14,
+//   C3D20, C3D27, C3D21 0.495; C3D28 0.49995; never C3D8I, C3D20R; other types: 0.45 if fully
+//   integrated, i.e. more points in the full rule than in the reduced one and no incompatible
+//   modes) on a material that is not plane stress, without TECHNIQUE=SELECTIVE (which a one-point
+//   rule cannot use);
 // - distorted elements: det J at the integration points varies by more than a factor 10 within
 //   the element (min/max < 0.1), the worst named;
 // - beams (beam_warnings.hpp): shear locking of slender fully integrated beams, with the measured

@@ -40,3 +40,15 @@ add_dependencies(styk_gui_heat_edit_e2e_test styk_plugins styk)
 add_test(NAME styk_gui_heat_edit_e2e
          COMMAND xvfb-run -a -s "-screen 0 1600x1200x24" $<TARGET_FILE:styk_gui_heat_edit_e2e_test>)
 set_tests_properties(styk_gui_heat_edit_e2e PROPERTIES TIMEOUT 300)
+
+# Issue 12: a study's CSV as interactive charts (File > Open study charts).
+add_executable(styk_gui_study_charts_e2e_test gui_study_charts_e2e_test.cpp)
+set_target_properties(styk_gui_study_charts_e2e_test PROPERTIES AUTOMOC ON)
+target_link_libraries(styk_gui_study_charts_e2e_test PRIVATE styk_gui_widgets Qt6::Test styk_warnings)
+target_compile_definitions(styk_gui_study_charts_e2e_test PRIVATE
+  STYK_SOURCE_DIR="${PROJECT_SOURCE_DIR}" STYK_BINARY_DIR="${PROJECT_BINARY_DIR}"
+  STYK_PLUGIN_BUILD_DIR="${STYK_PLUGIN_BUILD_DIR}")
+add_dependencies(styk_gui_study_charts_e2e_test styk_plugins)
+add_test(NAME styk_gui_study_charts_e2e
+         COMMAND xvfb-run -a -s "-screen 0 1600x1200x24" $<TARGET_FILE:styk_gui_study_charts_e2e_test>)
+set_tests_properties(styk_gui_study_charts_e2e PROPERTIES TIMEOUT 300)

@@ -12,6 +12,7 @@
 #include <QSignalBlocker>
 #include <QStatusBar>
 #include <QTextBrowser>
+#include <fstream>
 
 #include "entry_dialogs.hpp"
 #include "gl_view.hpp"
@@ -23,7 +24,9 @@
 #include "session/selection_info.hpp"
 #include "session/selection_sets.hpp"
 #include "solve_runner.hpp"
+#include "study_chart_window.hpp"
 #include "styk/io/results_file.hpp"
+#include "styk/studies/results/run_record.hpp"
 
 namespace styk::gui {
 
@@ -290,6 +293,28 @@ bool MainWindow::export_animation(const QString& directory, const QString& stem)
   if (playing) log("animation stopped for the export");
   refresh_scene();
   return true;
+}
+
+StudyChartWindow* MainWindow::open_study(const QString& path) {
+  std::ifstream in(path.toStdString());
+  if (!in) {
+    show_error("Open study charts", path + ": cannot read the file");
+    return nullptr;
+  }
+  try {
+    std::vector<studies::RunRecord> records = studies::read_csv(in, path.toStdString());
+    if (records.empty()) {
+      show_error("Open study charts", path + ": the study has no runs");
+      return nullptr;
+    }
+    auto* window = new StudyChartWindow(std::move(records), QFileInfo(path).fileName(), this);
+    window->show();
+    log("study charts: " + path);
+    return window;
+  } catch (const std::runtime_error& e) {
+    show_error("Open study charts", QString::fromStdString(e.what()));
+    return nullptr;
+  }
 }
 
 void MainWindow::show_node_history() {

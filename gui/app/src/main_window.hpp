@@ -24,6 +24,7 @@ class GlView;
 class ModelTree;
 class ResultsPanel;
 class SolveRunner;
+class StudyChartWindow;
 
 class MainWindow : public QMainWindow {
   Q_OBJECT
@@ -36,6 +37,9 @@ class MainWindow : public QMainWindow {
   bool open_file(const QString& path);
   bool save_file(const QString& path);
   bool export_png(const QString& path);  // PNG, or BMP when the path ends in .bmp
+  // A study's CSV (`styk study accuracy|stability`) in a chart window of its own; a damaged file
+  // goes to a message box (and the log) with its line. Returns the window, or nullptr.
+  StudyChartWindow* open_study(const QString& path);
   void start_solve();
   void cancel_solve();
   bool solving() const;

@@ -57,6 +57,13 @@ void MainWindow::build_file_menu() {
         QFileDialog::getSaveFileName(this, "Save deck", QString(), "Decks (*.inp)");
     if (!chosen.isEmpty()) save_file(chosen);
   });
+  file->addAction("Open study &charts...", this,
+                  [this] {
+                    const QString path = QFileDialog::getOpenFileName(
+                        this, "Open a study's CSV", QString(), "Study CSV (*.csv);;All files (*)");
+                    if (!path.isEmpty()) open_study(path);
+                  })
+      ->setObjectName("action_open_study");
   file->addAction("&Export view as PNG or BMP...", this, [this] {
     const QString chosen = QFileDialog::getSaveFileName(this, "Export picture", "view.png",
                                                         "PNG (*.png);;BMP (*.bmp)");

@@ -18,6 +18,12 @@ void convert_to_c3d14(Mesh& mesh, const std::vector<int>& elements = {});
 // C3D20 -> C3D20R (reduced integration): a change of name only.
 void convert_to_c3d20r(Mesh& mesh, const std::vector<int>& elements = {});
 
+// C3D20 -> C3D27 (triquadratic Lagrange): a node at the centre of every face (shared by the two
+// elements on it, in face order S1..S6) and one at the element centre, all placed on the C3D20
+// geometry, so curved faces stay curved. `elements` empty = every C3D20 of the mesh. Throws
+// std::invalid_argument for a non-C3D20.
+void convert_to_c3d27(Mesh& mesh, const std::vector<int>& elements = {});
+
 // Every C3D20 with a face on `surface` becomes C3D21 with that face as its S1 (zeta = -1): the
 // element is renumbered (a proper rotation of the reference cube, so the Jacobian keeps its sign)
 // and gets the face-centre node on the C3D20 geometry. The surface (and every other surface

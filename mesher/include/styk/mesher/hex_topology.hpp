@@ -1,6 +1,7 @@
-// Node layouts of the hexahedra the mesher produces (C3D8, C3D20, C3D14, C3D21, C3D28; C3D20R is
-// C3D20), following elements-ref/README.md, and the geometry of the C3D8/C3D20 maps. The mesher
-// needs them without an element registry: it writes elements, it does not integrate them.
+// Node layouts of the hexahedra the mesher produces (C3D8, C3D20, C3D14, C3D21, C3D28, C3D27;
+// C3D8R/C3D8I are C3D8 and C3D20R is C3D20), following elements-ref/README.md, and the geometry of
+// the C3D8/C3D20 maps. The mesher needs them without an element registry: it writes elements, it
+// does not integrate them.
 #pragma once
 
 #include <array>
