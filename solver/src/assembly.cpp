@@ -17,8 +17,8 @@ void element_geometry(const Model& model, int e, ElementGeometry& geometry) {
   geometry.cross_section = cross_section_of(model, e);  // thickness / area of plane and truss
 }
 
-void assemble_stiffness(const Model& model, const PreparedModel& prepared, StiffnessMatrix& K,
-                        int threads) {
+void assemble_stiffness(const Model& model, const PreparedModel& prepared,
+                        const ElementStates& states, StiffnessMatrix& K, int threads) {
   threads = resolve_threads(threads);
   std::vector<double>& values = K.values();
   values.assign(static_cast<std::size_t>(K.nonzeros()), 0.0);
@@ -39,7 +39,7 @@ void assemble_stiffness(const Model& model, const PreparedModel& prepared, Stiff
         const int e = colouring.order[first + i];
         element_geometry(model, e, s.geometry);
         const ElementOptions options{model.sections[model.elements[e].section].selective_volumetric};
-        prepared.formulation[e]->stiffness(s.geometry, *prepared.material[e], RuleKind::Full,
+        prepared.formulation[e]->stiffness(s.geometry, states.stiffness_law(e), RuleKind::Full,
                                            s.Ke, options);
         const int n = model.elements[e].node_count;
         const int* nodes = model.element_nodes(e);

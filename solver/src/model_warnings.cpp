@@ -40,9 +40,11 @@ bool locks(const TElement& element, const Material& material) {
   if (element.section_measure() == SectionMeasure::Area) return false;  // trusses
   if (element.incompatible_mode_count() > 0) return false;
   if (element.rule(RuleKind::Full).size() <= element.rule(RuleKind::Reduced).size()) return false;
+  const MaterialPoint point = material_point(material);
+  if (!point.isotropic) return false;  // the bulk-dominance rule is stated for isotropic laws
   Matrix6d D;
-  element.dee(material, D);
-  return D.cwiseAbs().maxCoeff() > kBulkDominated * *material.young;
+  element.dee(point, D);
+  return D.cwiseAbs().maxCoeff() > kBulkDominated * point.young;
 }
 
 // min / max of the point measure (det J) over the element's full rule; 1 when it cannot be

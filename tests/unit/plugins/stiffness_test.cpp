@@ -69,7 +69,7 @@ TEST_P(Stiffness, FullRuleIsExactOnReferenceCube) {
   // The 5x5x5 integration of the same integrand, assembled here from the public pieces.
   const IntegrationRule fine = gauss_rule(5, 5, 5);
   Matrix6d D;
-  e.dee(unit_material(), D);
+  e.dee(material_point(unit_material()), D);
   const int n = e.node_count();
   Eigen::VectorXd N(n);
   Eigen::MatrixXd dN(n, 3), dNdx(n, 3), B(6, 3 * n);
