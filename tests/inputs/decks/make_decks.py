@@ -603,36 +603,72 @@ def mpc_frame(mpc, held, load):
             step(load, "*NODE PRINT, NSET=NALL\nU\n"))
 
 
-@deck("c10_mpc_beam")
-def _():
-    return ("** Deck set c10 (CalculiX manual, *MPC BEAM): a rigid link of constant length "
-            "between two cubes, the second held only at its far face.\n" +
+def scaled_loads(text, scale):
+    """*CLOAD data lines with every magnitude multiplied by `scale`."""
+    if scale == 1.0:
+        return text
+    lines = text.strip("\n").split("\n")
+    out = [lines[0]]
+    for line in lines[1:]:
+        node, dof, value = [f.strip() for f in line.split(",")]
+        out.append("%s, %s, %.6g" % (node, dof, float(value) * scale))
+    return "\n".join(out) + "\n"
+
+
+MPC_NLGEOM_NOTE = ("ccx turns on nonlinear geometry for BEAM/STRAIGHT/PLANE (log: 'nonlinear geometric "
+                   "effects are turned on'); Styk is geometrically linear: the difference is "
+                   "proportional to the load (%s, loads x 1e-4, agrees to 1e-6)")
+SMALL_LOAD = 1e-4
+
+
+def mpc_beam(tag, scale):
+    return ("** Deck set %s (CalculiX manual, *MPC BEAM): a rigid link of constant length "
+            "between two cubes, the second held only at its far face%s.\n" % (tag, loads_note(scale)) +
             mpc_frame("BEAM, 101, 2\n",
                       "*NSET, NSET=BFAR\n102, 104, 106, 108\n*BOUNDARY\nBFAR, 1, 3\n",
-                      "*CLOAD\n101, 1, -10.\n101, 2, 5.\n7, 3, 4.\n"))
+                      scaled_loads("*CLOAD\n101, 1, -10.\n101, 2, 5.\n7, 3, 4.\n", scale)))
 
 
-@deck("c11_mpc_straight")
-def _():
-    return ("** Deck set c11 (CalculiX manual, *MPC STRAIGHT): an edge of the second cube stays on "
-            "the line through two nodes of the first, which bends.\n" +
+def mpc_straight(tag, scale):
+    return ("** Deck set %s (CalculiX manual, *MPC STRAIGHT): an edge of the second cube stays on "
+            "the line through two nodes of the first, which bends%s.\n" % (tag, loads_note(scale)) +
             mpc_frame("STRAIGHT, 1, 2, 101, 102\n",
                       "*NSET, NSET=BTOP\n105, 106, 107, 108\n*BOUNDARY\nBTOP, 1, 2\n",
-                      "*CLOAD\n2, 2, 20.\n103, 3, -5.\n101, 2, 3.\n"))
+                      scaled_loads("*CLOAD\n2, 2, 20.\n103, 3, -5.\n101, 2, 3.\n", scale)))
 
 
-@deck("c12_mpc_plane")
-def _():
-    return ("** Deck set c12 (CalculiX manual, *MPC PLANE): three nodes of the second cube stay in "
-            "the plane of three nodes of the first, which deforms.\n" +
+def mpc_plane(tag, scale):
+    return ("** Deck set %s (CalculiX manual, *MPC PLANE): three nodes of the second cube stay in "
+            "the plane of three nodes of the first, which deforms%s.\n" % (tag, loads_note(scale)) +
             mpc_frame("PLANE, 1, 2, 4, 101, 102, 103\n",
                       "*NSET, NSET=BTOP\n105, 106, 107, 108\n*BOUNDARY\nBTOP, 1, 2\n",
-                      "*CLOAD\n2, 3, 20.\n3, 3, -10.\n103, 3, -5.\n"))
+                      scaled_loads("*CLOAD\n2, 3, 20.\n3, 3, -10.\n103, 3, -5.\n", scale)))
+
+
+def loads_note(scale):
+    return "" if scale == 1.0 else (", with loads x %g so that ccx's nonlinear geometry is "
+                                    "negligible" % scale)
+
+
+@deck("c10_mpc_beam", tolerance="5e-4", note=MPC_NLGEOM_NOTE % "c15")
+def _():
+    return mpc_beam("c10", 1.0)
+
+
+@deck("c11_mpc_straight", tolerance="2e-3", note=MPC_NLGEOM_NOTE % "c16")
+def _():
+    return mpc_straight("c11", 1.0)
+
+
+@deck("c12_mpc_plane", tolerance="6e-4", note=MPC_NLGEOM_NOTE % "c17")
+def _():
+    return mpc_plane("c12", 1.0)
 
 
 @deck("c13_equation_node_sets", reference="none",
       note="Abaqus *EQUATION with node sets; ccx 2.20 refuses node sets: checked against a hand "
-           "value in constraint_input_test and ConstraintDecks.EquationWithNodeSets")
+           "value in KeywordConstraints.EquationWithNodeSetAndElementlessNode and read in "
+           "KeywordCoverage.EquationWithNodeSets")
 def _():
     b = Brick((2, 1, 1), (2.0, 1.0, 1.0))
     top = b.nodes_where(lambda x: abs(x[2] - 1.0) < 1e-9 and x[0] > 1.5)
@@ -655,6 +691,21 @@ def _():
             STEEL + "*SOLID SECTION, ELSET=EALL, MATERIAL=STEEL\n" + clamp_block(b) + eqs +
             nset("TIP", tip) + nset("REF", [9000]) +
             step("*CLOAD\n9000, 2, 3.\n", "*NODE PRINT, NSET=TIP\nU\n*NODE PRINT, NSET=REF\nU\n"))
+
+
+@deck("c15_mpc_beam_small_load")
+def _():
+    return mpc_beam("c15", SMALL_LOAD)
+
+
+@deck("c16_mpc_straight_small_load")
+def _():
+    return mpc_straight("c16", SMALL_LOAD)
+
+
+@deck("c17_mpc_plane_small_load")
+def _():
+    return mpc_plane("c17", SMALL_LOAD)
 
 
 # ----------------------------------------------------------------------------------------------
