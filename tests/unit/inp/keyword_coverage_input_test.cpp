@@ -114,10 +114,10 @@ TEST(KeywordCoverage, ElasticErrors) {
                "2., 0.3, 50.", "temperatures must increase");
   expect_error("kc_el_short.inp", base + "*ELASTIC, TYPE=ORTHO\n1., 0.1, 2., 0.1, 0.1\n" + kStep,
                "1., 0.1, 2., 0.1, 0.1", "8 fields per line");
-  // Not positive definite: a negative shear modulus.
+  // Not positive definite: a negative shear modulus, reported at its data line.
   expect_error("kc_el_pd.inp",
                base + "*ELASTIC, TYPE=ORTHO\n1., 0.1, 2., 0.1, 0.1, 3., -0.5, 0.6,\n0.7\n" + kStep,
-               "*ELASTIC, TYPE=ORTHO", "positive definite");
+               "3., -0.5, 0.6", "positive definite");
   expect_error("kc_el_temp_missing.inp", base + "*ELASTIC\n1., 0.3, 0.\n2., 0.3\n" + kStep,
                "2., 0.3\n", "needs its temperature");
 }
