@@ -78,6 +78,9 @@ ElementMaterial ElementStates::stiffness_law(int e) const {
 ElementMaterial ElementStates::law(int e) const {
   const Material& m = *material_[e];
   const LocalAxes* axes = axes_[model_.elements[e].section];
+  // At the initial temperatures there is no thermal strain: only a temperature-dependent law
+  // needs them (the common case allocates nothing).
+  if (!temperature_ && !temperature_dependent_stiffness(m)) return ElementMaterial(m, axes, {}, {});
   const Eigen::VectorXd T0 = nodal(initial_, e);
   return ElementMaterial(m, axes, temperature_ ? nodal(*temperature_, e) : T0, T0);
 }
