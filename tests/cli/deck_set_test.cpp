@@ -8,6 +8,7 @@
 #include <cmath>
 #include <filesystem>
 #include <fstream>
+#include <ostream>
 #include <sstream>
 
 #include <gtest/gtest.h>
@@ -25,6 +26,9 @@ struct DeckCase {
   std::vector<std::string> compare;  // block-title prefixes, empty = all
   std::string note;
 };
+
+// gtest prints the parameter in failure messages and ctest test names: the deck's file name.
+void PrintTo(const DeckCase& c, std::ostream* out) { *out << c.deck; }
 
 std::string decks_dir() { return std::string(STYK_SOURCE_DIR) + "/tests/inputs/decks"; }
 
