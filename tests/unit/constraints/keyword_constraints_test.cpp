@@ -195,11 +195,11 @@ TEST(KeywordConstraints, PretensionForceAndShortening) {
     for (int j = 0; j < 3; ++j)
       for (int i = 0; i < 3; ++i) mesh += std::to_string(id(i, j, k)) + "\n";
   mesh += "*MATERIAL, NAME=M\n*ELASTIC\n210000., 0.3\n*SOLID SECTION, ELSET=EALL, MATERIAL=M\n" +
-          cut + "*PRE-TENSION SECTION, SURFACE=CUT, NODE=9000\n0., 0., 1.\n"
-                "*BOUNDARY\nENDS, 3\n1, 1, 2\n3, 2\n73, 1, 2\n75, 2\n";
-  const test::Solved force =
-      solve_text("pretension_force.inp",
-                 mesh + "*STEP\n*STATIC\n*CLOAD\n9000, 1, 800.\n*END STEP\n");
+          cut +
+          "*PRE-TENSION SECTION, SURFACE=CUT, NODE=9000\n0., 0., 1.\n"
+          "*BOUNDARY\nENDS, 3\n1, 1, 2\n3, 2\n73, 1, 2\n75, 2\n";
+  const test::Solved force = solve_text(
+      "pretension_force.inp", mesh + "*STEP\n*STATIC\n*CLOAD\n9000, 1, 800.\n*END STEP\n");
   EXPECT_LT(max_deviation(force.results.increments[0].S, 2, 800.0), 1e-10 * 800.0);
   const test::Solved shortening =
       solve_text("pretension_shortening.inp",

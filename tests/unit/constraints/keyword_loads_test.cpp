@@ -51,9 +51,10 @@ TEST(KeywordLoads, GravityOnAColumn) {
   for (int j = 0; j < 3; ++j)
     for (int i = 0; i < 3; ++i)
       if ((i % 2) + (j % 2) <= 1) deck += std::to_string(id(i, j, 0)) + "\n";
-  deck += "*MATERIAL, NAME=M\n*ELASTIC\n210000., 0.\n*DENSITY\n7.85E-9\n"
-          "*SOLID SECTION, ELSET=EALL, MATERIAL=M\n*BOUNDARY\nBASE, 3\n1, 1, 2\n3, 2\n"
-          "*STEP\n*STATIC\n*DLOAD\nEALL, GRAV, 9810., 0., 0., -1.\n*END STEP\n";
+  deck +=
+      "*MATERIAL, NAME=M\n*ELASTIC\n210000., 0.\n*DENSITY\n7.85E-9\n"
+      "*SOLID SECTION, ELSET=EALL, MATERIAL=M\n*BOUNDARY\nBASE, 3\n1, 1, 2\n3, 2\n"
+      "*STEP\n*STATIC\n*DLOAD\nEALL, GRAV, 9810., 0., 0., -1.\n*END STEP\n";
   const test::Solved s = solve_text("gravity_column.inp", deck);
   const IncrementResult& inc = s.results.increments[0];
   const double rho_g = 7.85e-9 * 9810.0;
@@ -89,9 +90,10 @@ TEST(KeywordLoads, CentrifugalReaction) {
             std::to_string(id(i, 1, 0)) + ", " + std::to_string(id(i, 0, 1)) + ", " +
             std::to_string(id(i + 1, 0, 1)) + ", " + std::to_string(id(i + 1, 1, 1)) + ", " +
             std::to_string(id(i, 1, 1)) + "\n";
-  deck += "*NSET, NSET=HUB\n1, 8, 15, 22\n*MATERIAL, NAME=M\n*ELASTIC\n210000., 0.3\n*DENSITY\n"
-          "7.85E-9\n*SOLID SECTION, ELSET=EALL, MATERIAL=M\n*BOUNDARY\nHUB, 1, 3\n"
-          "*STEP\n*STATIC\n*DLOAD\nEALL, CENTRIF, 1.0E6, 0., 0., 0., 0., 0., 1.\n*END STEP\n";
+  deck +=
+      "*NSET, NSET=HUB\n1, 8, 15, 22\n*MATERIAL, NAME=M\n*ELASTIC\n210000., 0.3\n*DENSITY\n"
+      "7.85E-9\n*SOLID SECTION, ELSET=EALL, MATERIAL=M\n*BOUNDARY\nHUB, 1, 3\n"
+      "*STEP\n*STATIC\n*DLOAD\nEALL, CENTRIF, 1.0E6, 0., 0., 0., 0., 0., 1.\n*END STEP\n";
   const test::Solved s = solve_text("centrifugal_bar.inp", deck);
   const double expected = 7.85e-9 * 1e6 * 0.5 * 7.5;
   EXPECT_NEAR(total_reaction(s)[0], -expected, 1e-12 * expected);
@@ -133,8 +135,9 @@ TEST(KeywordLoads, InitialStressRelaxesInAFreeBody) {
 // *CHANGE SOLID SECTION: the pull of step 1 carried into step 2 after the whole cube turns from
 // steel (210000) to aluminium (70000): the same stress, three times the strain. 1e-12 relative.
 TEST(KeywordLoads, ChangeSolidSectionBetweenSteps) {
-  const std::string deck = unit_cube("*MATERIAL, NAME=M\n*ELASTIC\n210000., 0.3\n*MATERIAL, "
-                                     "NAME=ALU\n*ELASTIC\n70000., 0.3\n") +
+  const std::string deck = unit_cube(
+                               "*MATERIAL, NAME=M\n*ELASTIC\n210000., 0.3\n*MATERIAL, "
+                               "NAME=ALU\n*ELASTIC\n70000., 0.3\n") +
                            kSymmetricSupports +
                            "*STEP\n*STATIC\n*DLOAD\n2, P4, -100.\n4, P4, -100.\n6, P4, -100.\n"
                            "8, P4, -100.\n*END STEP\n*STEP\n*CHANGE SOLID SECTION, ELSET=EALL, "

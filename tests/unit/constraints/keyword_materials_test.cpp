@@ -18,8 +18,9 @@ using test::unit_cube;
 
 // Uniaxial stress sigma_xx = 100 from a tension of 100 on the faces at x = 1 (elements 2, 4, 6,
 // 8, face S4).
-const char* const kPull = "*STEP\n*STATIC\n*DLOAD\n2, P4, -100.\n4, P4, -100.\n6, P4, -100.\n"
-                          "8, P4, -100.\n*END STEP\n";
+const char* const kPull =
+    "*STEP\n*STATIC\n*DLOAD\n2, P4, -100.\n4, P4, -100.\n6, P4, -100.\n"
+    "8, P4, -100.\n*END STEP\n";
 
 // The same pull on both x faces (P6 is the face at x = 0): a balanced load, for the 3-2-1
 // supports below, which react nothing.
@@ -115,11 +116,11 @@ TEST(KeywordMaterials, ElasticTableInterpolatedAtTheTemperature) {
   const std::string material =
       "*MATERIAL, NAME=M\n*ELASTIC\n200000., 0.30, 0.\n150000., 0.32, 100.\n100000., 0.35, "
       "300.\n*EXPANSION\n0.\n";
-  for (const auto& [T, E, nu] : {std::tuple{150.0, 137500.0, 0.3275},
-                                 std::tuple{400.0, 100000.0, 0.35}}) {
+  for (const auto& [T, E, nu] :
+       {std::tuple{150.0, 137500.0, 0.3275}, std::tuple{400.0, 100000.0, 0.35}}) {
     const std::string deck =
-        unit_cube(material) + kSymmetricSupports +
-        "*STEP\n*STATIC\n*TEMPERATURE\nNALL, " + std::to_string(T) +
+        unit_cube(material) + kSymmetricSupports + "*STEP\n*STATIC\n*TEMPERATURE\nNALL, " +
+        std::to_string(T) +
         "\n*DLOAD\n2, P4, -100.\n4, P4, -100.\n6, P4, -100.\n8, P4, -100.\n*END STEP\n";
     const test::Solved s = solve_text("elastic_table.inp", deck);
     const IncrementResult& inc = s.results.increments[0];
@@ -135,8 +136,9 @@ TEST(KeywordMaterials, ElasticTableInterpolatedAtTheTemperature) {
 TEST(KeywordMaterials, ExpansionTableWithZero) {
   for (const auto& [T0, strain] : {std::pair{20.0, 2.464e-3}, std::pair{50.0, 2.104e-3}}) {
     const std::string deck =
-        unit_cube("*MATERIAL, NAME=M\n*ELASTIC\n200000., 0.3\n*EXPANSION, ZERO=20.\n1.1E-5, 0.\n"
-                  "1.3E-5, 100.\n1.6E-5, 200.\n") +
+        unit_cube(
+            "*MATERIAL, NAME=M\n*ELASTIC\n200000., 0.3\n*EXPANSION, ZERO=20.\n1.1E-5, 0.\n"
+            "1.3E-5, 100.\n1.6E-5, 200.\n") +
         kThreeTwoOne + "*INITIAL CONDITIONS, TYPE=TEMPERATURE\nNALL, " + std::to_string(T0) +
         "\n*STEP\n*STATIC\n*TEMPERATURE\nNALL, 180.\n*END STEP\n";
     const test::Solved s = solve_text("expansion_table.inp", deck);
@@ -173,15 +175,14 @@ TEST(KeywordMaterials, OrthotropicAndAnisotropicExpansion) {
   EXPECT_LT(max_deviation(a.E, 2, 0.5e-3), 1e-12 * 1e-3);
   EXPECT_LT(max_deviation(a.S, 0, 0.0), 1e-6);
 
-  const test::Solved aniso = solve_text(
-      "expansion_aniso.inp",
-      unit_cube("*MATERIAL, NAME=M\n*ELASTIC\n200000., 0.3\n*EXPANSION, TYPE=ANISO\n"
-                "1.0E-5, 2.0E-5, 1.5E-5, 0.4E-5, 0., -0.3E-5\n") +
-          kThreeTwoOne + heat);
+  const test::Solved aniso =
+      solve_text("expansion_aniso.inp",
+                 unit_cube("*MATERIAL, NAME=M\n*ELASTIC\n200000., 0.3\n*EXPANSION, TYPE=ANISO\n"
+                           "1.0E-5, 2.0E-5, 1.5E-5, 0.4E-5, 0., -0.3E-5\n") +
+                     kThreeTwoOne + heat);
   const IncrementResult& b = aniso.results.increments[0];
   const double expected[6] = {1e-3, 2e-3, 1.5e-3, 0.4e-3, 0.0, -0.3e-3};
-  for (int k = 0; k < 6; ++k)
-    EXPECT_LT(max_deviation(b.E, k, expected[k]), 1e-12 * 2e-3) << k;
+  for (int k = 0; k < 6; ++k) EXPECT_LT(max_deviation(b.E, k, expected[k]), 1e-12 * 2e-3) << k;
   EXPECT_LT(max_deviation(b.S, 3, 0.0), 1e-9);
 }
 
@@ -197,8 +198,7 @@ TEST(KeywordMaterials, TrussRefusesAnOrthotropicMaterial) {
     FAIL() << "accepted";
   } catch (const InputError& e) {
     EXPECT_EQ(e.where().line, 10) << e.what();
-    EXPECT_NE(std::string(e.what()).find("isotropic material only"), std::string::npos)
-        << e.what();
+    EXPECT_NE(std::string(e.what()).find("isotropic material only"), std::string::npos) << e.what();
   }
 }
 

@@ -108,9 +108,11 @@ TEST(KeywordOutputs, StressErrorEstimate) {
       d << i + 1 << ", " << id(i, 0, 0) << ", " << id(i + 1, 0, 0) << ", " << id(i + 1, 1, 0)
         << ", " << id(i, 1, 0) << ", " << id(i, 0, 1) << ", " << id(i + 1, 0, 1) << ", "
         << id(i + 1, 1, 1) << ", " << id(i, 1, 1) << "\n";
-    d << "*NSET, NSET=FIX\n" << id(0, 0, 0) << ", " << id(0, 1, 0) << ", " << id(0, 0, 1) << ", "
-      << id(0, 1, 1) << "\n*NSET, NSET=TIP\n" << id(n, 0, 0) << ", " << id(n, 1, 0) << ", "
-      << id(n, 0, 1) << ", " << id(n, 1, 1) << "\n*MATERIAL, NAME=M\n*ELASTIC\n210000., 0.3\n"
+    d << "*NSET, NSET=FIX\n"
+      << id(0, 0, 0) << ", " << id(0, 1, 0) << ", " << id(0, 0, 1) << ", " << id(0, 1, 1)
+      << "\n*NSET, NSET=TIP\n"
+      << id(n, 0, 0) << ", " << id(n, 1, 0) << ", " << id(n, 0, 1) << ", " << id(n, 1, 1)
+      << "\n*MATERIAL, NAME=M\n*ELASTIC\n210000., 0.3\n"
       << "*SOLID SECTION, ELSET=EALL, MATERIAL=M\n*BOUNDARY\nFIX, 1, 3\n*STEP\n*STATIC\n"
       << "*CLOAD\nTIP, 3, -1.\n*EL FILE\nS, ERR\n*END STEP\n";
     return d.str();
@@ -163,9 +165,10 @@ TEST(KeywordOutputs, CarryOverFrequencyTotalsOnlyAndGlobal) {
 // axes (the orientation's name ending the row), with GLOBAL=YES in global ones. Axes turned 90
 // degrees about z: local s11 is global s22 and local s12 is -global s12.
 TEST(KeywordOutputs, ElementResultsInMaterialAxes) {
-  const std::string deck = unit_cube("*ORIENTATION, NAME=TURNED\n0., 1., 0., -1., 0., 0.\n"
-                                     "*MATERIAL, NAME=M\n*ELASTIC\n210000., 0.3\n",
-                                     ", ORIENTATION=TURNED") +
+  const std::string deck = unit_cube(
+                               "*ORIENTATION, NAME=TURNED\n0., 1., 0., -1., 0., 0.\n"
+                               "*MATERIAL, NAME=M\n*ELASTIC\n210000., 0.3\n",
+                               ", ORIENTATION=TURNED") +
                            "*BOUNDARY\nX0, 1, 3\n*STEP\n*STATIC\n*CLOAD\n27, 2, 1.\n27, 1, 2.\n"
                            "*EL PRINT, ELSET=EALL\nS\n*EL PRINT, ELSET=EALL, GLOBAL=YES\nS\n"
                            "*END STEP\n";

@@ -45,8 +45,8 @@ inline std::string unit_cube(const std::string& material, const std::string& sec
   auto id = [](int i, int j, int k) { return 1 + i + 3 * j + 9 * k; };
   for (int k = 0; k < 3; ++k)
     for (int j = 0; j < 3; ++j)
-      for (int i = 0; i < 3; ++i) d << id(i, j, k) << ", " << 0.5 * i << ", " << 0.5 * j << ", "
-                                    << 0.5 * k << "\n";
+      for (int i = 0; i < 3; ++i)
+        d << id(i, j, k) << ", " << 0.5 * i << ", " << 0.5 * j << ", " << 0.5 * k << "\n";
   d << "*ELEMENT, TYPE=" << etype << ", ELSET=EALL\n";
   int e = 1;
   for (int k = 0; k < 2; ++k)
