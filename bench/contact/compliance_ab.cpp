@@ -92,7 +92,8 @@ void compliance_ab(const char* name, const Model& model, const ElementRegistry& 
     for (int threads : {1, 2}) {
       const SolverContext context{model, prepared, phases, threads};
       StiffnessMatrix K(model, prepared, threads);
-      assemble_stiffness(model, prepared, K, threads);
+      const ElementStates states(model, prepared, 0, nullptr);  // step 1's materials
+      assemble_stiffness(model, prepared, states, K, threads);
       const std::unique_ptr<LinearSolver> solver = make_cholmod_solver(context);
       solver->prepare(K, partition_dofs(dofs, held));
       Eigen::MatrixXd reference;

@@ -83,9 +83,21 @@ int info_command(const InfoArgs& args) {
   for (const auto& [name, set] : model.elsets)
     fmt::print("  {:<24} {} elements\n", name, set.elements.size());
   fmt::print("materials: {}\n", model.materials.size());
-  for (const Material& m : model.materials)
-    fmt::print("  {:<24} E = {}, nu = {}{}\n", m.name, m.young.value_or(0.0), m.poisson.value_or(0.0),
-               m.expansion ? fmt::format(", alpha = {}", *m.expansion) : std::string());
+  for (const Material& m : model.materials) {
+    // A constant isotropic law prints its constants; a type or a table over temperature says so.
+    static const char* const kElastic[] = {"isotropic", "orthotropic", "engineering constants",
+                                           "anisotropic"};
+    const std::string elastic =
+        m.young ? fmt::format("E = {}, nu = {}", *m.young, m.poisson.value_or(0.0))
+                : fmt::format("{} elasticity, {} temperature(s)",
+                              kElastic[static_cast<int>(m.elastic_type)], m.elastic_table.size());
+    const std::string expansion =
+        m.expansion ? fmt::format(", alpha = {}", *m.expansion)
+        : !m.expansion_table.empty()
+            ? fmt::format(", expansion over {} temperature(s)", m.expansion_table.size())
+            : std::string();
+    fmt::print("  {:<24} {}{}\n", m.name, elastic, expansion);
+  }
   fmt::print("sections:  {}\n", model.sections.size());
   for (const Section& s : model.sections) {
     if (!s.beam) {

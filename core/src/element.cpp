@@ -69,6 +69,32 @@ void for_each_face_point(const ElementGeometry& g, const TElement& e, const Face
   }
 }
 
+// A constant material whose nodes changed temperature by `nodal_dT` from 0: the thermal strain
+// alpha dT of a constant coefficient (the callers that give changes rather than temperatures).
+ElementMaterial with_temperature_change(const Material& material,
+                                        const Eigen::Ref<const Eigen::VectorXd>& nodal_dT,
+                                        const TElement& e) {
+  if (nodal_dT.size() != e.node_count())
+    throw std::invalid_argument(e.name() + ": " + std::to_string(nodal_dT.size()) +
+                                " nodal temperatures given, expected " +
+                                std::to_string(e.node_count()));
+  return ElementMaterial(material, nullptr, nodal_dT, Eigen::VectorXd::Zero(nodal_dT.size()));
+}
+
+// The element D at the element centre, what hourglass stabilisation scales with.
+Matrix6d stabilisation_law(const ElementGeometry& g, const ElementMaterial& material,
+                           const TElement& e) {
+  const int n = e.node_count();
+  Eigen::VectorXd N(n);
+  Eigen::MatrixXd dN(n, 3);
+  e.der({0.0, 0.0, 0.0}, N, dN);
+  MaterialPoint point;
+  material.at(N, g.X.transpose() * N, point);
+  Matrix6d D;
+  e.dee(point, D);
+  return D;
+}
+
 }  // namespace
 
 void TElement::bee(const Eigen::Ref<const Eigen::MatrixXd>& dNdx,
@@ -89,24 +115,7 @@ void TElement::bee(const Eigen::Ref<const Eigen::MatrixXd>& dNdx,
   }
 }
 
-void TElement::dee(const Material& material, Matrix6d& D) const {
-  // Messages are composed only on failure: dee() runs once per element in every assembly.
-  auto fail = [&](const std::string& what) {
-    throw InputError(material.where, "material " + material.name + ": " + what);
-  };
-  if (!material.young || !material.poisson)
-    fail("*ELASTIC (Young's modulus and Poisson's ratio) is required by element type " + name());
-  const double E = *material.young, nu = *material.poisson;
-  if (!(E > 0.0)) fail("Young's modulus " + format_number(E) + " must be positive");
-  if (!(nu > -1.0 && nu < 0.5))
-    fail("Poisson's ratio " + format_number(nu) + " must lie in (-1, 0.5)");
-  const double lambda = E * nu / ((1.0 + nu) * (1.0 - 2.0 * nu));
-  const double mu = E / (2.0 * (1.0 + nu));
-  D.setZero();
-  D.topLeftCorner<3, 3>().setConstant(lambda);
-  D.topLeftCorner<3, 3>().diagonal().array() += 2.0 * mu;
-  D.bottomRightCorner<3, 3>().diagonal().setConstant(mu);  // engineering shear strains
-}
+void TElement::dee(const MaterialPoint& material, Matrix6d& D) const { D = material.D; }
 
 double TElement::jacobian(const ElementGeometry& g, const Eigen::Ref<const Eigen::MatrixXd>& dN,
                           Eigen::Ref<Eigen::MatrixXd> dNdx, int point) const {
@@ -159,13 +168,13 @@ void TElement::face_quadrature(const ElementGeometry& g, const FaceDef& face,
     }
 }
 
-void TElement::complete_strain(const Material&, double, Eigen::Matrix<double, 6, 1>&) const {}
+void TElement::complete_strain(const MaterialPoint&, Eigen::Matrix<double, 6, 1>&) const {}
 
 int TElement::section_stations(RuleKind) const { return 0; }
 
-void TElement::section_resultants(const ElementGeometry&, const Material&, RuleKind,
+void TElement::section_resultants(const ElementGeometry&, const ElementMaterial&, RuleKind,
                                   const Eigen::Ref<const Eigen::VectorXd>&, Eigen::MatrixXd& forces,
-                                  Eigen::MatrixXd& moments, const Eigen::VectorXd*) const {
+                                  Eigen::MatrixXd& moments) const {
   forces.resize(0, 3);
   moments.resize(0, 3);
 }
@@ -176,58 +185,89 @@ void TElement::incompatible_bee(const ElementGeometry&, const Vec3&, double,
 void TElement::add_stabilisation(const ElementGeometry&, const Matrix6d&, const ElementOptions&,
                                  Eigen::MatrixXd&) const {}
 
-void TElement::stiffness(const ElementGeometry& g, const Material& material, RuleKind kind,
+void TElement::stiffness(const ElementGeometry& g, const ElementMaterial& material, RuleKind kind,
                          Eigen::MatrixXd& K, const ElementOptions& options) const {
   check_geometry(g, *this);
-  Matrix6d D;
-  dee(material, D);
   element_detail::ElementSystem system;
-  element_detail::integrate_system(*this, g, D, rule(kind), options, nullptr, system);
+  element_detail::integrate_system(*this, g, material, rule(kind), options, false, nullptr,
+                                   system);
   K = std::move(system.Kuu);
   if (system.Kaa.rows() > 0) {
     // Static condensation of the incompatible modes: K = Kuu - Kua Kaa^-1 Kua^T.
     const Eigen::LDLT<Eigen::MatrixXd> Kaa(system.Kaa);
     K.noalias() -= system.Kua * Kaa.solve(system.Kua.transpose());
   }
-  add_stabilisation(g, D, options, K);
+  add_stabilisation(g, stabilisation_law(g, material, *this), options, K);
   // The products above are symmetric only up to round-off; solvers (CHOLMOD) want it exact.
   K = 0.5 * (K + K.transpose()).eval();
 }
 
-void TElement::thermal_load(const ElementGeometry& g, const Material& material, RuleKind kind,
-                            const Eigen::Ref<const Eigen::VectorXd>& nodal_dT, Eigen::VectorXd& f,
-                            const ElementOptions& options) const {
+void TElement::eigenstrain_load(const ElementGeometry& g, const ElementMaterial& material,
+                                RuleKind kind, Eigen::VectorXd& f, const ElementOptions& options,
+                                const Eigen::MatrixXd* initial_stress) const {
   check_geometry(g, *this);
-  const Eigen::VectorXd dT = nodal_dT;
-  const Eigen::VectorXd alpha_dT = element_detail::nodal_thermal_strain(material, *this, &dT);
-  if (alpha_dT.size() == 0) {
+  if (!material.has_thermal_strain() && !initial_stress) {
     f.setZero(3 * node_count());
     return;
   }
-  Matrix6d D;
-  dee(material, D);
   element_detail::ElementSystem system;
-  element_detail::integrate_system(*this, g, D, rule(kind), options, &alpha_dT, system);
+  element_detail::integrate_system(*this, g, material, rule(kind), options, true, initial_stress,
+                                   system);
   f = std::move(system.fu);
   // The modes are internal: their share of the load goes to the nodes through Kua Kaa^-1.
   if (system.Kaa.rows() > 0)
     f.noalias() -= system.Kua * Eigen::LDLT<Eigen::MatrixXd>(system.Kaa).solve(system.fa);
 }
 
-void TElement::internal_force(const ElementGeometry& g, const Material& material, RuleKind kind,
-                              const Eigen::Ref<const Eigen::VectorXd>& u, Eigen::VectorXd& f,
-                              const ElementOptions& options,
-                              const Eigen::VectorXd* nodal_dT) const {
+void TElement::thermal_load(const ElementGeometry& g, const Material& material, RuleKind kind,
+                            const Eigen::Ref<const Eigen::VectorXd>& nodal_dT, Eigen::VectorXd& f,
+                            const ElementOptions& options) const {
+  eigenstrain_load(g, with_temperature_change(material, nodal_dT, *this), kind, f, options);
+}
+
+void TElement::internal_force(const ElementGeometry& g, const ElementMaterial& material,
+                              RuleKind kind, const Eigen::Ref<const Eigen::VectorXd>& u,
+                              Eigen::VectorXd& f, const ElementOptions& options,
+                              const Eigen::MatrixXd* initial_stress) const {
   check_displacements(g, *this, u);
-  // Linear elasticity: f = K u - f_th is exactly the integral of B^T sigma (plus stabilisation
+  // Linear elasticity: f = K u - f_eigen is exactly the integral of B^T sigma (plus stabilisation
   // forces) with the condensed incompatible modes and B-bar included.
   Eigen::MatrixXd K;
   stiffness(g, material, kind, K, options);
   f.noalias() = K * u;
-  if (nodal_dT) {
-    Eigen::VectorXd f_th;
-    thermal_load(g, material, kind, *nodal_dT, f_th, options);
-    f -= f_th;
+  if (material.has_thermal_strain() || initial_stress) {
+    Eigen::VectorXd f_eigen;
+    eigenstrain_load(g, material, kind, f_eigen, options, initial_stress);
+    f -= f_eigen;
+  }
+}
+
+void TElement::internal_force(const ElementGeometry& g, const Material& material, RuleKind kind,
+                              const Eigen::Ref<const Eigen::VectorXd>& u, Eigen::VectorXd& f,
+                              const ElementOptions& options,
+                              const Eigen::VectorXd* nodal_dT) const {
+  if (!nodal_dT) {
+    internal_force(g, ElementMaterial(material), kind, u, f, options);
+    return;
+  }
+  internal_force(g, with_temperature_change(material, *nodal_dT, *this), kind, u, f, options);
+}
+
+void TElement::body_load(const ElementGeometry& g, double density, RuleKind kind,
+                         const BodyAcceleration& acceleration, Eigen::VectorXd& f) const {
+  check_geometry(g, *this);
+  const IntegrationRule r = rule(kind);
+  const int n = node_count();
+  Eigen::VectorXd N(n);
+  Eigen::MatrixXd dN(n, 3), dNdx(n, 3);
+  f.setZero(3 * n);
+  for (int k = 0; k < r.size(); ++k) {
+    der(r.points[k], N, dN);
+    const double dv = r.weights[k] * point_measure(g, dN, dNdx, k + 1);
+    const Eigen::Vector3d x = g.X.transpose() * N;
+    const Vec3 a = acceleration.at({x(0), x(1), x(2)});
+    for (int p = 0; p < n; ++p)
+      for (int d = 0; d < 3; ++d) f(3 * p + d) += dv * density * N(p) * a[d];
   }
 }
 
@@ -253,40 +293,91 @@ void TElement::nodal_areas(const ElementGeometry& g, int face, Eigen::VectorXd& 
   });
 }
 
-void TElement::strains_stresses(const ElementGeometry& g, const Material& material, RuleKind kind,
-                                const Eigen::Ref<const Eigen::VectorXd>& u, Eigen::MatrixXd& strain,
-                                Eigen::MatrixXd& stress, const ElementOptions& options,
-                                const Eigen::VectorXd* nodal_dT) const {
+void TElement::strains_stresses(const ElementGeometry& g, const ElementMaterial& material,
+                                RuleKind kind, const Eigen::Ref<const Eigen::VectorXd>& u,
+                                Eigen::MatrixXd& strain, Eigen::MatrixXd& stress,
+                                const ElementOptions& options,
+                                const Eigen::MatrixXd* initial_stress) const {
   check_geometry(g, *this);
   check_displacements(g, *this, u);
-  Matrix6d D;
-  dee(material, D);
   const IntegrationRule r = rule(kind);
-  const Eigen::VectorXd alpha_dT = element_detail::nodal_thermal_strain(material, *this, nodal_dT);
+  element_detail::check_initial_stress(*this, r, initial_stress);
   // Incompatible modes from the element equilibrium of the internal dofs: a = Kaa^-1 (fa - Kua^T
   // u).
   Eigen::VectorXd modes;
   if (incompatible_mode_count() > 0) {
     element_detail::ElementSystem system;
-    element_detail::integrate_system(*this, g, D, r, options, alpha_dT.size() ? &alpha_dT : nullptr,
-                                     system);
+    element_detail::integrate_system(*this, g, material, r, options, true, initial_stress, system);
     modes = Eigen::LDLT<Eigen::MatrixXd>(system.Kaa).solve(system.fa - system.Kua.transpose() * u);
   }
   element_detail::PointOperators op(*this, g, r, options);
+  element_detail::PointLaws law(*this, g, material);
   strain.resize(r.size(), 6);
   stress.resize(r.size(), 6);
-  Eigen::Matrix<double, 6, 1> engineering, mechanical;
+  Eigen::Matrix<double, 6, 1> engineering;
   for (int k = 0; k < r.size(); ++k) {
     op.evaluate(k);
+    law.evaluate(op.N());
     engineering.noalias() = op.B() * u;
     if (modes.size() > 0) engineering.noalias() += op.G() * modes;
-    const double thermal_strain = alpha_dT.size() > 0 ? op.N().dot(alpha_dT) : 0.0;
-    mechanical = engineering;
-    mechanical.head<3>().array() -= thermal_strain;
-    stress.row(k).noalias() = (D * mechanical).transpose();
-    complete_strain(material, thermal_strain, engineering);
+    // sigma = D (eps - eps_th) + sigma0 = D eps - (D eps_th - sigma0).
+    stress.row(k).noalias() = (law.D() * engineering - law.prestress(initial_stress, k)).transpose();
+    complete_strain(law.point(), engineering);
     strain.row(k) = engineering.transpose();
     strain.row(k).tail<3>() *= 0.5;  // report tensor shear components eps_ij = gamma_ij / 2
+  }
+}
+
+void TElement::strains_stresses(const ElementGeometry& g, const Material& material,
+                                RuleKind kind, const Eigen::Ref<const Eigen::VectorXd>& u,
+                                Eigen::MatrixXd& strain, Eigen::MatrixXd& stress,
+                                const ElementOptions& options,
+                                const Eigen::VectorXd* nodal_dT) const {
+  if (!nodal_dT) {
+    strains_stresses(g, ElementMaterial(material), kind, u, strain, stress, options);
+    return;
+  }
+  strains_stresses(g, with_temperature_change(material, *nodal_dT, *this), kind, u, strain,
+                   stress, options);
+}
+
+void TElement::point_volumes(const ElementGeometry& g, RuleKind kind, Eigen::VectorXd& dv) const {
+  check_geometry(g, *this);
+  const IntegrationRule r = rule(kind);
+  const int n = node_count();
+  Eigen::VectorXd N(n);
+  Eigen::MatrixXd dN(n, 3), dNdx(n, 3);
+  dv.resize(r.size());
+  for (int k = 0; k < r.size(); ++k) {
+    der(r.points[k], N, dN);
+    dv(k) = r.weights[k] * point_measure(g, dN, dNdx, k + 1);
+  }
+}
+
+void TElement::point_laws(const ElementGeometry& g, const ElementMaterial& material,
+                          RuleKind kind, std::vector<MaterialPoint>& laws) const {
+  check_geometry(g, *this);
+  const IntegrationRule r = rule(kind);
+  const int n = node_count();
+  Eigen::VectorXd N(n);
+  Eigen::MatrixXd dN(n, 3);
+  laws.resize(r.size());
+  for (int k = 0; k < r.size(); ++k) {
+    der(r.points[k], N, dN);
+    material.at(N, g.X.transpose() * N, laws[k]);
+  }
+}
+
+void TElement::point_positions(const ElementGeometry& g, RuleKind kind, Eigen::MatrixXd& x) const {
+  check_geometry(g, *this);
+  const IntegrationRule r = rule(kind);
+  const int n = node_count();
+  Eigen::VectorXd N(n);
+  Eigen::MatrixXd dN(n, 3);
+  x.resize(r.size(), 3);
+  for (int k = 0; k < r.size(); ++k) {
+    der(r.points[k], N, dN);
+    x.row(k) = (g.X.transpose() * N).transpose();
   }
 }
 

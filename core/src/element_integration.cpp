@@ -54,21 +54,53 @@ double PointOperators::evaluate(int k) {
   return dv;
 }
 
-void integrate_system(const TElement& element, const ElementGeometry& g, const Matrix6d& D,
-                      const IntegrationRule& rule, const ElementOptions& options,
-                      const Eigen::VectorXd* alpha_dT, ElementSystem& system) {
+PointLaws::PointLaws(const TElement& element, const ElementGeometry& g,
+                     const ElementMaterial& material)
+    : element_(element), g_(g), material_(material) {}
+
+void PointLaws::evaluate(const Eigen::VectorXd& N) {
+  if (done_ && !material_.varies()) return;
+  const Eigen::Vector3d x = g_.X.transpose() * N;
+  material_.at(N, x, point_);
+  element_.dee(point_, D_);
+  done_ = true;
+}
+
+Vector6d PointLaws::prestress(const Eigen::MatrixXd* sigma0, int k) const {
+  Vector6d s = Vector6d::Zero();
+  if (material_.has_thermal_strain()) s.noalias() = D_ * point_.thermal_strain;
+  if (sigma0) s -= sigma0->row(k).transpose();
+  return s;
+}
+
+void check_initial_stress(const TElement& element, const IntegrationRule& rule,
+                          const Eigen::MatrixXd* sigma0) {
+  if (sigma0 && (sigma0->rows() != rule.size() || sigma0->cols() != 6))
+    throw std::invalid_argument(element.name() + ": initial stresses for " +
+                                std::to_string(sigma0->rows()) + " points given, the rule has " +
+                                std::to_string(rule.size()));
+}
+
+void integrate_system(const TElement& element, const ElementGeometry& g,
+                      const ElementMaterial& material, const IntegrationRule& rule,
+                      const ElementOptions& options, bool eigenstrains,
+                      const Eigen::MatrixXd* sigma0, ElementSystem& system) {
+  check_initial_stress(element, rule, sigma0);
   const int n = element.node_count();
   PointOperators op(element, g, rule, options);
+  PointLaws law(element, g, material);
   const int m = op.modes();
   system.Kuu.setZero(3 * n, 3 * n);
   system.Kua.setZero(3 * n, m);
   system.Kaa.setZero(m, m);
   system.fu.setZero(3 * n);
   system.fa.setZero(m);
+  const bool loaded = eigenstrains && (material.has_thermal_strain() || sigma0 != nullptr);
   Eigen::MatrixXd DB(6, 3 * n), DG(6, m);
-  Eigen::Matrix<double, 6, 1> sigma_th;
   for (int k = 0; k < op.points(); ++k) {
     const double dv = op.evaluate(k);
+    law.evaluate(op.N());
+    const Matrix6d& D = law.D();
     DB.noalias() = D * op.B();
     system.Kuu.noalias() += dv * op.B().transpose() * DB;
     if (m > 0) {
@@ -76,29 +108,12 @@ void integrate_system(const TElement& element, const ElementGeometry& g, const M
       system.Kua.noalias() += dv * op.B().transpose() * DG;
       system.Kaa.noalias() += dv * op.G().transpose() * DG;
     }
-    if (alpha_dT && alpha_dT->size() > 0) {
-      // D eps_th with eps_th = alpha dT (1, 1, 1, 0, 0, 0): the sum of D's first three columns.
-      const double strain = op.N().dot(*alpha_dT);
-      sigma_th = strain * D.leftCols<3>().rowwise().sum();
-      system.fu.noalias() += dv * op.B().transpose() * sigma_th;
-      if (m > 0) system.fa.noalias() += dv * op.G().transpose() * sigma_th;
+    if (loaded) {
+      const Vector6d prestress = law.prestress(sigma0, k);
+      system.fu.noalias() += dv * op.B().transpose() * prestress;
+      if (m > 0) system.fa.noalias() += dv * op.G().transpose() * prestress;
     }
   }
-}
-
-Eigen::VectorXd nodal_thermal_strain(const Material& material, const TElement& element,
-                                     const Eigen::VectorXd* nodal_dT) {
-  if (!nodal_dT) return {};
-  if (nodal_dT->size() != element.node_count())
-    throw std::invalid_argument(element.name() + ": " + std::to_string(nodal_dT->size()) +
-                                " nodal temperatures given, expected " +
-                                std::to_string(element.node_count()));
-  if (nodal_dT->cwiseAbs().maxCoeff() == 0.0) return {};
-  if (!material.expansion)
-    throw InputError(material.where, "material " + material.name +
-                                         ": *EXPANSION (thermal expansion coefficient) is "
-                                         "required for a temperature change");
-  return *material.expansion * *nodal_dT;
 }
 
 }  // namespace styk::element_detail

@@ -39,23 +39,47 @@ class PointOperators {
   Eigen::RowVectorXd mean_div_B_, mean_div_G_;
 };
 
+// The material law of one element at the points of one rule: the MaterialPoint of the
+// material (constitutive.hpp) and the element's D from its DEE hook. Evaluated once when the law
+// is the same at every point (ElementMaterial::varies() false), else at each point.
+class PointLaws {
+ public:
+  PointLaws(const TElement& element, const ElementGeometry& g, const ElementMaterial& material);
+  // The law at the point with shape functions N (evaluate it first with PointOperators).
+  void evaluate(const Eigen::VectorXd& N);
+  const MaterialPoint& point() const { return point_; }
+  const Matrix6d& D() const { return D_; }
+  // The stress the eigenstrains leave without displacement, D eps_th - sigma0 (`sigma0` a row
+  // of initial stresses, may be null).
+  Vector6d prestress(const Eigen::MatrixXd* sigma0, int k) const;
+
+ private:
+  const TElement& element_;
+  const ElementGeometry& g_;
+  const ElementMaterial& material_;
+  bool done_ = false;
+  MaterialPoint point_;
+  Matrix6d D_;
+};
+
 // The element equations before the incompatible modes are condensed out:
 //   [Kuu  Kua] [u]   [fu]
-//   [Kua' Kaa] [a] = [fa]      (f: thermal load, zero without temperatures)
+//   [Kua' Kaa] [a] = [fa]      (f: eigenstrain load, zero without temperatures and sigma0)
 struct ElementSystem {
   Eigen::MatrixXd Kuu, Kua, Kaa;
   Eigen::VectorXd fu, fa;
 };
 
-// Integrates the element system over `rule`. alpha_dT (n, may be null) holds alpha * dT at the
-// nodes; the thermal strain alpha dT (1,1,1,0,0,0) is interpolated with N.
-void integrate_system(const TElement& element, const ElementGeometry& g, const Matrix6d& D,
-                      const IntegrationRule& rule, const ElementOptions& options,
-                      const Eigen::VectorXd* alpha_dT, ElementSystem& system);
+// Integrates the element system over `rule`. With `eigenstrains` the load of the thermal strain
+// of `material` and of the initial stresses `sigma0` (one row per point, may be null) is
+// integrated too: f = integral of B^T (D eps_th - sigma0).
+void integrate_system(const TElement& element, const ElementGeometry& g,
+                      const ElementMaterial& material, const IntegrationRule& rule,
+                      const ElementOptions& options, bool eigenstrains,
+                      const Eigen::MatrixXd* sigma0, ElementSystem& system);
 
-// alpha * dT at the nodes for a material, or an empty vector when there is no temperature
-// change; an InputError at the material when dT != 0 and the material has no *EXPANSION.
-Eigen::VectorXd nodal_thermal_strain(const Material& material, const TElement& element,
-                                     const Eigen::VectorXd* nodal_dT);
+// Throws std::invalid_argument when `sigma0` is given with a row count other than the rule's.
+void check_initial_stress(const TElement& element, const IntegrationRule& rule,
+                          const Eigen::MatrixXd* sigma0);
 
 }  // namespace styk::element_detail

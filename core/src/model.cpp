@@ -66,3 +66,26 @@ int Model::add_element(Id id, const std::string& type, const std::vector<int>& n
 }
 
 }  // namespace styk
+
+namespace styk {
+
+void BodyAcceleration::add(const BodyLoad& load) {
+  if (load.kind == BodyLoad::Kind::Gravity) {
+    for (int d = 0; d < 3; ++d) gravity[d] += load.magnitude * load.direction[d];
+    return;
+  }
+  rotations.push_back({load.magnitude, load.point, load.direction});
+}
+
+Vec3 BodyAcceleration::at(const Vec3& x) const {
+  Vec3 a = gravity;
+  for (const Rotation& r : rotations) {
+    // omega^2 times the part of (x - point) perpendicular to the axis.
+    Vec3 d{x[0] - r.point[0], x[1] - r.point[1], x[2] - r.point[2]};
+    const double along = d[0] * r.axis[0] + d[1] * r.axis[1] + d[2] * r.axis[2];
+    for (int k = 0; k < 3; ++k) a[k] += r.omega_squared * (d[k] - along * r.axis[k]);
+  }
+  return a;
+}
+
+}  // namespace styk

@@ -86,9 +86,9 @@ void put_tensor(const Eigen::Matrix3d& m, Eigen::MatrixXd& rows, Eigen::Index ro
 
 }  // namespace
 
-void Beam::stiffness(const ElementGeometry& g, const Material& material, RuleKind kind,
+void Beam::stiffness(const ElementGeometry& g, const ElementMaterial& material, RuleKind kind,
                      Eigen::MatrixXd& K, const ElementOptions&) const {
-  const Stations s = evaluate_stations(*this, g, material, kind);
+  const Stations s = evaluate_stations(*this, g, material.material(), kind);
   K.setZero(6 * node_count(), 6 * node_count());
   Eigen::MatrixXd B;
   for (std::size_t k = 0; k < s.frames.size(); ++k) {
@@ -98,19 +98,47 @@ void Beam::stiffness(const ElementGeometry& g, const Material& material, RuleKin
   K = 0.5 * (K + K.transpose()).eval();
 }
 
-void Beam::thermal_load(const ElementGeometry& g, const Material& material, RuleKind kind,
-                        const Eigen::Ref<const Eigen::VectorXd>& nodal_dT, Eigen::VectorXd& f,
-                        const ElementOptions&) const {
-  const Stations s = evaluate_stations(*this, g, material, kind);
-  const Eigen::VectorXd dT = nodal_dT;
-  const std::vector<double> thermal = station_thermal_strains(material, &dT, s.frames);
+void Beam::eigenstrain_load(const ElementGeometry& g, const ElementMaterial& material,
+                            RuleKind kind, Eigen::VectorXd& f, const ElementOptions&,
+                            const Eigen::MatrixXd* initial_stress) const {
+  if (initial_stress != nullptr)
+    throw InputError(g.where, beam_detail::label(*this, g) +
+                                  ": *INITIAL CONDITIONS, TYPE=STRESS is not supported on beams");
   f.setZero(6 * node_count());
+  if (!material.has_thermal_strain()) return;
+  const Stations s = evaluate_stations(*this, g, material.material(), kind);
+  const Eigen::VectorXd dT = material.temperature_change();
+  const std::vector<double> thermal = station_thermal_strains(material.material(), &dT, s.frames);
   Eigen::MatrixXd B;
   for (std::size_t k = 0; k < s.frames.size(); ++k) {
     if (thermal[k] == 0.0) continue;
     beam_detail::strain_operator(s.frames[k], B);
     // f = B^T D e_th with e_th = (alpha dT, 0, ..., 0): the axial row only.
     f.noalias() += (s.measure[k] * s.section.stiffness(0) * thermal[k]) * B.row(0).transpose();
+  }
+}
+
+void Beam::body_load(const ElementGeometry& g, double density, RuleKind,
+                     const BodyAcceleration& acceleration, Eigen::VectorXd& f) const {
+  if (g.section == nullptr || !g.section->beam)
+    throw InputError(g.where, beam_detail::label(*this, g) + " has no *BEAM SECTION");
+  ElementSection section;
+  section.section = &*g.section->beam;
+  section.direction = planar_ ? Vec3{0.0, 0.0, -1.0} : g.section->beam->direction;
+  const double area = beam_section_properties(*g.section->beam).area;
+  // Mass per length density A; a Gauss rule with one point more than the nodes integrates the
+  // linear field of a centrifugal load exactly on a straight element.
+  std::vector<double> xi, weights;
+  gauss_legendre(node_count() + 1, xi, weights);
+  f.setZero(6 * node_count());
+  StationFrame frame;
+  for (std::size_t k = 0; k < xi.size(); ++k) {
+    beam_detail::station_frame(*this, g, section, xi[k], static_cast<int>(k) + 1, frame);
+    const Eigen::Vector3d x = g.X.transpose() * frame.N;
+    const Vec3 a = acceleration.at({x(0), x(1), x(2)});
+    const Eigen::Vector3d force = density * area * Eigen::Vector3d(a[0], a[1], a[2]);
+    for (int n = 0; n < node_count(); ++n)
+      f.segment<3>(6 * n) += (weights[k] * frame.jacobian * frame.N(n)) * force;
   }
 }
 
@@ -144,12 +172,13 @@ void Beam::pressure_load(const ElementGeometry& g, int face, double p, Eigen::Ve
   }
 }
 
-void Beam::section_resultants(const ElementGeometry& g, const Material& material, RuleKind kind,
-                              const Eigen::Ref<const Eigen::VectorXd>& u, Eigen::MatrixXd& forces,
-                              Eigen::MatrixXd& moments, const Eigen::VectorXd* nodal_dT) const {
+void Beam::section_resultants(const ElementGeometry& g, const ElementMaterial& material,
+                              RuleKind kind, const Eigen::Ref<const Eigen::VectorXd>& u,
+                              Eigen::MatrixXd& forces, Eigen::MatrixXd& moments) const {
   check_displacements(*this, g, u);
-  const Stations s = evaluate_stations(*this, g, material, kind);
-  const std::vector<Vector6> r = station_resultants(s, material, u, nodal_dT);
+  const Stations s = evaluate_stations(*this, g, material.material(), kind);
+  const Eigen::VectorXd dT = material.temperature_change();
+  const std::vector<Vector6> r = station_resultants(s, material.material(), u, &dT);
   forces.resize(static_cast<Eigen::Index>(r.size()), 3);
   moments.resize(static_cast<Eigen::Index>(r.size()), 3);
   for (std::size_t k = 0; k < r.size(); ++k) {
@@ -158,14 +187,18 @@ void Beam::section_resultants(const ElementGeometry& g, const Material& material
   }
 }
 
-void Beam::strains_stresses(const ElementGeometry& g, const Material& material, RuleKind kind,
-                            const Eigen::Ref<const Eigen::VectorXd>& u, Eigen::MatrixXd& strain,
-                            Eigen::MatrixXd& stress, const ElementOptions&,
-                            const Eigen::VectorXd* nodal_dT) const {
+void Beam::strains_stresses(const ElementGeometry& g, const ElementMaterial& material,
+                            RuleKind kind, const Eigen::Ref<const Eigen::VectorXd>& u,
+                            Eigen::MatrixXd& strain, Eigen::MatrixXd& stress,
+                            const ElementOptions&, const Eigen::MatrixXd* initial_stress) const {
+  if (initial_stress != nullptr)
+    throw InputError(g.where, beam_detail::label(*this, g) +
+                                  ": *INITIAL CONDITIONS, TYPE=STRESS is not supported on beams");
   check_displacements(*this, g, u);
-  const Stations s = evaluate_stations(*this, g, material, kind);
-  const std::vector<Vector6> r = station_resultants(s, material, u, nodal_dT);
-  const std::vector<double> thermal = station_thermal_strains(material, nodal_dT, s.frames);
+  const Stations s = evaluate_stations(*this, g, material.material(), kind);
+  const Eigen::VectorXd dT = material.temperature_change();
+  const std::vector<Vector6> r = station_resultants(s, material.material(), u, &dT);
+  const std::vector<double> thermal = station_thermal_strains(material.material(), &dT, s.frames);
   const BeamSectionProperties& p = s.section.properties;
   const double E = s.section.young, nu = s.section.poisson;
   const auto points = static_cast<Eigen::Index>(4 * r.size());

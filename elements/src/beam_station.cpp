@@ -52,8 +52,7 @@ ElementSection element_section(const TElement& element, const ElementGeometry& g
   const Section& section = *g.section;
   if (const std::string why = check_beam_section(*section.beam); !why.empty())
     throw InputError(section.where, "*BEAM SECTION of element set " + section.elset + ": " + why);
-  Matrix6d unused;
-  element.TElement::dee(material, unused);  // checks E and nu, with the material's line
+  check_elasticity(material);  // E and nu given and admissible, with the material's line
   if (planar) check_planar(element, g, section);
 
   ElementSection out;

@@ -39,18 +39,33 @@ void PlaneElement::bee(const Eigen::Ref<const Eigen::MatrixXd>& dNdx,
   }
 }
 
-void PlaneElement::dee(const Material& material, Matrix6d& D) const {
-  TElement::dee(material, D);  // checks E and nu, 3D isotropic law
+namespace {
+// The out-of-plane stress components that plane stress frees: 33, 13, 23 (Voigt 2, 4, 5), and
+// the in-plane ones 11, 22, 12 (0, 1, 3).
+constexpr int kOut[3] = {2, 4, 5};
+constexpr int kIn[3] = {0, 1, 3};
+}  // namespace
+
+void PlaneElement::dee(const MaterialPoint& material, Matrix6d& D) const {
+  D = material.D;
   if (kind_ == PlaneKind::Strain) return;
-  // sigma33 = 0: eliminate eps33 from the 3D law (static condensation of row/column 33). The
-  // in-plane block becomes E/(1-nu^2) [1 nu; nu 1]; the 33 row and column are zero so that
-  // S33 = 0 and a (B-bar or thermal) eps33 carries no stress.
-  const double d33 = D(2, 2);
-  for (int i = 0; i < 6; ++i)
-    for (int j = 0; j < 6; ++j)
-      if (i != 2 && j != 2) D(i, j) -= D(i, 2) * D(2, j) / d33;
-  D.row(2).setZero();
-  D.col(2).setZero();
+  // sigma33 = sigma13 = sigma23 = 0: eliminate the out-of-plane strains from the 3D law (static
+  // condensation, D_ii - D_io D_oo^-1 D_oi). Isotropic: the in-plane block becomes
+  // E/(1-nu^2) [1 nu; nu 1]. The out-of-plane rows and columns are zero so that they carry no
+  // stress whatever their (B-bar or thermal) strain.
+  Eigen::Matrix3d Doo, Dio;
+  for (int i = 0; i < 3; ++i)
+    for (int j = 0; j < 3; ++j) {
+      Doo(i, j) = material.D(kOut[i], kOut[j]);
+      Dio(i, j) = material.D(kIn[i], kOut[j]);
+    }
+  const Eigen::Matrix3d correction = Dio * Doo.inverse() * Dio.transpose();
+  for (int i = 0; i < 3; ++i)
+    for (int j = 0; j < 3; ++j) D(kIn[i], kIn[j]) -= correction(i, j);
+  for (int o : kOut) {
+    D.row(o).setZero();
+    D.col(o).setZero();
+  }
 }
 
 double PlaneElement::point_measure(const ElementGeometry& g,
@@ -99,13 +114,23 @@ void PlaneElement::face_quadrature(const ElementGeometry& g, const FaceDef& face
   }
 }
 
-void PlaneElement::complete_strain(const Material& material, double thermal_strain,
+void PlaneElement::complete_strain(const MaterialPoint& material,
                                    Eigen::Matrix<double, 6, 1>& engineering) const {
-  if (kind_ == PlaneKind::Strain) return;  // eps33 = 0 by definition
-  // sigma33 = 0 of the 3D law: eps33 = -nu/(1-nu) (eps11 + eps22) + (1+nu)/(1-nu) alpha dT.
-  const double nu = *material.poisson;  // dee() has checked it
-  engineering(2) =
-      (-nu * (engineering(0) + engineering(1)) + (1.0 + nu) * thermal_strain) / (1.0 - nu);
+  if (kind_ == PlaneKind::Strain) return;  // eps33 = gamma13 = gamma23 = 0 by definition
+  // sigma_o = 0 of the 3D law: eps_o = eps_th,o - D_oo^-1 D_oi (eps_i - eps_th,i). Isotropic:
+  // eps33 = -nu/(1-nu) (eps11 + eps22) + (1+nu)/(1-nu) alpha dT.
+  Eigen::Matrix3d Doo, Doi;
+  Eigen::Vector3d mechanical_in;
+  for (int i = 0; i < 3; ++i) {
+    mechanical_in(i) = engineering(kIn[i]) - material.thermal_strain(kIn[i]);
+    for (int j = 0; j < 3; ++j) {
+      Doo(i, j) = material.D(kOut[i], kOut[j]);
+      Doi(i, j) = material.D(kOut[i], kIn[j]);
+    }
+  }
+  const Eigen::Vector3d out = Doo.inverse() * (Doi * mechanical_in);
+  for (int i = 0; i < 3; ++i)
+    engineering(kOut[i]) = material.thermal_strain(kOut[i]) - out(i);
 }
 
 }  // namespace styk

@@ -45,11 +45,14 @@ void T3D2::bee(const Eigen::Ref<const Eigen::MatrixXd>& dNdx, Eigen::Ref<Eigen::
   for (Eigen::Index a = 0; a < dNdx.rows(); ++a) B.block<1, 3>(0, 3 * a) = dNdx.row(a);
 }
 
-void T3D2::dee(const Material& material, Matrix6d& D) const {
-  TElement::dee(material, D);  // checks E and nu
-  const double young = *material.young;
+void T3D2::dee(const MaterialPoint& material, Matrix6d& D) const {
+  // Uniaxial along the bar: the modulus of an isotropic law. A direction-dependent law or
+  // expansion would need the bar's axis in the material axes, which Styk does not model.
+  if (!material.isotropic || !material.isotropic_expansion)
+    throw InputError({}, "element type T3D2 takes an isotropic material only (*ELASTIC, "
+                         "TYPE=ISO and *EXPANSION, TYPE=ISO)");
   D.setZero();
-  D(0, 0) = young;  // uniaxial: no lateral stress, whatever nu
+  D(0, 0) = material.young;  // uniaxial: no lateral stress, whatever nu
 }
 
 double T3D2::point_measure(const ElementGeometry& g, const Eigen::Ref<const Eigen::MatrixXd>& dN,

@@ -4,13 +4,18 @@
 #include "styk/solver/analysis.hpp"
 
 #include <memory>
+#include <optional>
 
 #include "assembly.hpp"
+#include "body_loads.hpp"
+#include "constraint_lowering.hpp"
 #include "contact_analysis.hpp"
+#include "element_states.hpp"
 #include "linear_solver.hpp"
 #include "mechanism_check.hpp"
-#include "model_warnings.hpp"
 #include "model_constraints.hpp"
+#include "model_warnings.hpp"
+#include "output_quantities.hpp"
 #include "parallel.hpp"
 #include "phase_recorder.hpp"
 #include "prepared_model.hpp"
@@ -87,6 +92,17 @@ Results run_static_analysis(const Model& model, const ElementRegistry& registry,
                             const SolveOptions& options, ProgressSink* progress,
                             AnalysisReport* report) {
   reject_unsupported_features(model);
+  // Ties, couplings, MPCs and pre-tension sections: solved as equations on a lowered copy.
+  if (std::vector<std::string> notes;
+      std::optional<Model> lowered = lower_constraints(model, registry, &notes)) {
+    Results results = run_static_analysis(*lowered, registry, options, progress, report);
+    restrict_to_nodes(model.node_count(), results);
+    for (const std::string& note : notes) {
+      if (progress != nullptr) progress->warning(note);
+      if (report != nullptr) report->warnings.push_back(note);
+    }
+    return results;
+  }
   // Steady heat / electric potential: one scalar unknown per node (scalar_field_analysis.hpp).
   if (has_scalar_field_steps(model))
     return run_scalar_field_analysis(model, registry, options, progress, report);
@@ -101,7 +117,7 @@ Results run_static_analysis(const Model& model, const ElementRegistry& registry,
   PreparedModel prepared;
   std::vector<StepConditions> conditions;
   ModelConstraints constraints;
-  std::vector<std::vector<double>> temperature_changes;
+  std::vector<std::vector<double>> temperatures;
   {
     const PhaseRecorder::Scope phase(phases, "check");
     if (model.steps.empty())
@@ -112,7 +128,7 @@ Results run_static_analysis(const Model& model, const ElementRegistry& registry,
     check_output_requests(model, prepared);
     conditions = accumulate_step_conditions(model, prepared);
     constraints = ModelConstraints::build(model, prepared);
-    temperature_changes = step_temperature_changes(model);
+    temperatures = step_temperatures(model);
     for (const std::string& warning : model_warnings(model, prepared)) phases.warning(warning);
   }
 
@@ -128,10 +144,17 @@ Results run_static_analysis(const Model& model, const ElementRegistry& registry,
                 std::to_string(K->nonzeros()) + " nonzeros, " +
                 std::to_string(K->colouring().colours()) + " element colours");
   }
-  // "Pristine" K is the assembled stiffness in the nodal systems, equations eliminated.
+  // The elements' material state of step k (materials, temperatures, initial stresses).
+  auto states_of = [&](std::size_t k) {
+    return ElementStates(model, prepared, k, temperatures[k].empty() ? nullptr : &temperatures[k]);
+  };
+  // "Pristine" K is the assembled stiffness in the nodal systems, equations eliminated, of the
+  // material state `stiffness_states`.
+  std::optional<ElementStates> stiffness_states;
+  stiffness_states.emplace(states_of(0));
   auto assemble = [&] {
     const PhaseRecorder::Scope phase(phases, "assemble");
-    assemble_stiffness(model, prepared, *K, threads);
+    assemble_stiffness(model, prepared, *stiffness_states, *K, threads);
     constraints.apply(*K);
   };
   assemble();
@@ -151,6 +174,7 @@ Results run_static_analysis(const Model& model, const ElementRegistry& registry,
 
   Results results;
   double total_time = 0.0;
+  std::vector<double> w_previous(prepared.active_dofs(), 0.0);  // nodal, for *BOUNDARY, FIXED
   for (std::size_t k = 0; k < model.steps.size(); ++k) {
     const Step& step = model.steps[k];
     // Prescribed dofs are nodal (local where a *TRANSFORM applies); `known` adds the dofs that
@@ -161,9 +185,18 @@ Results run_static_analysis(const Model& model, const ElementRegistry& registry,
     const LinearSolverKind kind = choose_solver(options, step, free_dofs, model,
                                                 !constraints.empty(), prepared.has_rotations());
 
-    // A new factorisation only when the prescribed set (or the solver) changes; otherwise the
-    // step costs a right-hand side and a solve.
-    if (!solver || kind != solver_kind || known != solver_prescribed) {
+    // A stiffness of its own when the step changes materials (*CHANGE SOLID SECTION) or the
+    // temperatures of temperature-dependent elasticity.
+    const ElementStates states = states_of(k);
+    const bool new_stiffness = stiffness_states->stiffness_differs(states);
+    if (new_stiffness) {
+      solver.reset();  // drops any view of K's arrays before K is reassembled
+      stiffness_states.emplace(states);
+      assemble();
+    }
+    // A new factorisation only when the stiffness, the prescribed set (or the solver) changes;
+    // otherwise the step costs a right-hand side and a solve.
+    if (!solver || new_stiffness || kind != solver_kind || known != solver_prescribed) {
       {
         const PhaseRecorder::Scope phase(phases, "check");
         check_rigid_body_modes(model, prepared, K->graph(),
@@ -185,20 +218,24 @@ Results run_static_analysis(const Model& model, const ElementRegistry& registry,
       }
     }
 
-    const std::vector<double>& dT = temperature_changes[k];
     std::vector<double> thermal;
-    if (!dT.empty()) {
+    if (!temperatures[k].empty() || !model.initial_stresses.empty()) {
       const PhaseRecorder::Scope phase(phases, "assemble");
-      thermal = assemble_thermal_load(model, prepared, dT, threads);
+      thermal = assemble_eigenstrain_load(model, prepared, states, threads);
     }
-    // f: the external (mechanical) forces, which reactions are measured against; the thermal
-    // load joins only the right-hand side (internal forces include the thermal strain).
-    const std::vector<double> f = constraints.nodal_forces(model, prepared, conditions[k]);
+    // f: the external (mechanical) forces, which reactions are measured against, body forces
+    // included; the eigenstrain load (thermal strain, initial stress) joins only the right-hand
+    // side (internal forces include it).
+    const std::vector<double> f =
+        constraints.plus_global(constraints.nodal_forces(model, prepared, conditions[k]),
+                                assemble_body_loads(model, prepared, states, conditions[k]));
     std::vector<double> prescribed_value(prepared.active_dofs(), 0.0);
     for (const DofValue& p : conditions[k].prescribed) prescribed_value[p.dof] = p.value;
+    for (int dof : conditions[k].fixed) prescribed_value[dof] = w_previous[dof];
     std::vector<double> u =
         solver->solve(constraints.reduced_forces(constraints.plus_global(f, std::move(thermal))),
                       prescribed_value);
+    w_previous = u;  // nodal: the values *BOUNDARY, FIXED holds in a later step
     constraints.to_global_displacements(u);
     if (report != nullptr) report->iterations += solver->iterations();
 
@@ -211,10 +248,14 @@ Results run_static_analysis(const Model& model, const ElementRegistry& registry,
     {
       const PhaseRecorder::Scope phase(phases, "recover");
       const std::vector<int> reaction_dofs = constraints.reaction_dofs(prescribed);
-      const RecoveryInput input{reaction_dofs, u, f, dT.empty() ? nullptr : &dT,
-                                &constraints.rotations()};
+      const OutputNeeds needs = output_needs(model, k);
+      const RecoveryInput input{
+          reaction_dofs,        u, f, &states, &constraints.rotations(), needs.energies,
+          needs.thermal_strains};
       recover_increment(model, prepared, input, threads, increment);
       averaging.apply(threads, increment);
+      if (needs.error_estimate) estimate_stress_errors(model, prepared, states, threads, increment);
+      compute_section_forces(model, prepared, k, increment);
     }
     results.increments.push_back(std::move(increment));
   }

@@ -21,8 +21,8 @@ void element_geometry(const Model& model, int e, ElementGeometry& geometry) {
                          : nullptr;
 }
 
-void assemble_stiffness(const Model& model, const PreparedModel& prepared, StiffnessMatrix& K,
-                        int threads) {
+void assemble_stiffness(const Model& model, const PreparedModel& prepared,
+                        const ElementStates& states, StiffnessMatrix& K, int threads) {
   threads = resolve_threads(threads);
   std::vector<double>& values = K.values();
   values.assign(static_cast<std::size_t>(K.nonzeros()), 0.0);
@@ -46,7 +46,7 @@ void assemble_stiffness(const Model& model, const PreparedModel& prepared, Stiff
         const int e = colouring.order[first + i];
         element_geometry(model, e, s.geometry);
         const ElementOptions options{model.sections[model.elements[e].section].selective_volumetric};
-        prepared.formulation[e]->stiffness(s.geometry, *prepared.material[e], prepared.rule_kind[e],
+        prepared.formulation[e]->stiffness(s.geometry, states.stiffness_law(e), prepared.rule_kind[e],
                                            s.Ke, options);
         const int n = model.elements[e].node_count;
         const int m = prepared.formulation[e]->node_dofs();

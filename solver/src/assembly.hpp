@@ -6,6 +6,7 @@
 
 #include <Eigen/Core>
 
+#include "element_states.hpp"
 #include "prepared_model.hpp"
 #include "step_conditions.hpp"
 #include "stiffness_matrix.hpp"
@@ -15,9 +16,10 @@ namespace styk::solver_detail {
 // Fills `geometry` (coordinates, id, deck line) for element e, reusing its storage.
 void element_geometry(const Model& model, int e, ElementGeometry& geometry);
 
-// Overwrites K's values with the assembled stiffness (full integration) and marks it pristine.
-void assemble_stiffness(const Model& model, const PreparedModel& prepared, StiffnessMatrix& K,
-                        int threads);
+// Overwrites K's values with the assembled stiffness (full integration) of the elements in the
+// material state `states` and marks it pristine.
+void assemble_stiffness(const Model& model, const PreparedModel& prepared,
+                        const ElementStates& states, StiffnessMatrix& K, int threads);
 
 // External forces on all active dofs: concentrated loads plus consistent pressure loads.
 std::vector<double> assemble_loads(const Model& model, const PreparedModel& prepared,

@@ -4,14 +4,18 @@
 #include <cmath>
 #include <cstdio>
 #include <memory>
+#include <optional>
 
 #include "assembly.hpp"
+#include "body_loads.hpp"
 #include "contact_operator.hpp"
+#include "element_states.hpp"
 #include "floating_bodies.hpp"
 #include "linear_solver.hpp"
 #include "mechanism_check.hpp"
 #include "model_constraints.hpp"
 #include "model_warnings.hpp"
+#include "output_quantities.hpp"
 #include "parallel.hpp"
 #include "phase_recorder.hpp"
 #include "prepared_model.hpp"
@@ -174,9 +178,26 @@ Results run_contact_analysis(const Model& model, const ElementRegistry& registry
   // K in the nodal systems with the equations eliminated (model_constraints.hpp), as in the
   // linear path; the contact rows stay global and the compliance maps between the two.
   StiffnessMatrix K(model, prepared, threads, kinematic.extra_node_couplings(model, prepared));
+  // The elements' material state at the end of step k; K holds the one of `stiffness_states`
+  // (a step that changes materials or the temperatures of temperature-dependent elasticity gets
+  // a stiffness of its own, evaluated at the end of the step).
+  const std::vector<double> initial_temperature = initial_node_temperatures(model);
+  std::vector<std::vector<double>> step_temperature(model.steps.size());
+  for (std::size_t k = 0; k < model.steps.size(); ++k)
+    if (!temperature_changes[k].empty()) {
+      step_temperature[k] = initial_temperature;
+      for (std::size_t n = 0; n < initial_temperature.size(); ++n)
+        step_temperature[k][n] += temperature_changes[k][n];
+    }
+  auto states_of = [&](std::size_t k) {
+    return ElementStates(model, prepared, k,
+                         step_temperature[k].empty() ? nullptr : &step_temperature[k]);
+  };
+  std::optional<ElementStates> stiffness_states;
+  stiffness_states.emplace(states_of(0));
   auto assemble = [&] {
     const PhaseRecorder::Scope phase(phases, "assemble");
-    assemble_stiffness(model, prepared, K, threads);
+    assemble_stiffness(model, prepared, *stiffness_states, K, threads);
     kinematic.apply(K);
   };
   assemble();
@@ -246,7 +267,14 @@ Results run_contact_analysis(const Model& model, const ElementRegistry& registry
   for (std::size_t k = 0; k < model.steps.size(); ++k) {
     const Step& step = model.steps[k];
     const std::vector<int> prescribed = prescribed_dofs(conditions[k]);
-    if (!factor.solver || prescribed != factor.prescribed) set_up(prescribed);
+    const ElementStates states = states_of(k);
+    const bool new_stiffness = stiffness_states->stiffness_differs(states);
+    if (new_stiffness) {
+      factor.solver.reset();
+      stiffness_states.emplace(states);
+      assemble();
+    }
+    if (!factor.solver || new_stiffness || prescribed != factor.prescribed) set_up(prescribed);
     const Eigen::MatrixXd& R = factor.floating.modes;
     const std::vector<int> reaction_dofs = kinematic.reaction_dofs(prescribed);
 
@@ -255,14 +283,17 @@ Results run_contact_analysis(const Model& model, const ElementRegistry& registry
     // amplitude of a static step, applied to the temperature field too, so an increment at step
     // fraction tau carries tau of the step's temperature change (docs/contact.md).
     StepLoads end;
-    end.mechanical = kinematic.nodal_forces(model, prepared, conditions[k]);
+    end.mechanical = kinematic.plus_global(kinematic.nodal_forces(model, prepared, conditions[k]),
+                                           assemble_body_loads(model, prepared, states,
+                                                               conditions[k]));
     end.dT = temperature_changes[k];
-    if (!end.dT.empty()) {
+    if (!end.dT.empty() || !model.initial_stresses.empty()) {
       const PhaseRecorder::Scope phase(phases, "assemble");
-      end.thermal = assemble_thermal_load(model, prepared, end.dT, threads);
+      end.thermal = assemble_eigenstrain_load(model, prepared, states, threads);
     }
     std::vector<double> up_end(prepared.active_dofs(), 0.0);
     for (const DofValue& p : conditions[k].prescribed) up_end[p.dof] = p.value;
+    for (int dof : conditions[k].fixed) up_end[dof] = u_previous[dof];  // *BOUNDARY, FIXED
     const StepLoads start = previous;
     // Only the prescribed dofs' values matter (dependent and fixing dofs start from zero).
     std::vector<double> up_start(prepared.active_dofs(), 0.0);
@@ -364,10 +395,23 @@ Results run_contact_analysis(const Model& model, const ElementRegistry& registry
       increment.total_time = total_time + t;
       {
         const PhaseRecorder::Scope phase(phases, "recover");
-        const RecoveryInput input{reaction_dofs, u, loads, dT_t.empty() ? nullptr : &dT_t,
-                                  &kinematic.rotations()};
+        std::vector<double> temperature_t;
+        if (!dT_t.empty()) {
+          temperature_t = initial_temperature;
+          for (std::size_t n = 0; n < temperature_t.size(); ++n) temperature_t[n] += dT_t[n];
+        }
+        const ElementStates states_t(model, prepared, k,
+                                     temperature_t.empty() ? nullptr : &temperature_t);
+        const OutputNeeds needs = output_needs(model, k);
+        const RecoveryInput input{reaction_dofs,          u,
+                                  loads,                  &states_t,
+                                  &kinematic.rotations(), needs.energies,
+                                  needs.thermal_strains};
         recover_increment(model, prepared, input, threads, increment);
         averaging.apply(threads, increment);
+        if (needs.error_estimate)
+          estimate_stress_errors(model, prepared, states_t, threads, increment);
+        compute_section_forces(model, prepared, k, increment);
         contact::fill_contact_results(model, constraints, state, increment);
         check_equilibrium(prepared, to_global(kinematic, f_t), increment, constraints, state,
                           increment.contact_equilibrium);

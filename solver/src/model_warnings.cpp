@@ -59,9 +59,11 @@ bool is_cube_solid(const TElement& element) {
 bool bulk_dominated(const TElement& element, const Material& material) {
   if (element.section_measure() == SectionMeasure::Area) return false;  // trusses
   if (element.section_measure() == SectionMeasure::Beam) return false;  // uniaxial fibres
+  const MaterialPoint point = material_point(material);
+  if (!point.isotropic) return false;  // the bulk-dominance rule is stated for isotropic laws
   Matrix6d D;
-  element.dee(material, D);
-  return D.cwiseAbs().maxCoeff() > kBulkDominated * *material.young;
+  element.dee(point, D);
+  return D.cwiseAbs().maxCoeff() > kBulkDominated * point.young;
 }
 
 // Whether `element` locks volumetrically by construction: fully integrated (more points in its

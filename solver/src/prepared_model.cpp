@@ -14,18 +14,11 @@ const Material& checked_material(const Model& model, int section_index) {
     throw InputError(section.where, "the section of element set " + section.elset +
                                         " refers to an undefined material " + section.material);
   const Material& material = model.materials[section.material_index];
-  if (!material.young || !material.poisson)
+  if (!material.has_elasticity())
     throw InputError(material.where, "material " + material.name +
                                          " has no *ELASTIC constants (Young's modulus and "
                                          "Poisson's ratio are needed for a static analysis)");
-  if (!(*material.young > 0.0) || !std::isfinite(*material.young))
-    throw InputError(material.where, "material " + material.name +
-                                         ": Young's modulus must be positive, got " +
-                                         std::to_string(*material.young));
-  if (!(*material.poisson > -1.0 && *material.poisson < 0.5))
-    throw InputError(material.where, "material " + material.name +
-                                         ": Poisson's ratio must lie in (-1, 0.5), got " +
-                                         std::to_string(*material.poisson));
+  check_elasticity(material);  // E, nu in range; tables positive definite at every temperature
   return material;
 }
 
@@ -47,6 +40,25 @@ void check_section_measure(const Model& model, const Element& element,
                                         " gives no cross-section area (its first data line), "
                                         "which element " + std::to_string(element.id) +
                                         " of type " + element.type + " needs");
+  // A bar's uniaxial law is isotropic: a direction-dependent one would need the bar's axis in
+  // the material axes.
+  const Material& material = model.materials[section.material_index];
+  const bool isotropic = material.elastic_type == ElasticType::Isotropic &&
+                         material.expansion_type == ExpansionType::Isotropic;
+  if (formulation.section_measure() == SectionMeasure::Area && !isotropic)
+    throw InputError(section.where, "element set " + section.elset + " holds " + element.type +
+                                        " elements (bars), which take an isotropic material "
+                                        "only; material " + material.name +
+                                        " is orthotropic or anisotropic");
+  // A beam integrates its section with one E and nu: a constant isotropic law.
+  const bool constant = material.young && material.poisson && material.elastic_table.empty() &&
+                        material.expansion_table.empty();
+  if (formulation.section_measure() == SectionMeasure::Beam && !(isotropic && constant))
+    throw InputError(section.where, "element set " + section.elset + " holds " + element.type +
+                                        " elements (beams), which take a constant isotropic "
+                                        "material (one *ELASTIC line E, nu; one *EXPANSION "
+                                        "line); material " +
+                                        material.name + " is not");
 }
 
 // The rule element e integrates with: its section's choice for beams, the standard one else.
@@ -129,6 +141,17 @@ PreparedModel prepare_model(const Model& model, const ElementRegistry& registry)
     }
   }
 
+  // Nodes that only constraints use (a coupling's reference node, a pre-tension node, the nodes
+  // an *EQUATION names outside the mesh) carry the dofs their equations name.
+  for (const Equation& equation : model.equations)
+    for (const EquationTerm& term : equation.terms) {
+      if (term.node < 0 || term.node >= model.node_count() || term.dof < 1 || term.dof > 3)
+        continue;  // EquationElimination reports it
+      prepared.active_of_node[term.node] = 0;
+      stiffened_bits[term.node] |= static_cast<unsigned char>(1 << (term.dof - 1));
+      dofs_of_node[term.node] = std::max(dofs_of_node[term.node], static_cast<unsigned char>(3));
+    }
+
   // Integration points and stations per element, asking each formulation and rule once.
   struct RuleSize {
     const TElement* formulation;
@@ -189,6 +212,12 @@ void check_output_requests(const Model& model, const PreparedModel& prepared) {
           throw InputError(request.where, "output variable " + var +
                                               " (section forces and moments) needs beam "
                                               "elements; this model has none");
+        const bool energy = var == "ENER" || var == "ELSE" || var == "EVOL" || var == "THE";
+        if (energy && stations)
+          throw InputError(request.where, "output variable " + var +
+                                              " is not computed for beam elements (their "
+                                              "section is integrated in resultants); this model "
+                                              "has beams");
       }
 }
 

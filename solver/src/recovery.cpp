@@ -1,7 +1,10 @@
 #include "recovery.hpp"
 
+#include <optional>
+
 #include "assembly.hpp"
 #include "parallel.hpp"
+
 #include "thermal_load.hpp"
 
 namespace styk::solver_detail {
@@ -10,8 +13,9 @@ namespace {
 // Scratch of one worker, sized on first use and reused for every element.
 struct RecoveryScratch {
   ElementGeometry geometry;
-  Eigen::VectorXd ue, fe, dT;
-  Eigen::MatrixXd strain, stress, forces, moments;
+  Eigen::VectorXd ue, fe, dv;
+  Eigen::MatrixXd strain, stress, forces, moments, positions;
+  std::vector<MaterialPoint> laws;
   std::vector<int> dofs;
   std::vector<double> internal;  // internal force (global) on the dofs of the reaction nodes
 };
@@ -30,12 +34,40 @@ void nodal_motions(const Model& model, const PreparedModel& prepared, const std:
   }
 }
 
+// ENER, THE, the element's volume and internal energy from the stresses and strains just
+// recovered (s.stress, s.strain): ENER = 1/2 (sigma + sigma0) : (eps - eps_th), the energy
+// density of a linear law from the unstrained state, its integral the element's energy.
+void element_energies(const TElement& element, const ElementGeometry& g, const ElementMaterial& law,
+                      RuleKind kind, const Eigen::MatrixXd* sigma0, int e, int first,
+                      RecoveryScratch& s, IncrementResult& out) {
+  element.point_laws(g, law, kind, s.laws);
+  element.point_volumes(g, kind, s.dv);
+  for (int p = 0; p < s.stress.rows(); ++p) {
+    Tensor6 thermal{};
+    for (int c = 0; c < 6; ++c) thermal[c] = s.laws[p].thermal_strain[c] * (c < 3 ? 1.0 : 0.5);
+    if (!out.THE.empty()) out.THE[first + p] = thermal;
+    if (out.ENER.empty()) continue;
+    double energy = 0.0;
+    for (int c = 0; c < 6; ++c) {
+      const double stress = s.stress(p, c) + (sigma0 ? (*sigma0)(p, c) : 0.0);
+      energy += (c < 3 ? 0.5 : 1.0) * stress * (s.strain(p, c) - thermal[c]);
+    }
+    out.ENER[first + p] = energy;
+    out.element_energy[e] += energy * s.dv(p);
+    out.element_volume[e] += s.dv(p);
+  }
+}
+
 }  // namespace
 
 void recover_increment(const Model& model, const PreparedModel& prepared,
                        const RecoveryInput& input, int threads, IncrementResult& out) {
   threads = resolve_threads(threads);
   const std::vector<double>& u = input.u;
+  const std::optional<ElementStates> initial_states =
+      input.states ? std::nullopt
+                   : std::optional<ElementStates>(std::in_place, model, prepared, 0, nullptr);
+  const ElementStates& states = input.states ? *input.states : *initial_states;
   nodal_motions(model, prepared, u, out);
   out.RF.assign(model.node_count(), Vec3{0.0, 0.0, 0.0});
   if (prepared.has_rotations()) out.RM.assign(model.node_count(), Vec3{0.0, 0.0, 0.0});
@@ -48,6 +80,17 @@ void recover_increment(const Model& model, const PreparedModel& prepared,
     out.SF.assign(stations, Vec3{0.0, 0.0, 0.0});
     out.SM.assign(stations, Vec3{0.0, 0.0, 0.0});
   }
+  if (input.energies) {
+    out.ENER.assign(prepared.ip_offset.back(), 0.0);
+    out.element_volume.assign(model.element_count(), 0.0);
+    out.element_energy.assign(model.element_count(), 0.0);
+  }
+  if (input.thermal_strains) out.THE.assign(prepared.ip_offset.back(), Tensor6{});
+  bool cylindrical = false;  // some material axes depend on the point: keep the positions
+  for (const Section& section : model.sections)
+    if (const auto o = model.orientations.find(section.orientation); o != model.orientations.end())
+      cylindrical = cylindrical || o->second.axes.system == CoordinateSystem::Cylindrical;
+  if (cylindrical) out.ip_position.assign(prepared.ip_offset.back(), Vec3{});
 
   // Compact storage of the nodes with a constrained dof (only elements touching one need the
   // internal force): reaction node r keeps its dofs at internal[reaction_first[r] ...].
@@ -81,14 +124,11 @@ void recover_increment(const Model& model, const PreparedModel& prepared,
       for (int k = 0; k < n; ++k)
         touches_reaction =
             touches_reaction || reaction_node[prepared.active_of_node[nodes[k]]] >= 0;
-      const Eigen::VectorXd* dT = nullptr;
-      if (input.nodal_dT != nullptr) {
-        element_temperature_changes(model, e, *input.nodal_dT, s.dT);
-        if (!s.dT.isZero(0.0)) dT = &s.dT;
-      }
       const ElementOptions options{model.sections[model.elements[e].section].selective_volumetric};
-      element.strains_stresses(s.geometry, *prepared.material[e], prepared.rule_kind[e], s.ue,
-                               s.strain, s.stress, options, dT);
+      const ElementMaterial law = states.law(e);
+      const Eigen::MatrixXd* sigma0 = states.initial_stress(e);
+      element.strains_stresses(s.geometry, law, prepared.rule_kind[e], s.ue, s.strain, s.stress,
+                               options, sigma0);
       const int first = prepared.ip_offset[e];
       for (int p = 0; p < s.stress.rows(); ++p)
         for (int c = 0; c < 6; ++c) {
@@ -96,8 +136,8 @@ void recover_increment(const Model& model, const PreparedModel& prepared,
           out.E[first + p][c] = s.strain(p, c);
         }
       if (prepared.station_offset[e + 1] > prepared.station_offset[e]) {
-        element.section_resultants(s.geometry, *prepared.material[e], prepared.rule_kind[e], s.ue,
-                                   s.forces, s.moments, dT);
+        element.section_resultants(s.geometry, law, prepared.rule_kind[e], s.ue, s.forces,
+                                   s.moments);
         const int station = prepared.station_offset[e];
         for (int k = 0; k < s.forces.rows(); ++k)
           for (int c = 0; c < 3; ++c) {
@@ -105,12 +145,22 @@ void recover_increment(const Model& model, const PreparedModel& prepared,
             out.SM[station + k][c] = s.moments(k, c);
           }
       }
+      // Beams have no 3D energy density at their fibre points (prepare_model refuses ENER, ELSE,
+      // EVOL and THE requests in models with beams).
+      const bool continuum = element.section_measure() != SectionMeasure::Beam;
+      if (continuum && (input.energies || input.thermal_strains))
+        element_energies(element, s.geometry, law, prepared.rule_kind[e], sigma0, e, first, s,
+                         out);
+      if (!out.ip_position.empty()) {
+        element.point_positions(s.geometry, prepared.rule_kind[e], s.positions);
+        for (int p = 0; p < s.positions.rows(); ++p)
+          out.ip_position[first + p] = {s.positions(p, 0), s.positions(p, 1), s.positions(p, 2)};
+      }
       if (!touches_reaction) continue;
 
       // Internal force of the element (B-bar, incompatible modes, hourglass forces and the
       // thermal strain included).
-      element.internal_force(s.geometry, *prepared.material[e], prepared.rule_kind[e], s.ue, s.fe,
-                             options, dT);
+      element.internal_force(s.geometry, law, prepared.rule_kind[e], s.ue, s.fe, options, sigma0);
       for (int k = 0; k < n; ++k) {
         const int r = reaction_node[prepared.active_of_node[nodes[k]]];
         if (r < 0) continue;

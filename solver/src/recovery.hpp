@@ -5,6 +5,7 @@
 
 #include <vector>
 
+#include "element_states.hpp"
 #include "node_rotations.hpp"
 #include "prepared_model.hpp"
 #include "step_conditions.hpp"
@@ -18,13 +19,19 @@ struct RecoveryInput {
   const std::vector<int>& reaction_dofs;
   const std::vector<double>& u;  // displacements on all active dofs, global directions
   const std::vector<double>& f;  // external forces on the nodal dofs (as reaction_dofs)
-  const std::vector<double>* nodal_dT = nullptr;  // T - T_initial per model node, or none
+  // The elements' material state (law, temperatures, initial stresses), or none: the materials
+  // of their sections at the initial temperatures.
+  const ElementStates* states = nullptr;
   const NodeRotations* rotations = nullptr;       // the nodal systems, or none (all global)
+  // Also fill ENER, element_volume and element_energy (energies) and THE (thermal strains).
+  bool energies = false;
+  bool thermal_strains = false;
 };
 
 // Fills U, RF (both global components), UR and RM (models with rotations), ip_offset, S and E,
-// and station_offset, SF and SM (models with structural elements) of `out`. With temperature
-// changes the stress is D (eps - alpha dT) and E stays the total strain.
+// and station_offset, SF and SM (models with structural elements) of `out`. The stress is
+// D (eps - eps_th) + sigma0 with the states' thermal strain and initial stress; E stays the total
+// strain.
 void recover_increment(const Model& model, const PreparedModel& prepared,
                        const RecoveryInput& input, int threads, IncrementResult& out);
 

@@ -1,9 +1,11 @@
 #include "step_conditions.hpp"
 
+#include <algorithm>
 #include <map>
 #include <string>
 #include <utility>
 
+#include "coupling_loads.hpp"
 #include "node_rotations.hpp"
 
 namespace styk::solver_detail {
@@ -91,6 +93,31 @@ std::vector<char> inactive_nodal_dofs(const Model& model, const PreparedModel& p
   return inactive;
 }
 
+bool is_reference_node(const std::vector<DistributingTransfer>& transfers, int node) {
+  for (const DistributingTransfer& t : transfers)
+    if (t.reference_node == node) return true;
+  return false;
+}
+
+// `loads` plus the forces carried from distributing couplings' reference nodes (global; a
+// surface node with a *TRANSFORM is refused).
+std::map<int, double> with_distributed(const Model& model, const PreparedModel& prepared,
+                                       std::map<int, double> loads,
+                                       const std::map<int, Eigen::Vector3d>& carried) {
+  for (const auto& [node, force] : carried) {
+    for (const Transform& t : model.transforms)
+      if (const NodeSet* set = model.find_nset(t.nset);
+          set && std::binary_search(set->nodes.begin(), set->nodes.end(), node))
+        throw InputError(t.where, "node " + std::to_string(model.node_ids[node]) +
+                                      " of a distributing coupling's surface has a *TRANSFORM, "
+                                      "which Styk does not combine with the carried loads");
+    for (int d = 0; d < 3; ++d)
+      loads[checked_dof(model, prepared, node, d + 1, {}, "distributed coupling load")] +=
+          force[d];
+  }
+  return loads;
+}
+
 std::vector<DofValue> to_vector(const std::map<int, double>& values) {
   std::vector<DofValue> out;
   out.reserve(values.size());
@@ -114,10 +141,12 @@ std::vector<StepConditions> accumulate_step_conditions(const Model& model,
                          "ux and uy, planar beams ux, uy and rz)" +
                          (what == "boundary condition" ? "; only a zero value is accepted" : ""));
   };
+  std::map<int, bool> fixed;  // per prescribed dof of the steps: held by *BOUNDARY, FIXED
   auto prescribe = [&](std::map<int, double>& into, const Boundary& b) {
     const int dof = checked_dof(model, prepared, b.node, b.dof, b.where, "boundary condition");
     if (inactive[dof] && b.value != 0.0) refuse_inactive(dof, b.where, "boundary condition");
     into[dof] = b.value;
+    fixed[dof] = b.fixed;
   };
   std::map<int, double> model_level;
   for (int dof = 0; dof < prepared.active_dofs(); ++dof)
@@ -126,15 +155,32 @@ std::vector<StepConditions> accumulate_step_conditions(const Model& model,
 
   std::map<int, double> prescribed = model_level;
   std::map<int, double> nodal_loads;
+  // Loads on the reference nodes of distributing couplings, carried to their surfaces.
+  const std::vector<DistributingTransfer> transfers = distributing_transfers(model, prepared);
+  std::map<std::pair<int, int>, std::pair<double, SourceLoc>> reference_loads;
   std::map<std::pair<int, int>, DistributedLoad> pressures;
+  std::map<std::pair<int, Vec3>, BodyLoad> body_loads;  // (element, gravity direction or none)
   std::vector<StepConditions> out;
   out.reserve(model.steps.size());
   for (const Step& step : model.steps) {
-    if (step.boundary_op_new) prescribed = model_level;
-    if (step.cload_op_new) nodal_loads.clear();
-    if (step.dload_op_new) pressures.clear();
+    if (step.boundary_op_new) {
+      prescribed = model_level;
+      fixed.clear();
+    }
+    if (step.cload_op_new) {
+      nodal_loads.clear();
+      reference_loads.clear();
+    }
+    if (step.dload_op_new) {
+      pressures.clear();
+      body_loads.clear();
+    }
     for (const Boundary& b : step.boundaries) prescribe(prescribed, b);
     for (const ConcentratedLoad& c : step.cloads) {
+      if (is_reference_node(transfers, c.node)) {
+        reference_loads[{c.node, c.dof}] = {c.value, c.where};
+        continue;
+      }
       const int dof = checked_dof(model, prepared, c.node, c.dof, c.where, "concentrated load");
       if (inactive[dof]) refuse_inactive(dof, c.where, "concentrated load");
       nodal_loads[dof] = c.value;
@@ -153,10 +199,20 @@ std::vector<StepConditions> accumulate_step_conditions(const Model& model,
                          std::to_string(d.face));
       pressures[{d.element, d.face}] = d;
     }
+    for (const BodyLoad& b : step.body_loads) {
+      if (b.element < 0 || b.element >= model.element_count())
+        throw InputError(b.where, "body load on an undefined element");
+      const Vec3 key = b.kind == BodyLoad::Kind::Gravity ? b.direction : Vec3{0.0, 0.0, 0.0};
+      body_loads[{b.element, key}] = b;
+    }
     StepConditions conditions;
     conditions.prescribed = to_vector(prescribed);
-    conditions.nodal_loads = to_vector(nodal_loads);
+    for (const auto& [dof, held] : fixed)
+      if (held && prescribed.count(dof) != 0) conditions.fixed.push_back(dof);
+    conditions.nodal_loads = to_vector(with_distributed(
+        model, prepared, nodal_loads, distribute_reference_loads(transfers, reference_loads)));
     for (const auto& entry : pressures) conditions.pressures.push_back(entry.second);
+    for (const auto& entry : body_loads) conditions.body_loads.push_back(entry.second);
     out.push_back(std::move(conditions));
   }
   return out;

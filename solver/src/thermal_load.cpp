@@ -7,9 +7,7 @@ namespace styk::solver_detail {
 
 std::vector<std::vector<double>> step_temperature_changes(const Model& model) {
   const int nodes = model.node_count();
-  std::vector<double> initial(nodes, 0.0);
-  for (const NodalTemperature& t : model.initial_temperatures)
-    if (t.node >= 0 && t.node < nodes) initial[t.node] = t.value;
+  const std::vector<double> initial = initial_node_temperatures(model);
 
   std::vector<double> current = initial;
   std::vector<std::vector<double>> out;
@@ -32,20 +30,20 @@ std::vector<std::vector<double>> step_temperature_changes(const Model& model) {
   return out;
 }
 
-void element_temperature_changes(const Model& model, int e, const std::vector<double>& nodal_dT,
-                                 Eigen::VectorXd& dT_e) {
-  const int n = model.elements[e].node_count;
-  const int* nodes = model.element_nodes(e);
-  dT_e.resize(n);
-  for (int k = 0; k < n; ++k) dT_e(k) = nodal_dT[nodes[k]];
+std::vector<std::vector<double>> step_temperatures(const Model& model) {
+  const std::vector<double> initial = initial_node_temperatures(model);
+  std::vector<std::vector<double>> out = step_temperature_changes(model);
+  for (std::vector<double>& T : out)
+    for (std::size_t n = 0; n < T.size(); ++n) T[n] += initial[n];
+  return out;
 }
 
-std::vector<double> assemble_thermal_load(const Model& model, const PreparedModel& prepared,
-                                          const std::vector<double>& nodal_dT, int threads) {
+std::vector<double> assemble_eigenstrain_load(const Model& model, const PreparedModel& prepared,
+                                              const ElementStates& states, int threads) {
   threads = resolve_threads(threads);
   struct Scratch {
     ElementGeometry geometry;
-    Eigen::VectorXd dT, fe;
+    Eigen::VectorXd fe;
     std::vector<int> dofs;
     std::vector<double> f;  // this worker's share of the global vector
   };
@@ -54,12 +52,11 @@ std::vector<double> assemble_thermal_load(const Model& model, const PreparedMode
     Scratch& s = scratch[worker];
     if (s.f.empty()) s.f.assign(prepared.active_dofs(), 0.0);
     for (int e = begin; e < end; ++e) {
-      element_temperature_changes(model, e, nodal_dT, s.dT);
-      if (s.dT.isZero(0.0)) continue;  // no change, no load (and no *EXPANSION needed)
+      if (!states.loaded(e)) continue;  // no change, no load (and no *EXPANSION needed)
       element_geometry(model, e, s.geometry);
       const ElementOptions options{model.sections[model.elements[e].section].selective_volumetric};
-      prepared.formulation[e]->thermal_load(s.geometry, *prepared.material[e],
-                                            prepared.rule_kind[e], s.dT, s.fe, options);
+      prepared.formulation[e]->eigenstrain_load(s.geometry, states.law(e), prepared.rule_kind[e],
+                                                s.fe, options, states.initial_stress(e));
       prepared.element_dofs(model, e, s.dofs);
       for (std::size_t i = 0; i < s.dofs.size(); ++i)
         s.f[s.dofs[i]] += s.fe(static_cast<Eigen::Index>(i));

@@ -10,6 +10,7 @@
 
 #include <Eigen/Core>
 
+#include "element_states.hpp"
 #include "prepared_model.hpp"
 
 namespace styk::solver_detail {
@@ -21,14 +22,15 @@ namespace styk::solver_detail {
 // T_initial first and a later value for a node overriding an earlier one.
 std::vector<std::vector<double>> step_temperature_changes(const Model& model);
 
-// Equivalent nodal forces of the thermal strain, integral of B^T D alpha dT dV, on all active
-// dofs (global directions). `nodal_dT` is indexed by model node. Throws InputError at an
-// element's line when its material has no *EXPANSION but its nodes see a temperature change.
-std::vector<double> assemble_thermal_load(const Model& model, const PreparedModel& prepared,
-                                          const std::vector<double>& nodal_dT, int threads);
+// Per Model::steps[k]: the absolute temperature T_step per model node, or an empty vector when it
+// equals the initial temperature everywhere (the changes above added to the initial values).
+std::vector<std::vector<double>> step_temperatures(const Model& model);
 
-// The temperature changes of element e's nodes (dT_e, node order of the element).
-void element_temperature_changes(const Model& model, int e, const std::vector<double>& nodal_dT,
-                                 Eigen::VectorXd& dT_e);
+// Equivalent nodal forces of the eigenstrains (thermal strain and initial stresses) of the
+// elements `states` says are loaded, integral of B^T (D eps_th - sigma0) dV, on all active dofs
+// (global directions). Throws InputError at a material without *EXPANSION whose elements see a
+// temperature change.
+std::vector<double> assemble_eigenstrain_load(const Model& model, const PreparedModel& prepared,
+                                              const ElementStates& states, int threads);
 
 }  // namespace styk::solver_detail

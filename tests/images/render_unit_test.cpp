@@ -164,6 +164,34 @@ TEST(Fields, MissingDataNamesWhatExists) {
   EXPECT_THROW(render::evaluate_field(model, inc, "U", render::Averaging::None), InputError);
 }
 
+// ERR (the stress error estimate, one value per element) is drawn as an element field; an
+// increment without it names what it holds, and ERR takes no component suffix.
+TEST(Fields, StressErrorEstimatePerElement) {
+  Model model;
+  model.add_node(1, {0, 0, 0}, {});
+  model.add_node(2, {1, 0, 0}, {});
+  model.add_element(7, "T3D2", {1, 2}, {});
+  model.add_element(8, "T3D2", {2, 1}, {});
+  IncrementResult inc;
+  inc.step = 1;
+  inc.increment = 1;
+  inc.S_nodal_I = {Tensor6{}, Tensor6{}};
+  inc.ERR = {3.5, 12.25};
+  const render::ScalarField err = render::evaluate_field(model, inc, "err", render::Averaging::None);
+  EXPECT_EQ(err.location, render::FieldLocation::Element);
+  EXPECT_EQ(err.values, inc.ERR);
+  EXPECT_THROW(render::evaluate_field(model, inc, "ERR.x", render::Averaging::None), InputError);
+  inc.ERR.clear();
+  try {
+    render::evaluate_field(model, inc, "ERR", render::Averaging::None);
+    FAIL() << "no error";
+  } catch (const InputError& e) {
+    const std::string m = e.what();
+    EXPECT_NE(m.find("holds no ERR"), std::string::npos) << m;
+    EXPECT_NE(m.find("it holds: S.* (averaging I)"), std::string::npos) << m;
+  }
+}
+
 TEST(ColorScale, BandColoursAreDistinct) {
   render::ColorScale scale;
   scale.bands = render::kMaxBands;

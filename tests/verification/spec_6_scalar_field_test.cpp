@@ -174,8 +174,10 @@ TEST_F(ScalarFieldTest, HeatResultsRoundTripThroughTheFiles) {
   EXPECT_TRUE(back.results.increments.front().U.empty());
 
   Model printed = built.model;
-  printed.steps.front().outputs.push_back(
-      OutputRequest{OutputRequest::Kind::ElementPrint, "", {"HFL"}, false, {}, {}});
+  OutputRequest heat_flux;
+  heat_flux.kind = OutputRequest::Kind::ElementPrint;
+  heat_flux.vars = {"HFL"};
+  printed.steps.front().outputs.push_back(heat_flux);
   std::ostringstream dat;
   write_dat(dat, printed, results);
   EXPECT_NE(dat.str().find("\n temperatures for set NALL and time  0.1000000E+01\n\n"),

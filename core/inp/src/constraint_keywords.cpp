@@ -101,6 +101,15 @@ void DeckReader::on_transform(const KeywordLine& kw) {
   model_.transforms.push_back(std::move(transform));
 }
 
+// One term of an *EQUATION as written: its nodes (one, or a node set's nodes sorted by id), dof
+// and coefficient.
+struct WrittenTerm {
+  std::vector<int> nodes;
+  int dof = 1;
+  double coefficient = 0.0;
+  SourceLoc where;  // its data line
+};
+
 void DeckReader::on_equation(const KeywordLine& kw) {
   bool any = false;
   while (std::optional<DataLine> count_line = next_data_line()) {
@@ -110,16 +119,15 @@ void DeckReader::on_equation(const KeywordLine& kw) {
       throw InputError(count_line->where, "an equation needs at least 2 terms, read " +
                                               count_line->fields[0] +
                                               " (to prescribe a single dof use *BOUNDARY)");
-    Equation equation;
-    equation.where = count_line->where;
-    while (static_cast<std::int64_t>(equation.terms.size()) < count) {
+    std::vector<WrittenTerm> terms;
+    while (static_cast<std::int64_t>(terms.size()) < count) {
       std::optional<DataLine> line = next_data_line();
       if (!line)
         throw InputError(count_line->where, "the equation announces " + std::to_string(count) +
                                                 " terms but gives " +
-                                                std::to_string(equation.terms.size()));
+                                                std::to_string(terms.size()));
       const std::size_t n = line->fields.size();
-      const std::int64_t missing = count - static_cast<std::int64_t>(equation.terms.size());
+      const std::int64_t missing = count - static_cast<std::int64_t>(terms.size());
       if (n % 3 != 0 || n == 0 || n > 12 || static_cast<std::int64_t>(n / 3) > missing)
         throw InputError(line->where, "*EQUATION term line has " + std::to_string(n) +
                                           " fields, expected node, dof, coefficient for 1 to " +
@@ -127,45 +135,73 @@ void DeckReader::on_equation(const KeywordLine& kw) {
                                           " terms (" + std::to_string(missing) + " of " +
                                           std::to_string(count) + " terms still to come)");
       for (std::size_t f = 0; f < n; f += 3) {
-        const std::string term = "term " + std::to_string(equation.terms.size() + 1);
-        if (!looks_like_integer(line->fields[f]))
-          throw InputError(line->where, "field " + std::to_string(f + 1) + " (node of " + term +
-                                            "): expected a node id, read " +
-                                            quote(line->fields[f]) +
-                                            " (node sets are not supported in *EQUATION)");
-        EquationTerm t;
-        t.node = node_by_id(id_field(*line, f, "node of " + term), line->where, term);
+        const std::string term = "term " + std::to_string(terms.size() + 1);
+        WrittenTerm t;
+        // A node set (Abaqus) applies the equation to each of its nodes, in ascending id.
+        t.nodes = nodes_of(*line, f, "node or node set of " + term);
+        std::sort(t.nodes.begin(), t.nodes.end(),
+                  [&](int a, int b) { return model_.node_ids[a] < model_.node_ids[b]; });
         t.dof = displacement_dof(*line, f + 1, "dof of " + term);
         t.coefficient = real_field(*line, f + 2, "coefficient of " + term);
-        if (equation.terms.empty() && t.coefficient == 0.0)
+        t.where = line->where;
+        if (terms.empty() && t.coefficient == 0.0)
           throw InputError(line->where,
                            "the first coefficient of an equation must not be zero: "
                            "the first term is the dof the equation eliminates");
-        for (const EquationTerm& other : equation.terms)
-          if (other.node == t.node && other.dof == t.dof)
-            throw InputError(line->where, "node " + line->fields[f] + ", dof " +
-                                              std::to_string(t.dof) +
-                                              " appears twice in the equation");
-        equation.terms.push_back(t);
+        terms.push_back(std::move(t));
       }
     }
-    const EquationTerm& dependent = equation.terms.front();
-    for (const Equation& other : model_.equations) {
-      const EquationTerm& d = other.terms.front();
-      if (d.node == dependent.node && d.dof == dependent.dof)
-        throw InputError(equation.where,
-                         "node " + std::to_string(model_.node_ids[d.node]) + ", dof " +
-                             std::to_string(d.dof) +
-                             " is already the dependent (first) term of the equation at " +
-                             other.where.str() + "; each dof can be eliminated once");
+    // Sets of one node repeat their node; all larger sets must be equally long.
+    std::size_t copies = 1;
+    for (const WrittenTerm& t : terms) {
+      if (t.nodes.empty())
+        throw InputError(count_line->where, "*EQUATION: a node set of the equation is empty");
+      if (t.nodes.size() == 1) continue;
+      if (copies != 1 && t.nodes.size() != copies)
+        throw InputError(count_line->where,
+                         "*EQUATION: its node sets hold " + std::to_string(copies) + " and " +
+                             std::to_string(t.nodes.size()) +
+                             " nodes; the sets of one equation must be equally long (or hold "
+                             "one node, which every copy uses)");
+      copies = t.nodes.size();
     }
-    model_.equations.push_back(std::move(equation));
+    for (std::size_t c = 0; c < copies; ++c)
+      add_equation(terms, c, count_line->where);
     any = true;
   }
   if (!any)
     throw InputError(kw.where, kw.label() +
                                    " needs data lines: the number of terms, then node, "
                                    "dof, coefficient for each term");
+}
+
+void DeckReader::add_equation(const std::vector<WrittenTerm>& terms, std::size_t copy,
+                              const SourceLoc& where) {
+  Equation equation;
+  equation.where = where;
+  for (const WrittenTerm& written : terms) {
+    EquationTerm t;
+    t.node = written.nodes.size() == 1 ? written.nodes.front() : written.nodes[copy];
+    t.dof = written.dof;
+    t.coefficient = written.coefficient;
+    for (const EquationTerm& other : equation.terms)
+      if (other.node == t.node && other.dof == t.dof)
+        throw InputError(written.where, "node " + std::to_string(model_.node_ids[t.node]) +
+                                            ", dof " + std::to_string(t.dof) +
+                                            " appears twice in the equation");
+    equation.terms.push_back(t);
+  }
+  const EquationTerm& dependent = equation.terms.front();
+  for (const Equation& other : model_.equations) {
+    const EquationTerm& d = other.terms.front();
+    if (d.node == dependent.node && d.dof == dependent.dof)
+      throw InputError(equation.where,
+                       "node " + std::to_string(model_.node_ids[d.node]) + ", dof " +
+                           std::to_string(d.dof) +
+                           " is already the dependent (first) term of the equation at " +
+                           other.where.str() + "; each dof can be eliminated once");
+  }
+  model_.equations.push_back(std::move(equation));
 }
 
 }  // namespace styk::inp

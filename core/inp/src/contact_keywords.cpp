@@ -28,12 +28,6 @@ void sort_unique(std::vector<SurfaceFace>& faces) {
       faces.end());
 }
 
-// A parameter value naming a set (starts with a letter or '_') rather than giving a number.
-bool names_a_set(const std::string& value) {
-  const char c = value.empty() ? '0' : value.front();
-  return std::isalpha(static_cast<unsigned char>(c)) || c == '_';
-}
-
 // "S3" -> 3; 0 when the text is not S followed by a positive integer.
 int face_number(const std::string& label) {
   if (label.size() < 2 || label.size() > 4 || label[0] != 'S') return 0;

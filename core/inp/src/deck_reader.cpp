@@ -9,12 +9,6 @@ namespace styk::inp {
 namespace {
 constexpr bool kData = true;
 constexpr bool kNoData = false;
-
-// Set names start with a letter or '_'; anything else in an id-or-set field is read as an id.
-bool names_a_set(const std::string& text) {
-  const char c = text.empty() ? '0' : text.front();
-  return (c >= 'A' && c <= 'Z') || (c >= 'a' && c <= 'z') || c == '_';
-}
 }  // namespace
 
 const std::vector<DeckReader::KeywordSpec>& DeckReader::keywords() {
@@ -50,7 +44,8 @@ const std::vector<DeckReader::KeywordSpec>& DeckReader::keywords() {
        S::Model,
        {{"ELSET", true, V::Required},
         {"MATERIAL", true, V::Required},
-        {"TECHNIQUE", false, V::Required}},  // Styk-only (B-bar)
+        {"TECHNIQUE", false, V::Required},  // Styk-only (B-bar)
+        {"ORIENTATION", false, V::Required}},
        &DeckReader::on_solid_section,
        kData},
       {"BEAM SECTION",
@@ -65,7 +60,11 @@ const std::vector<DeckReader::KeywordSpec>& DeckReader::keywords() {
         {"NODAL THICKNESS", false, V::None}},
        &DeckReader::on_beam_section,
        kData},
-      {"BOUNDARY", S::Anywhere, {{"OP", false, V::Required}}, &DeckReader::on_boundary, kData},
+      {"BOUNDARY",
+       S::Anywhere,
+       {{"OP", false, V::Required}, {"FIXED", false, V::None}},
+       &DeckReader::on_boundary,
+       kData},
       {"STEP",
        S::Model,
        {{"NAME", false, V::Required}, {"NLGEOM", false, V::Optional}, {"INC", false, V::Required}},
@@ -78,18 +77,52 @@ const std::vector<DeckReader::KeywordSpec>& DeckReader::keywords() {
        kData},
       {"CLOAD", S::Step, {{"OP", false, V::Required}}, &DeckReader::on_cload, kData},
       {"DLOAD", S::Step, {{"OP", false, V::Required}}, &DeckReader::on_dload, kData},
+      // Surface loads and state changes of a step (load_keywords.cpp)
+      {"DSLOAD", S::Step, {{"OP", false, V::Required}}, &DeckReader::on_dsload, kData},
+      {"CHANGE SOLID SECTION",
+       S::Step,
+       {{"ELSET", true, V::Required}, {"MATERIAL", true, V::Required}},
+       &DeckReader::on_change_solid_section,
+       kData},
       {"NODE PRINT",
        S::Step,
-       {{"NSET", false, V::Required}, {"TOTALS", false, V::Required}},
+       {{"NSET", false, V::Required},
+        {"TOTALS", false, V::Required},
+        {"GLOBAL", false, V::Required},
+        {"FREQUENCY", false, V::Required}},
        &DeckReader::on_node_print,
        kData},
       {"EL PRINT",
        S::Step,
-       {{"ELSET", false, V::Required}, {"POSITION", false, V::Required}},
+       {{"ELSET", false, V::Required},
+        {"POSITION", false, V::Required},
+        {"TOTALS", false, V::Required},
+        {"GLOBAL", false, V::Required},
+        {"FREQUENCY", false, V::Required}},
        &DeckReader::on_el_print,
        kData},
-      {"NODE FILE", S::Step, {{"NSET", false, V::Required}}, &DeckReader::on_node_file, kData},
-      {"EL FILE", S::Step, {{"ELSET", false, V::Required}}, &DeckReader::on_el_file, kData},
+      {"NODE FILE",
+       S::Step,
+       {{"NSET", false, V::Required},
+        {"GLOBAL", false, V::Required},
+        {"FREQUENCY", false, V::Required}},
+       &DeckReader::on_node_file,
+       kData},
+      {"EL FILE",
+       S::Step,
+       {{"ELSET", false, V::Required},
+        {"GLOBAL", false, V::Required},
+        {"FREQUENCY", false, V::Required}},
+       &DeckReader::on_el_file,
+       kData},
+      {"SECTION PRINT",
+       S::Step,
+       {{"SURFACE", true, V::Required},
+        {"NAME", true, V::Required},
+        {"FREQUENCYF", false, V::Required},
+        {"FREQUENCY", false, V::Required}},
+       &DeckReader::on_section_print,
+       kData},
       {"END STEP", S::Step, {}, &DeckReader::on_end_step, kNoData},
       // Contact (contact_keywords.cpp)
       {"SURFACE",
@@ -139,10 +172,40 @@ const std::vector<DeckReader::KeywordSpec>& DeckReader::keywords() {
        &DeckReader::on_transform,
        kData},
       {"EQUATION", S::Model, {}, &DeckReader::on_equation, kData},
+      // Ties, couplings, MPCs and pre-tension (tie_keywords.cpp, coupling_keywords.cpp)
+      {"TIE",
+       S::Model,
+       {{"NAME", true, V::Required},
+        {"POSITION TOLERANCE", false, V::Required},
+        {"ADJUST", false, V::Required},
+        {"CYCLIC SYMMETRY", false, V::None},
+        {"MULTISTAGE", false, V::None},
+        {"FLUID PERIODIC", false, V::None},
+        {"FLUID CYCLIC", false, V::None}},
+       &DeckReader::on_tie,
+       kData},
+      {"COUPLING",
+       S::Model,
+       {{"REF NODE", true, V::Required},
+        {"SURFACE", true, V::Required},
+        {"CONSTRAINT NAME", true, V::Required},
+        {"ORIENTATION", false, V::Required}},
+       &DeckReader::on_coupling,
+       kNoData},
+      {"KINEMATIC", S::Model, {}, &DeckReader::on_coupling_kind, kData},
+      {"DISTRIBUTING", S::Model, {}, &DeckReader::on_coupling_kind, kData},
+      {"MPC", S::Model, {}, &DeckReader::on_mpc, kData},
+      {"PRE-TENSION SECTION",
+       S::Model,
+       {{"SURFACE", false, V::Required},
+        {"NODE", true, V::Required},
+        {"ELEMENT", false, V::Required}},
+       &DeckReader::on_pretension_section,
+       kData},
       // Temperatures (thermal_keywords.cpp)
       {"INITIAL CONDITIONS",
        S::Model,
-       {{"TYPE", true, V::Required}},
+       {{"TYPE", true, V::Required}, {"USER", false, V::None}},
        &DeckReader::on_initial_conditions,
        kData},
       {"TEMPERATURE", S::Step, {{"OP", false, V::Required}}, &DeckReader::on_temperature, kData},
@@ -206,6 +269,10 @@ void DeckReader::dispatch(const KeywordLine& kw) {
                                    ", *INCLUDE; see docs/input.md)");
   }
   if (spec->scope != Scope::Material) material_ = -1;
+  if (kw.name != "KINEMATIC" && kw.name != "DISTRIBUTING" && coupling_open_)
+    throw InputError(kw.where, "*COUPLING " + model_.couplings.back().name + " (at " +
+                                   model_.couplings.back().where.str() +
+                                   ") must be followed directly by *KINEMATIC or *DISTRIBUTING");
   if (spec->scope != Scope::Interaction) interaction_.clear();
   switch (spec->scope) {
     case Scope::Model:
@@ -289,11 +356,11 @@ std::optional<DataLine> DeckReader::single_data_line(const KeywordLine& kw, bool
 std::string DeckReader::set_name(const KeywordLine& kw, const char* param) const {
   const Parameter* p = kw.find(param);
   const std::string name = normalize_name(p->value);
-  const char c = name.empty() ? '0' : name.front();
-  const bool starts_ok = (c >= 'A' && c <= 'Z') || c == '_';
-  if (!starts_ok || name.find(' ') != std::string::npos)
+  // A data field that reads as a number is an id, so such a name could never be referred to.
+  if (!names_a_set(name) || name.find(' ') != std::string::npos)
     throw InputError(kw.where, std::string(param) + "=" + p->value +
-                                   ": a set name starts with a letter and has no blanks");
+                                   ": a set name has no blanks and does not read as a number "
+                                   "(a data field that does is an id)");
   return name;
 }
 
@@ -366,6 +433,9 @@ void DeckReader::finish() {
   if (in_step_)
     throw InputError(current_step().where,
                      "the deck ends inside this step: *END STEP is missing (truncated file?)");
+  if (coupling_open_)
+    throw InputError(model_.couplings.back().where,
+                     "*COUPLING needs *KINEMATIC or *DISTRIBUTING right after it");
   if (model_.node_count() == 0) throw InputError(deck, "the deck defines no nodes (*NODE)");
   if (model_.element_count() == 0)
     throw InputError(deck, "the deck defines no elements (*ELEMENT)");
@@ -374,6 +444,7 @@ void DeckReader::finish() {
   check_field_kinds();  // includes the materials' *ELASTIC / *CONDUCTIVITY checks
   assign_sections();
   resolve_contact_references();
+  resolve_constraint_references();
 }
 
 void DeckReader::assign_sections() {
@@ -388,6 +459,10 @@ void DeckReader::assign_sections() {
                                           ", which is not defined; materials: " +
                                           (names.empty() ? "none are defined" : names));
     }
+    if (!section.orientation.empty() && model_.orientations.count(section.orientation) == 0)
+      throw InputError(section.where, "*SOLID SECTION names ORIENTATION=" + section.orientation +
+                                          ", which is not defined; orientations: " +
+                                          some_names(model_.orientations));
     const ElementSet* set = model_.find_elset(section.elset);
     if (!set)
       throw InputError(section.where,

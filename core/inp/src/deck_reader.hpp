@@ -1,11 +1,11 @@
 // DeckReader: the state of reading one deck into a Model. The keyword table (deck_reader.cpp)
 // checks where a keyword may appear and which parameters it takes, then calls one handler per
 // keyword; the handlers live in mesh_keywords.cpp, property_keywords.cpp, beam_keywords.cpp,
-// step_keywords.cpp,
-// contact_keywords.cpp, constraint_keywords.cpp, thermal_keywords.cpp and
-// scalar_keywords.cpp.
+// material_keywords.cpp, step_keywords.cpp, contact_keywords.cpp, constraint_keywords.cpp,
+// thermal_keywords.cpp and scalar_keywords.cpp (and the other *_keywords.cpp files).
 #pragma once
 
+#include <map>
 #include <optional>
 #include <string>
 #include <vector>
@@ -16,6 +16,8 @@
 #include "styk/core/model.hpp"
 
 namespace styk::inp {
+
+struct WrittenTerm;  // an *EQUATION term as written (constraint_keywords.cpp)
 
 class DeckReader {
  public:
@@ -56,12 +58,19 @@ class DeckReader {
   void on_elset(const KeywordLine& kw);
   // property_keywords.cpp
   void on_material(const KeywordLine& kw);
-  void on_elastic(const KeywordLine& kw);
   void on_density(const KeywordLine& kw);
-  void on_expansion(const KeywordLine& kw);
   void on_solid_section(const KeywordLine& kw);
   // beam_keywords.cpp
   void on_beam_section(const KeywordLine& kw);
+  // material_keywords.cpp
+  void on_elastic(const KeywordLine& kw);
+  void on_expansion(const KeywordLine& kw);
+  // The rows of a material table: `count` constants (named `names` in messages) and an optional
+  // temperature per row, 8 fields per line, temperatures increasing.
+  // `lines`, when given, receives each row's first line.
+  std::vector<MaterialTableRow> read_material_table(const KeywordLine& kw, std::size_t count,
+                                                    const std::string& names,
+                                                    std::vector<SourceLoc>* lines = nullptr);
   // step_keywords.cpp
   void on_step(const KeywordLine& kw);
   void on_static(const KeywordLine& kw);
@@ -74,6 +83,11 @@ class DeckReader {
   void on_node_file(const KeywordLine& kw);
   void on_el_file(const KeywordLine& kw);
   void read_output(const KeywordLine& kw, OutputRequest::Kind kind);
+  // output_keywords.cpp
+  void on_section_print(const KeywordLine& kw);
+  void read_output_parameters(const KeywordLine& kw, OutputRequest& request) const;
+  static std::vector<std::string> element_output_variables(OutputRequest::Kind kind);
+  void complete_element_variables(const KeywordLine& kw, OutputRequest& request) const;
   // contact_keywords.cpp
   void on_surface(const KeywordLine& kw);
   void on_surface_interaction(const KeywordLine& kw);
@@ -88,6 +102,26 @@ class DeckReader {
   void on_orientation(const KeywordLine& kw);
   void on_transform(const KeywordLine& kw);
   void on_equation(const KeywordLine& kw);
+  // Adds copy `copy` of an equation whose terms may name node sets (constraint_keywords.cpp).
+  void add_equation(const std::vector<WrittenTerm>& terms, std::size_t copy,
+                    const SourceLoc& where);
+  // load_keywords.cpp
+  void read_body_load(const DataLine& line, const std::string& label);  // *DLOAD GRAV, CENTRIF
+  void on_dsload(const KeywordLine& kw);
+  void read_initial_stresses(const KeywordLine& kw);  // *INITIAL CONDITIONS, TYPE=STRESS
+  void on_change_solid_section(const KeywordLine& kw);
+  // tie_keywords.cpp (*TIE: tied contact)
+  void on_tie(const KeywordLine& kw);
+  void read_tied_contact(const KeywordLine& kw);
+  // coupling_keywords.cpp
+  void on_coupling(const KeywordLine& kw);
+  void on_coupling_kind(const KeywordLine& kw);  // *KINEMATIC, *DISTRIBUTING
+  void on_mpc(const KeywordLine& kw);
+  void on_pretension_section(const KeywordLine& kw);
+  void resolve_constraint_references();
+  // The dof of a *CLOAD line (field 2): 1..3, or a moment 4..6 on the reference node of a
+  // distributing coupling.
+  int load_dof(const DataLine& line, const std::vector<int>& nodes) const;
   // thermal_keywords.cpp
   void on_initial_conditions(const KeywordLine& kw);
   void on_temperature(const KeywordLine& kw);
@@ -133,6 +167,7 @@ class DeckReader {
   };
   std::vector<PendingClearance> clearances_;
   bool in_step_ = false;
+  bool coupling_open_ = false;  // a *COUPLING waits for its *KINEMATIC / *DISTRIBUTING
   std::string last_keyword_;  // for "takes no data lines" messages
   // Where each node was defined (file index into files_, line), for duplicate-id messages.
   std::vector<std::pair<int, int>> node_lines_;

@@ -10,6 +10,20 @@ namespace {
 // Abaqus data lines hold at most 16 entries; a full line continues on the next one.
 constexpr std::size_t kEntriesPerLine = 16;
 
+// Calls visit(id) for first, first + step, ... <= last, without overflowing near the Id limit.
+template <class Visit>
+void for_each_generated(Id first, Id last, Id step, Visit&& visit) {
+  for (Id id = first;; id += step) {
+    visit(id);
+    if (last - id < step) break;
+  }
+}
+
+std::string describe_range(Id first, Id last, Id step) {
+  return std::to_string(first) + ".." + std::to_string(last) +
+         (step == 1 ? "" : " in steps of " + std::to_string(step));
+}
+
 template <class Vec>
 void sort_unique(Vec& v) {
   std::sort(v.begin(), v.end());
@@ -30,7 +44,8 @@ void DeckReader::on_node(const KeywordLine& kw) {
   NodeSet* set = kw.find("NSET") ? &nset(set_name(kw, "NSET"), kw.where) : nullptr;
   while (std::optional<DataLine> line = next_data_line()) {
     if (files_.empty() || files_.back() != line->where.file) files_.push_back(line->where.file);
-    expect_fields(*line, 2, 4, "node id, x, y, z (y and z default to 0)");
+    // CalculiX: a line with the id alone places the node at the origin.
+    expect_fields(*line, 1, 4, "node id, x, y, z (missing coordinates default to 0)");
     const Id id = id_field(*line, 0, "node id");
     Vec3 x{0.0, 0.0, 0.0};
     for (std::size_t i = 1; i < line->fields.size(); ++i)
@@ -109,10 +124,15 @@ void DeckReader::on_nset(const KeywordLine& kw) {
       if (last < first)
         throw InputError(line->where, "GENERATE range " + std::to_string(first) + ", " +
                                           std::to_string(last) + ": last is smaller than first");
-      for (Id id = first;; id += step) {  // written so that id never overflows
-        members.push_back(node_by_id(id, line->where, "NSET=" + name + ", GENERATE"));
-        if (last - id < step) break;
-      }
+      // CalculiX lets a range pass over ids that are not nodes; they are skipped. A range that
+      // names no node at all is an error.
+      const std::size_t before = members.size();
+      for_each_generated(first, last, step, [&](Id id) {
+        if (const int index = model_.node_index(id); index >= 0) members.push_back(index);
+      });
+      if (members.size() == before)
+        throw InputError(line->where, "NSET=" + name + ", GENERATE: no node has an id in " +
+                                          describe_range(first, last, step));
       continue;
     }
     for (std::size_t i = 0; i < line->fields.size(); ++i) {
@@ -140,10 +160,13 @@ void DeckReader::on_elset(const KeywordLine& kw) {
       if (last < first)
         throw InputError(line->where, "GENERATE range " + std::to_string(first) + ", " +
                                           std::to_string(last) + ": last is smaller than first");
-      for (Id id = first;; id += step) {  // written so that id never overflows
-        members.push_back(element_by_id(id, line->where, "ELSET=" + name + ", GENERATE"));
-        if (last - id < step) break;
-      }
+      const std::size_t before = members.size();
+      for_each_generated(first, last, step, [&](Id id) {
+        if (const int index = model_.element_index(id); index >= 0) members.push_back(index);
+      });
+      if (members.size() == before)
+        throw InputError(line->where, "ELSET=" + name + ", GENERATE: no element has an id in " +
+                                          describe_range(first, last, step));
       continue;
     }
     for (std::size_t i = 0; i < line->fields.size(); ++i) {

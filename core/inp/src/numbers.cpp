@@ -114,6 +114,14 @@ std::int64_t integer_value(const std::string& text, const std::string& what,
   return value;
 }
 
+bool looks_like_number(const std::string& text) {
+  double value = 0.0;
+  const std::string why = to_real(text, value);
+  return why.empty() || why.rfind("out of range", 0) == 0 || why.rfind("expected a finite", 0) == 0;
+}
+
+bool names_a_set(const std::string& text) { return !text.empty() && !looks_like_number(text); }
+
 bool looks_like_integer(const std::string& text) {
   std::size_t i = (!text.empty() && (text[0] == '+' || text[0] == '-')) ? 1 : 0;
   if (i == text.size()) return false;

@@ -28,5 +28,11 @@ std::int64_t integer_value(const std::string& text, const std::string& what,
 
 // True when the text is an optionally signed run of digits (an id rather than a set name).
 bool looks_like_integer(const std::string& text);
+// True when the text reads as a (finite or not) number: "12", "-1.5", "2e3".
+bool looks_like_number(const std::string& text);
+// A data field that names a set rather than giving an id: anything that does not read as a
+// number. CalculiX set names may start with a digit ("1E"), so the first character decides
+// nothing; a name that reads as a number ("12", "1E5") cannot be told from an id.
+bool names_a_set(const std::string& text);
 
 }  // namespace styk::inp

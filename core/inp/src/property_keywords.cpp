@@ -1,4 +1,4 @@
-// *MATERIAL, *ELASTIC, *DENSITY, *EXPANSION, *SOLID SECTION.
+// *MATERIAL, *DENSITY, *SOLID SECTION (*ELASTIC and *EXPANSION: material_keywords.cpp).
 #include "deck_reader.hpp"
 #include "numbers.hpp"
 
@@ -25,24 +25,6 @@ void DeckReader::on_material(const KeywordLine& kw) {
   material_ = static_cast<int>(model_.materials.size()) - 1;
 }
 
-void DeckReader::on_elastic(const KeywordLine& kw) {
-  Material& m = current_material(kw);
-  if (const Parameter* type = kw.find("TYPE"); type && normalize_name(type->value) != "ISOTROPIC")
-    throw InputError(kw.where, "*ELASTIC, TYPE=" + type->value +
-                                   " is not supported; Styk reads TYPE=ISOTROPIC only");
-  if (m.young) throw InputError(kw.where, "material " + m.name + " has two *ELASTIC blocks");
-  const std::optional<DataLine> line = single_data_line(kw, true, "E, nu");
-  expect_fields(*line, 2, 2, "E, nu (temperature-dependent data is not supported)");
-  const double young = real_field(*line, 0, "Young's modulus E");
-  const double poisson = real_field(*line, 1, "Poisson's ratio nu");
-  if (young <= 0.0)
-    throw InputError(line->where, "Young's modulus must be positive, read " + line->fields[0]);
-  if (poisson <= -1.0 || poisson >= 0.5)
-    throw InputError(line->where, "Poisson's ratio must lie in (-1, 0.5), read " + line->fields[1]);
-  m.young = young;
-  m.poisson = poisson;
-}
-
 void DeckReader::on_density(const KeywordLine& kw) {
   Material& m = current_material(kw);
   const std::optional<DataLine> line = single_data_line(kw, true, "density");
@@ -51,18 +33,6 @@ void DeckReader::on_density(const KeywordLine& kw) {
   if (rho <= 0.0)
     throw InputError(line->where, "density must be positive, read " + line->fields[0]);
   m.density = rho;
-}
-
-void DeckReader::on_expansion(const KeywordLine& kw) {
-  Material& m = current_material(kw);
-  if (const Parameter* type = kw.find("TYPE"); type && normalize_name(type->value) != "ISO")
-    throw InputError(kw.where, "*EXPANSION, TYPE=" + type->value +
-                                   " is not supported; Styk reads TYPE=ISO only");
-  if (const Parameter* zero = kw.find("ZERO"))
-    m.expansion_reference = real_value(zero->value, "ZERO= of *EXPANSION", kw.where);
-  const std::optional<DataLine> line = single_data_line(kw, true, "alpha");
-  expect_fields(*line, 1, 1, "alpha (temperature-dependent data is not supported)");
-  m.expansion = real_field(*line, 0, "expansion coefficient alpha");
 }
 
 void DeckReader::on_solid_section(const KeywordLine& kw) {
@@ -78,6 +48,9 @@ void DeckReader::on_solid_section(const KeywordLine& kw) {
                                      " is not known; Styk reads FULL (default) or SELECTIVE");
     section.selective_volumetric = value == "SELECTIVE";
   }
+  // The material axes: an *ORIENTATION, which may be defined later (checked in assign_sections).
+  if (const Parameter* orientation = kw.find("ORIENTATION"))
+    section.orientation = normalize_name(orientation->value);
   if (const std::optional<DataLine> line = single_data_line(kw, false, "thickness")) {
     expect_fields(*line, 1, 1, "thickness");
     const double t = real_field(*line, 0, "thickness");

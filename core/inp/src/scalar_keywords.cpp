@@ -44,8 +44,9 @@ std::string what_step_takes(StepKind kind) {
 // The output variables of *NODE PRINT / *EL PRINT / *NODE FILE / *EL FILE per step kind
 // (*CONTACT PRINT's own variables belong to mechanical steps).
 const std::vector<std::string>& variables(StepKind kind) {
-  static const std::vector<std::string> kStatic = {"U",  "RF", "UR",   "RM",   "S",      "E",
-                                                   "SF", "SM", "CSTR", "CDIS", "CSTATUS"};
+  static const std::vector<std::string> kStatic = {
+      "U",   "RF",  "UR",  "RM",   "S",   "E",   "SF",  "SM",  "CSTR", "CDIS",  "CSTATUS",
+      "ENER", "ELSE", "EVOL", "CENT", "THE", "ERR", "NOE", "SOF", "SOM", "SOAREA"};
   static const std::vector<std::string> kHeat = {"NT", "RFL", "HFL"};
   static const std::vector<std::string> kElectric = {"EPOT", "RECUR", "ECD"};
   return kind == StepKind::HeatTransfer         ? kHeat
@@ -235,7 +236,7 @@ void DeckReader::check_field_kinds() {
     needs_electric |= step.kind == StepKind::ElectricConduction;
   }
   for (const Material& m : model_.materials) {
-    if (needs_elastic && !m.young)
+    if (needs_elastic && !m.has_elasticity())
       throw InputError(m.where, "material " + m.name + " has no *ELASTIC constants");
     if (needs_heat && !m.conductivity)
       throw InputError(m.where, "material " + m.name +

@@ -107,6 +107,11 @@ void DeckReader::on_end_step(const KeywordLine& kw) {
 
 void DeckReader::on_boundary(const KeywordLine& kw) {
   const bool fresh = op_new(kw, in_step_);
+  // FIXED: hold the displacement of the end of the previous step (CalculiX), step data only.
+  const bool fixed = kw.find("FIXED") != nullptr;
+  if (fixed && !in_step_)
+    throw InputError(kw.where, "*BOUNDARY, FIXED holds the displacements of the previous step: "
+                               "it belongs inside a step");
   std::vector<Boundary>& target = in_step_ ? current_step().boundaries : model_.boundaries;
   if (in_step_ && fresh) current_step().boundary_op_new = true;
   while (std::optional<DataLine> line = next_data_line()) {
@@ -130,9 +135,15 @@ void DeckReader::on_boundary(const KeywordLine& kw) {
       throw InputError(line->where, "last dof " + std::to_string(last) +
                                         " is smaller than first dof " + std::to_string(first));
     const bool has_value = line->fields.size() > 3 && !line->fields[3].empty();
+    if (fixed && has_value)
+      throw InputError(line->where, "*BOUNDARY, FIXED takes no value: the dofs keep the "
+                                    "displacement of the end of the previous step");
+    if (fixed && last > 3)
+      throw InputError(line->where, "*BOUNDARY, FIXED holds displacements (dofs 1..3)");
     const double value = has_value ? real_field(*line, 3, "value") : 0.0;
     for (int node : nodes)
-      for (int dof = first; dof <= last; ++dof) target.push_back({node, dof, value, line->where});
+      for (int dof = first; dof <= last; ++dof)
+        target.push_back({node, dof, value, line->where, fixed});
   }
 }
 
@@ -142,7 +153,7 @@ void DeckReader::on_cload(const KeywordLine& kw) {
   while (std::optional<DataLine> line = next_data_line()) {
     expect_fields(*line, 3, 3, "node or node set, dof, value");
     const std::vector<int> nodes = nodes_of(*line, 0, "node or node set");
-    const int dof = displacement_dof(*line, 1, "dof");
+    const int dof = load_dof(*line, nodes);  // coupling_keywords.cpp: moments on couplings
     const double value = real_field(*line, 2, "value");
     for (int node : nodes) step.cloads.push_back({node, dof, value, line->where});
   }
@@ -154,11 +165,16 @@ void DeckReader::on_dload(const KeywordLine& kw) {
   while (std::optional<DataLine> line = next_data_line()) {
     // The label first: other load types (GRAV, CENTRIF, BX...) have a different field layout.
     const std::string label = line->fields.size() > 1 ? normalize_name(line->fields[1]) : "";
+    if (label == "GRAV" || label == "CENTRIF") {
+      read_body_load(*line, label);  // load_keywords.cpp
+      continue;
+    }
     const bool face_label =
         label.size() == 2 && label[0] == 'P' && label[1] >= '1' && label[1] <= '6';
     if (line->fields.size() > 1 && !face_label)
       throw InputError(line->where, "load label " + quote(line->fields[1]) +
-                                        " is not supported; Styk reads face pressures P1..P6");
+                                        " is not supported; Styk reads face pressures P1..P6, "
+                                        "GRAV and CENTRIF");
     expect_fields(*line, 3, 3, "element or element set, load label, magnitude");
     const std::vector<int> elements = elements_of(*line, 0, "element or element set");
     const double magnitude = real_field(*line, 2, "magnitude");
@@ -171,9 +187,12 @@ void DeckReader::read_output(const KeywordLine& kw, OutputRequest::Kind kind) {
   const bool nodal = kind == K::NodePrint || kind == K::NodeFile;
   // Scalar-field variables (NT, RFL, HFL heat; EPOT, RECUR, ECD electric) are matched with the
   // step's procedure once the deck is complete (scalar_keywords.cpp).
+  // Element output: ENER (energy density), ELSE (element energy), EVOL (volume), CENT (omega^2
+  // of a CENTRIF load) print; THE (thermal strain), ERR (error estimator) and NOE (no ERR) go
+  // to the results file (output_keywords.cpp checks which keyword takes which).
   const std::vector<std::string> allowed =
       nodal ? std::vector<std::string>{"U", "RF", "UR", "RM", "NT", "RFL", "EPOT", "RECUR"}
-            : std::vector<std::string>{"S", "E", "SF", "SM", "HFL", "ECD"};
+            : element_output_variables(kind);
   OutputRequest request;
   request.kind = kind;
   request.where = kw.where;
@@ -189,12 +208,7 @@ void DeckReader::read_output(const KeywordLine& kw, OutputRequest::Kind kind) {
       throw InputError(kw.where, "ELSET=" + request.set + " of " + kw.label() +
                                      " is not defined; element sets: " + some_names(model_.elsets));
   }
-  if (const Parameter* totals = kw.find("TOTALS")) {
-    const std::string value = normalize_name(totals->value);
-    if (value != "YES" && value != "NO")
-      throw InputError(kw.where, "TOTALS=" + totals->value + ": expected YES or NO");
-    request.totals = value == "YES";
-  }
+  read_output_parameters(kw, request);  // TOTALS, GLOBAL, FREQUENCY (output_keywords.cpp)
   if (const Parameter* position = kw.find("POSITION")) {  // *EL PRINT only (Abaqus spelling)
     using P = OutputRequest::Position;
     const std::string value = normalize_name(position->value);
@@ -225,6 +239,7 @@ void DeckReader::read_output(const KeywordLine& kw, OutputRequest::Kind kind) {
   if (request.vars.empty())
     throw InputError(kw.where,
                      kw.label() + " needs a data line naming the variables (" + list + ")");
+  complete_element_variables(kw, request);  // *EL FILE: S brings ERR unless NOE follows
   current_step().outputs.push_back(std::move(request));
 }
 

@@ -19,9 +19,17 @@ void read_temperatures(const DataLine& line, NodesOf&& nodes_of,
 
 void DeckReader::on_initial_conditions(const KeywordLine& kw) {
   const Parameter* type = kw.find("TYPE");
+  if (normalize_name(type->value) == "STRESS") {
+    read_initial_stresses(kw);  // load_keywords.cpp
+    return;
+  }
   if (normalize_name(type->value) != "TEMPERATURE")
     throw InputError(kw.where, "*INITIAL CONDITIONS, TYPE=" + type->value +
-                                   " is not supported; Styk reads TYPE=TEMPERATURE only");
+                                   " is not supported; Styk reads TYPE=TEMPERATURE and "
+                                   "TYPE=STRESS");
+  if (kw.find("USER"))
+    throw InputError(kw.where, "*INITIAL CONDITIONS, USER needs a user subroutine, which Styk "
+                               "does not run");
   bool any = false;
   while (std::optional<DataLine> line = next_data_line()) {
     expect_fields(*line, 2, 2, "node or node set, temperature");

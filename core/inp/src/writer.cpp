@@ -106,11 +106,7 @@ void write_beam_section(const Section& s, std::ostream& out) {
 void write_properties(const Model& model, std::ostream& out) {
   for (const Material& m : model.materials) {
     out << "*MATERIAL, NAME=" << m.name << '\n';
-    if (m.young && m.poisson)
-      out << "*ELASTIC\n" << num(*m.young) << ", " << num(*m.poisson) << '\n';
-    if (m.density) out << "*DENSITY\n" << num(*m.density) << '\n';
-    if (m.expansion)
-      out << "*EXPANSION, ZERO=" << num(m.expansion_reference) << '\n' << num(*m.expansion) << '\n';
+    inp::write_material_law(m, out);
     write_conductivity(out, "*CONDUCTIVITY", m.conductivity);
     write_conductivity(out, "*ELECTRICAL CONDUCTIVITY", m.electrical_conductivity);
   }
@@ -120,17 +116,22 @@ void write_properties(const Model& model, std::ostream& out) {
       continue;
     }
     out << "*SOLID SECTION, ELSET=" << s.elset << ", MATERIAL=" << s.material
-        << (s.selective_volumetric ? ", TECHNIQUE=SELECTIVE" : "") << '\n';
+        << (s.selective_volumetric ? ", TECHNIQUE=SELECTIVE" : "")
+        << (s.orientation.empty() ? "" : ", ORIENTATION=" + s.orientation) << '\n';
     if (s.thickness) out << num(*s.thickness) << '\n';
   }
 }
 
 void write_boundaries(const Model& model, const std::vector<Boundary>& boundaries, bool op_new,
                       std::ostream& out) {
-  if (boundaries.empty() && !op_new) return;
+  std::size_t plain = 0;  // *BOUNDARY, FIXED lines are written by write_step_changes
+  for (const Boundary& b : boundaries) plain += b.fixed ? 0 : 1;
+  if (plain == 0 && !op_new) return;
   out << "*BOUNDARY" << (op_new ? ", OP=NEW" : "") << '\n';
   for (const Boundary& b : boundaries)
-    out << model.node_ids[b.node] << ", " << b.dof << ", " << b.dof << ", " << num(b.value) << '\n';
+    if (!b.fixed)
+      out << model.node_ids[b.node] << ", " << b.dof << ", " << b.dof << ", " << num(b.value)
+          << '\n';
 }
 
 const char* solver_name(LinearSolverKind kind) {
@@ -157,6 +158,8 @@ const char* output_keyword(OutputRequest::Kind kind) {
       return "*EL FILE";
     case OutputRequest::Kind::ContactPrint:
       return "*CONTACT PRINT";
+    case OutputRequest::Kind::SectionPrint:
+      return "*SECTION PRINT";
   }
   return "";
 }
@@ -181,6 +184,7 @@ void write_step(const Model& model, const Step& step, std::ostream& out) {
     out << '\n';
   }
   write_boundaries(model, step.boundaries, step.boundary_op_new, out);
+  inp::write_step_changes(model, step, out);
   if (!step.cloads.empty() || step.cload_op_new) {
     out << "*CLOAD" << (step.cload_op_new ? ", OP=NEW" : "") << '\n';
     for (const ConcentratedLoad& c : step.cloads)
@@ -191,6 +195,7 @@ void write_step(const Model& model, const Step& step, std::ostream& out) {
     for (const DistributedLoad& d : step.dloads)
       out << model.elements[d.element].id << ", P" << d.face << ", " << num(d.magnitude) << '\n';
   }
+  inp::write_body_loads(model, step, out);
   inp::write_step_temperatures(model, step, out);
   if (!step.cfluxes.empty() || step.cflux_op_new) {
     out << (step.kind == StepKind::ElectricConduction ? "*CECUR" : "*CFLUX")
@@ -207,8 +212,15 @@ void write_step(const Model& model, const Step& step, std::ostream& out) {
     const bool nodal =
         o.kind == OutputRequest::Kind::NodePrint || o.kind == OutputRequest::Kind::NodeFile;
     out << output_keyword(o.kind);
-    if (!o.set.empty()) out << (nodal ? ", NSET=" : ", ELSET=") << o.set;
-    if (o.totals) out << ", TOTALS=YES";
+    if (o.kind == OutputRequest::Kind::SectionPrint)
+      out << ", SURFACE=" << o.set << ", NAME=" << o.name;
+    else if (!o.set.empty())
+      out << (nodal ? ", NSET=" : ", ELSET=") << o.set;
+    if (o.totals) out << (o.totals_only ? ", TOTALS=ONLY" : ", TOTALS=YES");
+    if (o.global) out << (*o.global ? ", GLOBAL=YES" : ", GLOBAL=NO");
+    if (o.frequency)
+      out << (o.kind == OutputRequest::Kind::SectionPrint ? ", FREQUENCYF=" : ", FREQUENCY=")
+          << *o.frequency;
     if (o.position == OutputRequest::Position::Centroidal) out << ", POSITION=CENTROIDAL";
     if (o.position == OutputRequest::Position::AveragedAtNodes) out << ", POSITION=AVERAGED AT NODES";
     out << '\n';
@@ -226,6 +238,7 @@ void write_inp(const Model& model, std::ostream& out) {
   write_mesh(model, out);
   write_properties(model, out);
   inp::write_contact_and_constraints(model, out);
+  inp::write_ties_and_couplings(model, out);
   write_boundaries(model, model.boundaries, false, out);
   for (const Step& step : model.steps) write_step(model, step, out);
 }

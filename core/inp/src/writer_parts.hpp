@@ -17,9 +17,20 @@ constexpr int kMaxFieldChars = 20;
 // so that CalculiX reads every deck Styk writes; those values round-trip to that rounding only.
 std::string shortest_number(double value);
 
+// *ELASTIC (type and table over temperature), *DENSITY and *EXPANSION of a material.
+void write_material_law(const Material& m, std::ostream& out);
+
 // *ORIENTATION, *SURFACE, *SURFACE INTERACTION (+ *SURFACE BEHAVIOR, *FRICTION), *CONTACT PAIR,
 // *CLEARANCE, *TRANSFORM, *EQUATION and *INITIAL CONDITIONS of the model part.
 void write_contact_and_constraints(const Model& model, std::ostream& out);
+
+// *TIE, *COUPLING (+ *KINEMATIC / *DISTRIBUTING), *MPC, *PRE-TENSION SECTION and *INITIAL
+// CONDITIONS, TYPE=STRESS of the model part (constraint_writer.cpp).
+void write_ties_and_couplings(const Model& model, std::ostream& out);
+// A step's *CHANGE SOLID SECTION and *BOUNDARY, FIXED lines (before its other boundaries).
+void write_step_changes(const Model& model, const Step& step, std::ostream& out);
+// A step's *DLOAD GRAV / CENTRIF lines.
+void write_body_loads(const Model& model, const Step& step, std::ostream& out);
 
 // The step's *TEMPERATURE block (nothing when the step has none and no OP=NEW).
 void write_step_temperatures(const Model& model, const Step& step, std::ostream& out);

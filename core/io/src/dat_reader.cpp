@@ -61,12 +61,15 @@ std::vector<DatBlock> parse_dat_blocks(std::istream& in) {
   for (int line_number = 1; std::getline(in, line); ++line_number) {
     const std::string text = trim(line);
     if (text.empty()) continue;
-    const std::size_t for_set = text.find(" for set ");
+    const bool statistics = text.rfind("statistics for surface set ", 0) == 0;
+    const std::size_t for_set =
+        statistics ? text.find(" for surface set ") : text.find(" for set ");
+    const std::size_t set_at = for_set + (statistics ? 17 : 9);
     const std::size_t and_time = text.rfind(" and time ");
     if (for_set != std::string::npos && and_time != std::string::npos && and_time > for_set) {
       DatBlock block;
       block.what = trim(text.substr(0, for_set));
-      block.set = trim(text.substr(for_set + 9, and_time - for_set - 9));
+      block.set = trim(text.substr(set_at, and_time - set_at));
       if (!parse_number(trim(text.substr(and_time + 10)), block.time))
         bad_line(line_number, "cannot read the time", line);
       blocks.push_back(std::move(block));
@@ -78,7 +81,11 @@ std::vector<DatBlock> parse_dat_blocks(std::istream& in) {
     std::istringstream tokens(text);
     std::string token;
     DatRow row;
-    const int ids = id_columns(block.what);
+    if (block.what == "statistics") {
+      double first = 0.0;
+      if (!parse_number(text.substr(0, text.find(' ')), first)) continue;  // a title line
+    }
+    const int ids = block.what == "statistics" ? 0 : id_columns(block.what);
     for (int column = 0; tokens >> token; ++column) {
       if (column < ids) {
         long long integer = 0;
@@ -91,7 +98,13 @@ std::vector<DatBlock> parse_dat_blocks(std::istream& in) {
         row.local = true;  // the last token: ccx marks a row in a node's local system
       } else {
         double value = 0.0;
-        if (!parse_number(token, value)) bad_line(line_number, "expected a number", line);
+        if (!parse_number(token, value)) {
+          // The last token may name the *ORIENTATION the element results are printed in.
+          if (row.values.empty() || (tokens >> std::ws).good())
+            bad_line(line_number, "expected a number", line);
+          row.label = token;
+          continue;
+        }
         row.values.push_back(value);
       }
     }

@@ -12,9 +12,11 @@
 #include <Eigen/Core>
 
 #include "dat_contact.hpp"
+#include "dat_extras.hpp"
 #include "dat_scalar.hpp"
 #include "fortran_format.hpp"
 #include "styk/core/local_axes.hpp"
+#include "styk/core/output_requests.hpp"
 #include "styk/io/dat_writer.hpp"
 
 namespace styk {
@@ -31,12 +33,18 @@ class DatPrinter {
  public:
   DatPrinter(std::ostream& out, const Model& model) : out_(out), model_(model) {}
 
-  void print(const IncrementResult& inc) {
+  // Prints the requests in effect in the increment's step (CalculiX: a step without requests of
+  // a kind repeats the previous step's), when FREQUENCY says the increment is due; `last` when
+  // it ends its step.
+  void print(const IncrementResult& inc, bool last) {
     if (inc.step < 1 || inc.step > static_cast<int>(model_.steps.size()))
       throw std::runtime_error("results of " + increment_label(inc) + " name step " +
                                std::to_string(inc.step) + " but the model has " +
                                std::to_string(model_.steps.size()) + " steps");
-    for (const OutputRequest& request : model_.steps[inc.step - 1].outputs) {
+    const std::size_t step = static_cast<std::size_t>(inc.step - 1);
+    if (!output_due(model_, step, inc.increment, last)) return;
+    for (const OutputRequest* each : effective_outputs(model_, step)) {
+      const OutputRequest& request = *each;
       const bool printed = request.kind == OutputRequest::Kind::NodePrint ||
                            request.kind == OutputRequest::Kind::ElementPrint;
       if (printed && inc.scalar.kind != ScalarFieldResult::Kind::None)
@@ -47,6 +55,8 @@ class DatPrinter {
         print_elements(request, inc);
       else if (request.kind == OutputRequest::Kind::ContactPrint)
         io::print_contact(out_, model_, request, inc);
+      else if (request.kind == OutputRequest::Kind::SectionPrint)
+        io::print_section(out_, request, inc);
     }
   }
 
@@ -114,11 +124,18 @@ class DatPrinter {
         throw std::runtime_error("*NODE PRINT asks for " + var + " but the results of " +
                                  increment_label(inc) + " hold no " + var + " for every node");
       }
-      header(vector->header, set, inc.total_time);
+      // TOTALS=ONLY: the sum alone (ccx prints totals of forces only).
+      if (!request.totals_only) header(vector->header, set, inc.total_time);
+      // GLOBAL=YES: global components everywhere; otherwise a *TRANSFORM node's local ones.
+      const bool global = request.global.value_or(false);
       Vec3 total{0.0, 0.0, 0.0};  // global components, as ccx sums them
       for (const int n : nodes) {
+        if (request.totals_only) {
+          for (int k = 0; k < 3; ++k) total[k] += field[n][k];
+          continue;
+        }
         write_id(model_.node_ids[n]);
-        const Eigen::Matrix3d* R = local_axes(n);
+        const Eigen::Matrix3d* R = global ? nullptr : local_axes(n);
         Vec3 shown = field[n];
         // A *TRANSFORM node: local components (rotations turn like displacements), marked " L"
         // as ccx does.
@@ -149,10 +166,15 @@ class DatPrinter {
         print_stations(request, var, set, elements, inc);
         continue;
       }
+      if (io::is_element_extra(var)) {
+        io::print_element_extra(out_, model_, request, var, set, elements, inc);
+        continue;
+      }
       if (var != "S" && var != "E")
         throw InputError(request.where, "*EL PRINT: variable " + var +
                                             " cannot be printed to the .dat file (Styk prints S, "
-                                            "E, SF and SM)");
+                                            "E, SF, SM, ENER, ELSE, EVOL and CENT)");
+      if (request.totals_only) continue;  // S and E have no totals
       const bool stress = var == "S";
       if (request.position == OutputRequest::Position::Centroidal) {
         print_centroids(var, set, elements, stress ? inc.S_centroid : inc.E_centroid, inc);
@@ -171,13 +193,24 @@ class DatPrinter {
       header(stress ? "stresses (elem, integ.pnt.,sxx,syy,szz,sxy,sxz,syz)"
                     : "strains (elem, integ.pnt.,exx,eyy,ezz,exy,exz,eyz)",
              set, inc.total_time);
+      // GLOBAL=NO (the default): an element with an *ORIENTATION prints in its material axes,
+      // the orientation's name (10 characters, padded to 20) ending the row, as ccx does.
+      const bool global = request.global.value_or(false);
       for (const int e : elements) {
+        const Orientation* orientation = global ? nullptr : orientation_of(e);
         for (int p = inc.ip_offset[e]; p < inc.ip_offset[e + 1]; ++p) {
           write_id(model_.elements[e].id);
           char point[16];
           std::snprintf(point, sizeof point, " %3d", p - inc.ip_offset[e] + 1);
           out_ << point;
-          for (const double v : field[p]) out_ << ' ' << io::fortran_e13_6(v);
+          const Tensor6 shown = orientation ? in_material_axes(*orientation, field[p], inc, p)
+                                            : field[p];
+          for (const double v : shown) out_ << ' ' << io::fortran_e13_6(v);
+          if (orientation) {
+            char name[32];
+            std::snprintf(name, sizeof name, " %-20s", orientation->name.substr(0, 10).c_str());
+            out_ << name;
+          }
           out_ << '\n';
         }
       }
@@ -246,6 +279,28 @@ class DatPrinter {
     for (const int n : nodes) write_tensor_row(model_.node_ids[n], field[n]);
   }
 
+  // The *ORIENTATION of element e's section, or nullptr.
+  const Orientation* orientation_of(int e) const {
+    const int section = model_.elements[e].section;
+    if (section < 0 || section >= static_cast<int>(model_.sections.size())) return nullptr;
+    const auto it = model_.orientations.find(model_.sections[section].orientation);
+    return it == model_.orientations.end() ? nullptr : &it->second;
+  }
+
+  // A stress or strain tensor in the orientation's axes at integration point p.
+  Tensor6 in_material_axes(const Orientation& orientation, const Tensor6& t,
+                           const IncrementResult& inc, int p) const {
+    const Vec3 at = p < static_cast<int>(inc.ip_position.size()) ? inc.ip_position[p] : Vec3{};
+    Eigen::Matrix3d R;
+    if (!local_axes_at(orientation.axes, at, R))
+      throw std::runtime_error("the material axes of orientation " + orientation.name +
+                               " are undefined at an integration point");
+    Eigen::Matrix3d g;
+    g << t[0], t[3], t[4], t[3], t[1], t[5], t[4], t[5], t[2];
+    const Eigen::Matrix3d l = R.transpose() * g * R;
+    return {l(0, 0), l(1, 1), l(2, 2), l(0, 1), l(0, 2), l(1, 2)};
+  }
+
   void write_tensor_row(Id id, const Tensor6& values) {
     write_id(id);
     for (const double v : values) out_ << ' ' << io::fortran_e13_6(v);
@@ -303,7 +358,11 @@ class DatPrinter {
 
 void write_dat(std::ostream& out, const Model& model, const Results& results) {
   DatPrinter printer(out, model);
-  for (const IncrementResult& inc : results.increments) printer.print(inc);
+  const std::vector<IncrementResult>& increments = results.increments;
+  for (std::size_t i = 0; i < increments.size(); ++i) {
+    const bool last = i + 1 == increments.size() || increments[i + 1].step != increments[i].step;
+    printer.print(increments[i], last);
+  }
 }
 
 }  // namespace styk

@@ -14,6 +14,7 @@
 #include "results_integrity.hpp"
 #include "results_open.hpp"
 #include "results_rows.hpp"
+#include "results_extras.hpp"
 #include "results_scalar.hpp"
 #include "results_schema.hpp"
 #include "results_structural.hpp"
@@ -154,6 +155,7 @@ IncrementResult read_increment(hid_t group, const std::string& label, const Mode
   io::read_contact(group, label, model, inc);
   io::read_scalar(group, label, model, inc);
   io::read_structural(group, label, model, inc);
+  io::read_extras(group, label, model, inc);
   return inc;
 }
 

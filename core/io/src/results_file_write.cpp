@@ -10,6 +10,7 @@
 #include "results_file_layout.hpp"
 #include "results_integrity.hpp"
 #include "results_rows.hpp"
+#include "results_extras.hpp"
 #include "results_scalar.hpp"
 #include "results_schema.hpp"
 #include "results_structural.hpp"
@@ -63,6 +64,8 @@ void check_sizes(const Model& model, const IncrementResult& inc) {
   if (!inc.scalar.flux_nodal.empty() && inc.scalar.flux_nodal.size() != nodes)
     complain(std::to_string(inc.scalar.flux_nodal.size()) + " nodal fluxes for " +
              std::to_string(nodes) + " nodes");
+  if (const std::string problem = io::extras_size_problem(model, inc); !problem.empty())
+    complain(problem);
   if (inc.ip_offset.empty()) {
     if (!inc.S.empty() || !inc.E.empty()) complain("integration-point values without ip_offset");
     return;
@@ -160,6 +163,7 @@ void write_increment(hid_t steps, const IncrementResult& inc) {
   io::write_contact(group.get(), inc);
   io::write_scalar(group.get(), inc);
   io::write_structural(group.get(), inc);
+  io::write_extras(group.get(), inc);
 }
 
 void write_contents(hid_t file, const Model& model, const Results& results) {

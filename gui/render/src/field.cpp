@@ -156,6 +156,7 @@ std::string drawable_data(const Model& model, const IncrementResult& inc) {
   tensors("S", {&inc.S_element_nodes, &inc.S_nodal_I, &inc.S_nodal_II, &inc.S_centroid, &inc.S});
   tensors("E", {&inc.E_element_nodes, &inc.E_nodal_I, &inc.E_nodal_II, &inc.E_centroid, &inc.E});
   if (!inc.contact.empty()) held.push_back("contact (" + join(contact_field_names(), ", ") + ")");
+  if (inc.ERR.size() == model.elements.size() && !inc.ERR.empty()) held.push_back("ERR");
   if (inc.scalar.kind == ScalarFieldResult::Kind::Temperature) held.push_back("NT, RFL, HFL.*");
   if (inc.scalar.kind == ScalarFieldResult::Kind::Potential) held.push_back("EPOT, RECUR, ECD.*");
   return held.empty() ? std::string("nothing drawable") : join(held, ", ");
@@ -266,6 +267,7 @@ std::vector<std::string> field_names() {
     }
   }
   for (const std::string& name : contact_field_names()) names.push_back(name);
+  names.push_back("ERR");
   for (const char* v : {"NT", "RFL", "EPOT", "RECUR"}) names.push_back(v);
   for (const char* v : {"HFL", "ECD"})
     for (const char* s : {"mag", "x", "y", "z"}) names.push_back(std::string(v) + "." + s);
@@ -321,6 +323,21 @@ ScalarField evaluate_field(const Model& model, const IncrementResult& inc, const
   if (quantity == "NT" || quantity == "EPOT" || quantity == "RFL" || quantity == "RECUR" ||
       quantity == "HFL" || quantity == "ECD")
     return scalar_field_quantity(model, inc, quantity, suffix, unknown);
+  // The stress error estimate of each element (*EL FILE, ERR; docs/results.md), drawn flat.
+  if (quantity == "ERR") {
+    if (!suffix.empty()) throw unknown();
+    if (inc.ERR.size() != model.elements.size() || inc.ERR.empty())
+      throw InputError({}, "step " + std::to_string(inc.step) + " increment " +
+                               std::to_string(inc.increment) +
+                               " holds no ERR (ask for it with *EL FILE, S or ERR); it holds: " +
+                               drawable_data(model, inc));
+    ScalarField field;
+    field.name = "ERR";
+    field.description = "ERR, stress error estimate (%)";
+    field.location = FieldLocation::Element;
+    field.values = inc.ERR;
+    return field;
+  }
   if (quantity == "S" || quantity == "E") {
     const bool stress = quantity == "S";
     const TensorFunction f = tensor_function(suffix, stress);

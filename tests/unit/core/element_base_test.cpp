@@ -22,7 +22,7 @@ Material steel() {
 TEST(ElementDee, IsotropicElasticity) {
   test::Tetrahedron4 e;
   Matrix6d D;
-  e.dee(steel(), D);
+  e.dee(material_point(steel()), D);
   const double E = 210000.0, nu = 0.3, c = E / ((1 + nu) * (1 - 2 * nu));
   EXPECT_NEAR(D(0, 0), c * (1 - nu), 1e-14 * E);
   EXPECT_NEAR(D(1, 2), c * nu, 1e-14 * E);
@@ -39,7 +39,7 @@ TEST(ElementDee, BadMaterialIsAnInputErrorAtTheMaterial) {
   Material m = steel();
   m.young.reset();
   try {
-    e.dee(m, D);
+    e.dee(material_point(m), D);
     FAIL() << "missing Young's modulus accepted";
   } catch (const InputError& error) {
     EXPECT_EQ(std::string(error.what()).rfind("deck.inp:12: material STEEL", 0), 0u)
@@ -48,11 +48,11 @@ TEST(ElementDee, BadMaterialIsAnInputErrorAtTheMaterial) {
   for (double nu : {0.5, -1.0, 0.7}) {
     m = steel();
     m.poisson = nu;
-    EXPECT_THROW(e.dee(m, D), InputError) << nu;
+    EXPECT_THROW(e.dee(material_point(m), D), InputError) << nu;
   }
   m = steel();
   m.young = 0.0;
-  EXPECT_THROW(e.dee(m, D), InputError);
+  EXPECT_THROW(e.dee(material_point(m), D), InputError);
 }
 
 // B for one node with dN/dx = (a, b, c): rows 11, 22, 33, 12, 13, 23 with engineering shear.
@@ -94,7 +94,7 @@ TEST(ElementTemplate, JacobianAndStrainsOfAScaledTetrahedron) {
   EXPECT_NEAR(strain(0, 0), 0.01, 1e-15);
   EXPECT_NEAR(strain(0, 5), 0.002, 1e-15);
   Matrix6d D;
-  e.dee(steel(), D);
+  e.dee(material_point(steel()), D);
   EXPECT_NEAR(stress(0, 0), D(0, 0) * 0.01, 1e-12);
   EXPECT_NEAR(stress(0, 1), D(1, 0) * 0.01, 1e-12);
   EXPECT_NEAR(stress(0, 5), D(5, 5) * 0.004, 1e-12);

@@ -174,8 +174,9 @@ TEST(ConstraintInput, EquationErrors) {
                "5, 1, 1., 6", "expected node, dof, coefficient for 1 to 2 terms");
   expect_error("equation_node.inp", base + "2\n5, 1, 1., 66, 1, -1.\n" + kStep, "5, 1, 1., 66",
                "node 66 is not defined");
+  // A node set: copy 1 pairs node 5 with itself (keyword_coverage_input_test: node sets).
   expect_error("equation_set.inp", base + "2\n5, 1, 1., TOP, 1, -1.\n" + kStep, "5, 1, 1., TOP",
-               "node sets are not supported in *EQUATION");
+               "node 5, dof 1 appears twice in the equation");
   expect_error("equation_repeat.inp", base + "2\n5, 1, 1., 5, 1, -1.\n" + kStep, "5, 1, 1., 5",
                "node 5, dof 1 appears twice in the equation");
   expect_error("equation_dependent_twice.inp",
@@ -240,8 +241,8 @@ TEST(ThermalInput, TemperatureErrors) {
   expect_error("temperature_value.inp",
                base + "*STEP\n*STATIC\n*TEMPERATURE\nTOP, hot\n*END STEP\n", "TOP, hot",
                "field 2 (temperature)");
-  expect_error("initial_type.inp", base + "*INITIAL CONDITIONS, TYPE=STRESS\n1, 0.\n" + kStep,
-               "*INITIAL CONDITIONS", "TYPE=STRESS is not supported");
+  expect_error("initial_type.inp", base + "*INITIAL CONDITIONS, TYPE=VELOCITY\n1, 0.\n" + kStep,
+               "*INITIAL CONDITIONS", "TYPE=VELOCITY is not supported");
   expect_error("initial_no_type.inp", base + "*INITIAL CONDITIONS\n1, 0.\n" + kStep,
                "*INITIAL CONDITIONS", "needs TYPE=");
   expect_error("initial_fields.inp",

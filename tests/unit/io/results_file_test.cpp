@@ -106,6 +106,48 @@ TEST(ResultsFile, IncrementWithoutIntegrationPointDataRoundTrips) {
   expect_same(read.results.increments[0], results.increments[0]);
 }
 
+// The optional element results (*EL PRINT/FILE ENER, THE, EVOL, ELSE, ERR) round-trip exactly
+// when present; an increment without them reads back with the vectors empty, and a vector of
+// the wrong length is refused.
+TEST(ResultsFile, OptionalElementResultsRoundTrip) {
+  const Model model = small_model();
+  Results results;
+  results.increments = {increment(1, 1, 1.0, model), increment(2, 1, 2.0, model)};
+  IncrementResult& full = results.increments[0];
+  for (int p = 0; p < 11; ++p) {
+    full.ENER.push_back(0.5 * p);
+    full.THE.push_back({1e-5 * p, 2e-5, 3e-5, 0.0, 0.0, -1e-6});
+  }
+  full.element_volume = {1.0, 0.125};
+  full.element_energy = {3.5, 0.0};
+  full.ERR = {12.5, 0.75};
+  const std::string path = io_test::fresh_dir("extras") + "/r.styk.h5";
+  write_results_file(path, model, results);
+  const ResultsFileContents read = read_results_file(path);
+  ASSERT_EQ(read.results.increments.size(), 2u);
+  const IncrementResult& back = read.results.increments[0];
+  EXPECT_EQ(back.ENER, full.ENER);
+  EXPECT_EQ(back.THE, full.THE);
+  EXPECT_EQ(back.element_volume, full.element_volume);
+  EXPECT_EQ(back.element_energy, full.element_energy);
+  EXPECT_EQ(back.ERR, full.ERR);
+  const IncrementResult& bare = read.results.increments[1];
+  EXPECT_TRUE(bare.ENER.empty() && bare.THE.empty() && bare.element_volume.empty() &&
+              bare.element_energy.empty() && bare.ERR.empty());
+
+  // One ERR value for two elements: refused before the file is touched.
+  full.ERR = {12.5};
+  const std::string bad = io_test::fresh_dir("extras_bad") + "/r.styk.h5";
+  try {
+    write_results_file(bad, model, results);
+    ADD_FAILURE() << "an ERR vector of the wrong length was written";
+  } catch (const std::runtime_error& e) {
+    EXPECT_NE(std::string(e.what()).find("ERR has 1 rows, expected 2"), std::string::npos)
+        << e.what();
+  }
+  EXPECT_FALSE(io_test::file_exists(bad));
+}
+
 TEST(ResultsFile, MismatchedResultsThrowAndLeaveExistingFileUntouched) {
   const Model model = io_test::unit_cube();
   const std::string path = io_test::fresh_dir("mismatch") + "/r.styk.h5";

@@ -68,7 +68,8 @@ TEST(CholmodSparseColumns, RestrictedSubstitutionsMatchTheFullSolve) {
     const solver_detail::SolverContext context{model, prepared, phases, threads};
     // prepare() releases K's values: one matrix per solver.
     solver_detail::StiffnessMatrix K(model, prepared, 1);
-    solver_detail::assemble_stiffness(model, prepared, K, 1);
+    const solver_detail::ElementStates states(model, prepared, 0, nullptr);  // step 1's materials
+    solver_detail::assemble_stiffness(model, prepared, states, K, 1);
     const std::unique_ptr<LinearSolver> solver = solver_detail::make_cholmod_solver(context);
     solver->prepare(K, solver_detail::partition_dofs(dofs, clamped));
 

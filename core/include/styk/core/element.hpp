@@ -16,6 +16,10 @@
 // - the section's ElementOptions::selective_volumetric switches on mean-dilatation B-bar for any
 //   element (the volumetric strain is replaced by its element average).
 //
+// The material reaches the template methods as an ElementMaterial (styk/core/constitutive.hpp):
+// the law is evaluated point by point there (temperature tables, material axes) and handed to
+// the DEE hook as a MaterialPoint; elements never read the material's constants.
+//
 // Conventions
 // - Natural coordinates (xi, eta, zeta) in [-1, 1]^3.
 // - Strain/stress component order 11, 22, 33, 12, 13, 23 (Abaqus/CalculiX). B uses engineering
@@ -31,8 +35,9 @@
 //   shells. Element matrices are dense in the element's own dof order: node 0 (its node_dofs()
 //   components), node 1, ... A node of the model carries the most dofs any of its elements has.
 // - Structural elements (beams) integrate section resultants, not a 3D stress field: they override
-//   the template methods themselves (stiffness, thermal_load, internal_force, pressure_load,
-//   strains_stresses), which are virtual for that reason; continuum elements keep the defaults.
+//   the template methods themselves (stiffness, eigenstrain_load, body_load, pressure_load,
+//   strains_stresses, section_resultants), which are virtual for that reason; continuum elements
+//   keep the defaults.
 #pragma once
 
 #include <array>
@@ -41,11 +46,10 @@
 
 #include <Eigen/Core>
 
+#include "styk/core/constitutive.hpp"
 #include "styk/core/model.hpp"
 
 namespace styk {
-
-using Matrix6d = Eigen::Matrix<double, 6, 6>;
 
 // The largest number of dofs a node carries (3 translations + 3 rotations).
 inline constexpr int kMaxNodeDofs = 6;
@@ -135,8 +139,10 @@ class TElement {
   // --- BEE: strain-displacement matrix (6 x 3n) from the Cartesian derivatives dNdx (n x 3) ----
   virtual void bee(const Eigen::Ref<const Eigen::MatrixXd>& dNdx, Eigen::Ref<Eigen::MatrixXd> B) const;
 
-  // --- DEE: constitutive matrix from the material (isotropic linear elastic by default) --------
-  virtual void dee(const Material& material, Matrix6d& D) const;
+  // --- DEE: the element's constitutive matrix from the material's 3D law at a point ------------
+  // Default: the law itself (solids). Plane stress condenses sigma33 = sigma13 = sigma23 = 0,
+  // trusses keep the uniaxial modulus.
+  virtual void dee(const MaterialPoint& material, Matrix6d& D) const;
 
   // --- formulation hooks (defaults: none) ------------------------------------------------------
   // Number of internal incompatible-mode parameters (condensed statically inside the element).
@@ -165,8 +171,9 @@ class TElement {
                                std::vector<Vec3>& points,
                                std::vector<Eigen::Vector3d>& weighted_normals) const;
   // Completes the engineering strain at a point with what the formulation leaves to a stress
-  // condition (plane stress: eps33 from sigma33 = 0). thermal_strain = alpha dT at the point.
-  virtual void complete_strain(const Material& material, double thermal_strain,
+  // condition (plane stress: eps33 from sigma33 = 0), from the material's 3D law and thermal
+  // strain at the point.
+  virtual void complete_strain(const MaterialPoint& material,
                                Eigen::Matrix<double, 6, 1>& engineering) const;
 
   // --- section resultants (structural elements; none for continuum elements) -------------------
@@ -174,11 +181,10 @@ class TElement {
   virtual int section_stations(RuleKind kind) const;
   // Section forces (stations x 3: SF1 axial, SF2 and SF3 transverse shear along section axes 2
   // and 1) and moments (stations x 3: SM1, SM2 bending about axes 1 and 2, SM3 torque) in the
-  // displaced state u (m), with the thermal strain of `nodal_dT` (n, may be null) removed.
-  virtual void section_resultants(const ElementGeometry& g, const Material& material, RuleKind kind,
-                                  const Eigen::Ref<const Eigen::VectorXd>& u,
-                                  Eigen::MatrixXd& forces, Eigen::MatrixXd& moments,
-                                  const Eigen::VectorXd* nodal_dT = nullptr) const;
+  // displaced state u (m), with the thermal strain of the material's temperatures removed.
+  virtual void section_resultants(const ElementGeometry& g, const ElementMaterial& material,
+                                  RuleKind kind, const Eigen::Ref<const Eigen::VectorXd>& u,
+                                  Eigen::MatrixXd& forces, Eigen::MatrixXd& moments) const;
 
   // --- template methods (virtual for structural elements; see the file comment) ----------------
   // Sizes: n = node_count(), m = node_dofs() * n element dofs (3n for continuum elements).
@@ -188,23 +194,38 @@ class TElement {
                   Eigen::Ref<Eigen::MatrixXd> dNdx, int point) const;
 
   // Stiffness K (m x m) with the given rule (incompatible modes condensed, stabilisation added).
-  virtual void stiffness(const ElementGeometry& g, const Material& material, RuleKind kind,
+  virtual void stiffness(const ElementGeometry& g, const ElementMaterial& material, RuleKind kind,
                          Eigen::MatrixXd& K, const ElementOptions& options = {}) const;
 
-  // Thermal load f (m) = integral of B^T D eps_th dV, eps_th = alpha dT (1, 1, 1, 0, 0, 0), with
-  // dT interpolated from the nodal temperature changes `nodal_dT` (n; T - T_initial, so the
-  // constant coefficient alpha = *EXPANSION needs no reference temperature). A material without
-  // *EXPANSION is an InputError unless every dT is zero.
-  virtual void thermal_load(const ElementGeometry& g, const Material& material, RuleKind kind,
-                            const Eigen::Ref<const Eigen::VectorXd>& nodal_dT, Eigen::VectorXd& f,
-                            const ElementOptions& options = {}) const;
+  // Equivalent nodal forces f (m) of the eigenstrains: integral of B^T (D eps_th - sigma0) dV,
+  // with the thermal strain eps_th of `material` (its temperatures; zero without) and the initial
+  // stress sigma0 at the integration points of `kind` (`initial_stress`: one row per point,
+  // components 11, 22, 33, 12, 13, 23; may be null). A material without *EXPANSION is an
+  // InputError where the temperature differs from the initial one.
+  virtual void eigenstrain_load(const ElementGeometry& g, const ElementMaterial& material,
+                                RuleKind kind, Eigen::VectorXd& f,
+                                const ElementOptions& options = {},
+                                const Eigen::MatrixXd* initial_stress = nullptr) const;
+  // The thermal part alone from temperature changes `nodal_dT` (n; T - T_initial) of a constant
+  // material: alpha dT (1, 1, 1, 0, 0, 0) interpolated with N.
+  void thermal_load(const ElementGeometry& g, const Material& material, RuleKind kind,
+                    const Eigen::Ref<const Eigen::VectorXd>& nodal_dT, Eigen::VectorXd& f,
+                    const ElementOptions& options = {}) const;
 
   // Internal force f (m) = integral of B^T sigma dV (+ stabilisation forces) of the element in
-  // the displaced state u (m), = K u - f_thermal; what reactions are made of.
-  virtual void internal_force(const ElementGeometry& g, const Material& material, RuleKind kind,
-                              const Eigen::Ref<const Eigen::VectorXd>& u, Eigen::VectorXd& f,
-                              const ElementOptions& options = {},
-                              const Eigen::VectorXd* nodal_dT = nullptr) const;
+  // the displaced state u (m), = K u - f_eigenstrain; what reactions are made of.
+  virtual void internal_force(const ElementGeometry& g, const ElementMaterial& material,
+                              RuleKind kind, const Eigen::Ref<const Eigen::VectorXd>& u,
+                              Eigen::VectorXd& f, const ElementOptions& options = {},
+                              const Eigen::MatrixXd* initial_stress = nullptr) const;
+  void internal_force(const ElementGeometry& g, const Material& material, RuleKind kind,
+                      const Eigen::Ref<const Eigen::VectorXd>& u, Eigen::VectorXd& f,
+                      const ElementOptions& options, const Eigen::VectorXd* nodal_dT) const;
+
+  // Nodal forces f (m) of a body force per unit mass: integral of N^T density a(x) dV
+  // (translational dofs; structural elements over their axis or mid-surface).
+  virtual void body_load(const ElementGeometry& g, double density, RuleKind kind,
+                         const BodyAcceleration& acceleration, Eigen::VectorXd& f) const;
 
   // Consistent nodal forces (m) of the distributed load of label P(face + 1) with magnitude p:
   // for continuum elements a uniform pressure on face `face` (0-based: 0 = S1), positive p
@@ -217,13 +238,29 @@ class TElement {
   void nodal_areas(const ElementGeometry& g, int face, Eigen::VectorXd& area) const;
 
   // Strains (tensor components) and stresses at the integration points of `kind`, one row each
-  // (n_points x 6), from the element displacement vector u (m). With nodal temperature changes
-  // (`nodal_dT`, n, may be null) the stress is D (eps - eps_th); the strain reported stays the
-  // total strain eps. Incompatible modes are recovered from u before the strains are formed.
-  virtual void strains_stresses(const ElementGeometry& g, const Material& material, RuleKind kind,
-                                const Eigen::Ref<const Eigen::VectorXd>& u, Eigen::MatrixXd& strain,
-                                Eigen::MatrixXd& stress, const ElementOptions& options = {},
-                                const Eigen::VectorXd* nodal_dT = nullptr) const;
+  // (n_points x 6), from the element displacement vector u (m). The stress is
+  // D (eps - eps_th) + sigma0 with the thermal strain of `material` and the initial stress
+  // (`initial_stress`, may be null); the strain reported stays the total strain eps.
+  // Incompatible modes are recovered from u before the strains are formed.
+  virtual void strains_stresses(const ElementGeometry& g, const ElementMaterial& material,
+                                RuleKind kind, const Eigen::Ref<const Eigen::VectorXd>& u,
+                                Eigen::MatrixXd& strain, Eigen::MatrixXd& stress,
+                                const ElementOptions& options = {},
+                                const Eigen::MatrixXd* initial_stress = nullptr) const;
+  // The same for a constant material with nodal temperature changes (n, T - T_initial; may be
+  // null).
+  void strains_stresses(const ElementGeometry& g, const Material& material, RuleKind kind,
+                        const Eigen::Ref<const Eigen::VectorXd>& u, Eigen::MatrixXd& strain,
+                        Eigen::MatrixXd& stress, const ElementOptions& options,
+                        const Eigen::VectorXd* nodal_dT) const;
+
+  // The global positions of the integration points of `kind` (n_points x 3).
+  void point_positions(const ElementGeometry& g, RuleKind kind, Eigen::MatrixXd& x) const;
+  // The volume each integration point of `kind` stands for, w_k times its measure (n_points).
+  void point_volumes(const ElementGeometry& g, RuleKind kind, Eigen::VectorXd& dv) const;
+  // The material's 3D law at each integration point of `kind`, in global axes.
+  void point_laws(const ElementGeometry& g, const ElementMaterial& material, RuleKind kind,
+                  std::vector<MaterialPoint>& laws) const;
 };
 
 // Gauss-Legendre points and weights on [-1, 1], n = 1..6.

@@ -46,15 +46,42 @@ struct ElementSet {
   SourceLoc where;
 };
 
+// One row of a material table: the constants and the temperature they hold at (CalculiX/Abaqus
+// layout: the temperature is the field after the constants).
+struct MaterialTableRow {
+  std::vector<double> values;
+  double temperature = 0.0;
+};
+
+// *ELASTIC, TYPE= and *EXPANSION, TYPE= (docs/input.md lists the constants of each).
+enum class ElasticType { Isotropic, Orthotropic, EngineeringConstants, Anisotropic };
+enum class ExpansionType { Isotropic, Orthotropic, Anisotropic };
+
 struct Material {
   std::string name;           // upper-case
-  // *ELASTIC, TYPE=ISOTROPIC
+  // *ELASTIC, TYPE=ISOTROPIC with one line: the constant law. Unset when elastic_table holds it.
   std::optional<double> young;
   std::optional<double> poisson;
   std::optional<double> density;
-  // *EXPANSION: mean coefficient and the reference temperature (ZERO=)
+  // *EXPANSION, TYPE=ISO with one line: the constant mean coefficient (unset when
+  // expansion_table holds it), and the reference temperature (ZERO=) of the secant coefficients.
   std::optional<double> expansion;
   double expansion_reference = 0.0;
+  // *ELASTIC beyond one isotropic line: orthotropic, engineering constants or anisotropic, and
+  // tables over temperature (rows sorted by temperature, interpolated linearly, constant beyond
+  // the ends). Evaluated by styk/core/constitutive.hpp, in the material axes of the section's
+  // *ORIENTATION.
+  ElasticType elastic_type = ElasticType::Isotropic;
+  std::vector<MaterialTableRow> elastic_table;
+  // *EXPANSION beyond one isotropic line: orthotropic (a11, a22, a33) or anisotropic (a11, a22,
+  // a33, a12, a13, a23) coefficients and tables over temperature, as for elastic_table.
+  ExpansionType expansion_type = ExpansionType::Isotropic;
+  std::vector<MaterialTableRow> expansion_table;
+
+  // Some elastic law is given (constant isotropic or a table).
+  bool has_elasticity() const { return (young && poisson) || !elastic_table.empty(); }
+  // Some expansion coefficient is given.
+  bool has_expansion() const { return expansion.has_value() || !expansion_table.empty(); }
   // *CONDUCTIVITY / *ELECTRICAL CONDUCTIVITY: diagonal k11, k22, k33 in global axes (isotropic:
   // three equal values); what steady heat / electric-conduction steps need (docs/solver.md).
   std::optional<std::array<double, 3>> conductivity;
@@ -87,6 +114,8 @@ struct Section {
   // Styk-only: integrate the volumetric part of the strain selectively (B-bar, mean dilatation)
   // against volumetric locking in near-incompressible materials.
   bool selective_volumetric = false;
+  // ORIENTATION=: the *ORIENTATION whose axes are the material axes (upper-case; empty: global).
+  std::string orientation;
   SourceLoc where;
 };
 
@@ -98,6 +127,9 @@ struct Boundary {
   int dof = 1;
   double value = 0.0;
   SourceLoc where;
+  // *BOUNDARY, FIXED (step data): the dof keeps the value it had at the end of the previous step
+  // (0 in the first step); `value` is unused.
+  bool fixed = false;
 };
 
 struct ConcentratedLoad {
@@ -116,14 +148,58 @@ struct DistributedLoad {
   SourceLoc where;
 };
 
-// One *NODE PRINT / *EL PRINT / *NODE FILE / *EL FILE / *CONTACT PRINT request.
+// *DLOAD with GRAV or CENTRIF: a body force per unit mass on an element, times its *DENSITY.
+// Gravity: acceleration `magnitude` along `direction` (unit). Centrifugal: magnitude = omega^2 about
+// the axis through `point` along `direction` (unit), acceleration omega^2 times the distance vector
+// from the axis.
+struct BodyLoad {
+  enum class Kind { Gravity, Centrifugal };
+  int element = 0;            // element index
+  Kind kind = Kind::Gravity;
+  double magnitude = 0.0;
+  Vec3 point{};
+  Vec3 direction{};
+  SourceLoc where;
+};
+
+// The body acceleration field of one element: its gravity and centrifugal loads summed.
+struct BodyAcceleration {
+  struct Rotation {
+    double omega_squared = 0.0;
+    Vec3 point{};
+    Vec3 axis{};              // unit
+  };
+  Vec3 gravity{0.0, 0.0, 0.0};
+  std::vector<Rotation> rotations;
+
+  bool empty() const {
+    return rotations.empty() && gravity[0] == 0.0 && gravity[1] == 0.0 && gravity[2] == 0.0;
+  }
+  void add(const BodyLoad& load);
+  // The acceleration at point x.
+  Vec3 at(const Vec3& x) const;
+};
+
+// One *NODE PRINT / *EL PRINT / *NODE FILE / *EL FILE / *CONTACT PRINT / *SECTION PRINT request.
+// As in CalculiX, a step without a request of some kind repeats the requests of that kind of the
+// step before (styk/core/output_requests.hpp).
 struct OutputRequest {
   // ContactPrint: per slave node of every contact pair; vars CSTR, CDIS, CSTATUS (docs/input.md).
-  enum class Kind { NodePrint, ElementPrint, NodeFile, ElementFile, ContactPrint };
+  // SectionPrint: the force and moment on an element-face surface; vars SOF, SOM, SOAREA.
+  enum class Kind { NodePrint, ElementPrint, NodeFile, ElementFile, ContactPrint, SectionPrint };
   Kind kind = Kind::NodePrint;
-  std::string set;                 // upper-case NSET= / ELSET=, empty = whole model
+  std::string set;                 // upper-case NSET= / ELSET= / SURFACE=, empty = whole model
   std::vector<std::string> vars;   // upper-case: U, RF, S, E, ...
   bool totals = false;             // TOTALS=YES: also print the sum over the set
+  bool totals_only = false;        // TOTALS=ONLY: print the sum alone
+  // GLOBAL=YES/NO: results in global axes or in the local systems (*TRANSFORM for nodal
+  // variables, the section's *ORIENTATION for element ones). Unset: CalculiX's default, local for
+  // *NODE PRINT and *EL PRINT, global for *NODE FILE and *EL FILE.
+  std::optional<bool> global;
+  // FREQUENCY= (FREQUENCYF= on *SECTION PRINT): output every n-th increment and the last one of
+  // each step; 0: none. The last value given on any request holds from its step on (default 1).
+  std::optional<int> frequency;
+  std::string name;                // *SECTION PRINT, NAME= (as written)
   // *EL PRINT, POSITION= (Abaqus spelling): where S and E are printed. AveragedAtNodes prints
   // nodal method I (SPEC §5) for the nodes of the element set.
   enum class Position { IntegrationPoints, Centroidal, AveragedAtNodes };
@@ -157,6 +233,16 @@ struct NodalTemperature {
 // the electric part of *COUPLED THERMAL-ELECTRICAL, STEADY STATE (potential, dof 9).
 enum class StepKind { Static, HeatTransfer, ElectricConduction };
 
+// *CHANGE SOLID SECTION inside a step: from this step on the elements of the section of `elset`
+// take `material` (CalculiX: a linear step is solved from the total loads with the stiffness it
+// has then).
+struct SectionChange {
+  std::string elset;          // upper-case; an element set named by a *SOLID SECTION
+  std::string material;       // upper-case
+  int material_index = -1;    // resolved when the deck is complete
+  SourceLoc where;
+};
+
 struct Step {
   std::string name;
   StepKind kind = StepKind::Static;
@@ -167,6 +253,7 @@ struct Step {
   std::vector<Boundary> boundaries;
   std::vector<ConcentratedLoad> cloads;
   std::vector<DistributedLoad> dloads;
+  std::vector<BodyLoad> body_loads;  // *DLOAD GRAV / CENTRIF (reset with dloads by OP=NEW)
   bool boundary_op_new = false;
   bool cload_op_new = false;
   bool dload_op_new = false;
@@ -180,7 +267,17 @@ struct Step {
   std::vector<DistributedLoad> dfluxes;
   bool cflux_op_new = false;
   bool dflux_op_new = false;
+  std::vector<SectionChange> section_changes;
   std::vector<OutputRequest> outputs;
+  SourceLoc where;
+};
+
+// *INITIAL CONDITIONS, TYPE=STRESS: the stress at one integration point (of the element's
+// standard rule, 1-based as in the .dat) before the first step; points not given start at 0.
+struct InitialStress {
+  int element = 0;            // element index
+  int point = 1;
+  std::array<double, 6> stress{};  // 11, 22, 33, 12, 13, 23
   SourceLoc where;
 };
 
@@ -264,6 +361,53 @@ struct ContactPair {               // one data line of *CONTACT PAIR
   SourceLoc where;
 };
 
+// *TIE (without CYCLIC SYMMETRY): tied contact. Every slave node within the position tolerance
+// of a master face moves with the face point it projects to (u_slave = sum N_i u_i of that point).
+struct Tie {
+  std::string name;                // upper-case NAME=
+  std::string slave, master;       // upper-case surfaces (slave: faces or nodes; master: faces)
+  std::optional<double> position_tolerance;  // POSITION TOLERANCE=; unset: CalculiX's default
+  bool adjust = true;              // ADJUST=YES (default): slave nodes are moved onto the master
+  SourceLoc where;
+};
+
+// *COUPLING with *KINEMATIC or *DISTRIBUTING (CalculiX semantics, docs/input.md).
+struct Coupling {
+  enum class Kind { Kinematic, Distributing };
+  std::string name;                // upper-case CONSTRAINT NAME=
+  int reference_node = 0;          // node index of REF NODE=
+  std::string surface;             // upper-case SURFACE= (faces; *KINEMATIC also nodes)
+  std::string orientation;         // upper-case ORIENTATION=, empty: global axes
+  Kind kind = Kind::Kinematic;
+  // The dofs listed under *KINEMATIC (1..3: the coupled translations, rigid with the reference
+  // node) or *DISTRIBUTING (4..6: the moments distributed with the forces), each 1-based.
+  std::vector<int> dofs;
+  SourceLoc where;
+  SourceLoc kind_where;            // the *KINEMATIC / *DISTRIBUTING line
+};
+
+// *MPC: the linearised geometric constraints of CalculiX (which solves them geometrically
+// nonlinear): BEAM keeps the distance of two nodes, STRAIGHT keeps the third and later nodes on
+// the line of the first two, PLANE keeps the fourth and later nodes in the plane of the first
+// three.
+struct Mpc {
+  enum class Type { Beam, Straight, Plane };
+  Type type = Type::Beam;
+  std::vector<int> nodes;          // node indices in deck order
+  SourceLoc where;
+};
+
+// *PRE-TENSION SECTION, SURFACE=, NODE=: the surface's nodes are split; the elements of its faces
+// take copies, tied to the originals across the section except along the normal, where the
+// mean opening of the section equals dof 1 of the reference node (a *CLOAD on it is the bolt
+// force, a *BOUNDARY the shortening).
+struct PretensionSection {
+  std::string surface;             // upper-case element-face surface
+  int reference_node = 0;          // node index of NODE=
+  std::optional<Vec3> normal;      // the data line; unset: the mean face normal
+  SourceLoc where;
+};
+
 class Model {
  public:
   // Source deck path (for messages and default output names).
@@ -293,7 +437,12 @@ class Model {
   // Constraints and thermal state.
   std::vector<Transform> transforms;
   std::vector<Equation> equations;
+  std::vector<Tie> ties;
+  std::vector<Coupling> couplings;
+  std::vector<Mpc> mpcs;
+  std::vector<PretensionSection> pretension_sections;
   std::vector<NodalTemperature> initial_temperatures;  // nodes not listed start at 0
+  std::vector<InitialStress> initial_stresses;          // sorted by (element, point), unique
 
   int node_count() const { return static_cast<int>(node_ids.size()); }
   int element_count() const { return static_cast<int>(elements.size()); }

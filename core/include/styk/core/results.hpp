@@ -56,6 +56,24 @@ struct ScalarFieldResult {
   std::vector<Vec3> flux_nodal;  // per node: mean of the element-node (extrapolated) fluxes
 };
 
+// *SECTION PRINT (SOF, SOM, SOAREA): the force and moment the stresses transmit through an
+// element-face surface (CalculiX: the nodal averaged stresses interpolated on the faces and
+// integrated, the traction on the side the faces' elements are on; + normal force is tension).
+struct SectionForces {
+  std::string surface;
+  std::string name;                // NAME= of the request
+  Vec3 force{};                    // total force, global
+  Vec3 moment{};                   // its moment about the global origin
+  Vec3 centre{};                   // the area centre
+  Vec3 normal{};                   // the mean unit normal (out of the faces' elements)
+  Vec3 moment_about_centre{};
+  double area = 0.0;
+  double normal_force = 0.0;       // force . normal
+  double shear_force = 0.0;        // |force - normal_force normal|
+  double torque = 0.0;             // moment_about_centre . normal
+  double bending_moment = 0.0;     // |moment_about_centre - torque normal|
+};
+
 struct IncrementResult {
   int step = 1;                 // 1-based step number
   int increment = 1;            // 1-based increment within the step
@@ -90,6 +108,18 @@ struct IncrementResult {
   std::vector<Tensor6> S_nodal_II;       // per node: method II, mean of the centroid values
   std::vector<Tensor6> E_nodal_I;
   std::vector<Tensor6> E_nodal_II;
+
+  // Energies, volumes and the error estimate, filled when an output request asks for them
+  // (*EL PRINT ENER, ELSE, EVOL; *EL FILE ENER, THE, ERR); empty otherwise.
+  std::vector<double> ENER;              // per integration point: strain energy density
+  std::vector<Tensor6> THE;              // per integration point: thermal strain (tensor)
+  std::vector<double> element_volume;    // per element (EVOL)
+  std::vector<double> element_energy;    // per element: integral of ENER (ELSE)
+  std::vector<double> ERR;               // per element: stress error estimate in % (docs)
+  std::vector<SectionForces> sections;   // one per *SECTION PRINT request of the step
+  // Per integration point: its global position, filled when some section has a cylindrical
+  // *ORIENTATION (the .dat prints element results in the material axes there).
+  std::vector<Vec3> ip_position;
 
   // Contact (models with *CONTACT PAIR): one entry per constrained slave node, in pair order;
   // per-pair totals indexed like Model::contact_pairs; the balance check.

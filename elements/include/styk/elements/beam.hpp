@@ -59,23 +59,31 @@ class Beam : public TElement {
                        Eigen::Ref<Eigen::MatrixXd> dNdx, int point) const override;
 
   int section_stations(RuleKind kind) const override;
-  void section_resultants(const ElementGeometry& g, const Material& material, RuleKind kind,
+  void section_resultants(const ElementGeometry& g, const ElementMaterial& material, RuleKind kind,
                           const Eigen::Ref<const Eigen::VectorXd>& u, Eigen::MatrixXd& forces,
-                          Eigen::MatrixXd& moments,
-                          const Eigen::VectorXd* nodal_dT = nullptr) const override;
+                          Eigen::MatrixXd& moments) const override;
 
-  void stiffness(const ElementGeometry& g, const Material& material, RuleKind kind,
+  // The material must be constant and isotropic (prepare_model checks it); its temperatures
+  // give the axial thermal strain alpha dT. Beams take no initial stress.
+  using TElement::eigenstrain_load;
+  using TElement::internal_force;
+  using TElement::stiffness;
+  using TElement::strains_stresses;
+  void stiffness(const ElementGeometry& g, const ElementMaterial& material, RuleKind kind,
                  Eigen::MatrixXd& K, const ElementOptions& options = {}) const override;
-  void thermal_load(const ElementGeometry& g, const Material& material, RuleKind kind,
-                    const Eigen::Ref<const Eigen::VectorXd>& nodal_dT, Eigen::VectorXd& f,
-                    const ElementOptions& options = {}) const override;
+  void eigenstrain_load(const ElementGeometry& g, const ElementMaterial& material, RuleKind kind,
+                        Eigen::VectorXd& f, const ElementOptions& options = {},
+                        const Eigen::MatrixXd* initial_stress = nullptr) const override;
   // P1 / P2: force per length along section axis 1 / 2 (B21, B22: P2 only).
   void pressure_load(const ElementGeometry& g, int face, double p,
                      Eigen::VectorXd& f) const override;
-  void strains_stresses(const ElementGeometry& g, const Material& material, RuleKind kind,
+  // GRAV / CENTRIF: density times the section area per unit length, on the translations.
+  void body_load(const ElementGeometry& g, double density, RuleKind kind,
+                 const BodyAcceleration& acceleration, Eigen::VectorXd& f) const override;
+  void strains_stresses(const ElementGeometry& g, const ElementMaterial& material, RuleKind kind,
                         const Eigen::Ref<const Eigen::VectorXd>& u, Eigen::MatrixXd& strain,
                         Eigen::MatrixXd& stress, const ElementOptions& options = {},
-                        const Eigen::VectorXd* nodal_dT = nullptr) const override;
+                        const Eigen::MatrixXd* initial_stress = nullptr) const override;
 
   bool planar() const { return planar_; }
   // Gauss points along the axis (the stations) of rule `kind`. Virtual so that a variant can

@@ -32,13 +32,13 @@ class PlaneElement : public TElement {
 
   void bee(const Eigen::Ref<const Eigen::MatrixXd>& dNdx,
            Eigen::Ref<Eigen::MatrixXd> B) const override;
-  void dee(const Material& material, Matrix6d& D) const override;
+  void dee(const MaterialPoint& material, Matrix6d& D) const override;
 
   double point_measure(const ElementGeometry& g, const Eigen::Ref<const Eigen::MatrixXd>& dN,
                        Eigen::Ref<Eigen::MatrixXd> dNdx, int point) const override;
   void face_quadrature(const ElementGeometry& g, const FaceDef& face, std::vector<Vec3>& points,
                        std::vector<Eigen::Vector3d>& weighted_normals) const override;
-  void complete_strain(const Material& material, double thermal_strain,
+  void complete_strain(const MaterialPoint& material,
                        Eigen::Matrix<double, 6, 1>& engineering) const override;
 
  protected:

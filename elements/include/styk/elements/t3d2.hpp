@@ -35,7 +35,7 @@ class T3D2 : public TElement {
 
   void bee(const Eigen::Ref<const Eigen::MatrixXd>& dNdx,
            Eigen::Ref<Eigen::MatrixXd> B) const override;
-  void dee(const Material& material, Matrix6d& D) const override;
+  void dee(const MaterialPoint& material, Matrix6d& D) const override;
   double point_measure(const ElementGeometry& g, const Eigen::Ref<const Eigen::MatrixXd>& dN,
                        Eigen::Ref<Eigen::MatrixXd> dNdx, int point) const override;
 

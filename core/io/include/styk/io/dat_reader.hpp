@@ -17,9 +17,14 @@ struct DatRow {
   int integration_point = 0;
   std::vector<double> values;
   bool local = false;  // a trailing " L": the values are in the node's *TRANSFORM system
+  // A trailing name: element results printed in the axes of that *ORIENTATION (ccx prints its
+  // first 10 characters).
+  std::string label;
 };
 
-// One block: "<what> for set <set> and time <time>" followed by its rows.
+// One block: "<what> for set <set> and time <time>" followed by its rows. A *SECTION PRINT block
+// ("statistics for surface set <set> and time <time>") has what = "statistics" and one row per
+// line of numbers (its titles are skipped), id 0.
 struct DatBlock {
   std::string what;  // e.g. "displacements (vx,vy,vz)", "total force (fx,fy,fz)"
   std::string set;
