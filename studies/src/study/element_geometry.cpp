@@ -32,7 +32,7 @@ Vec3 map_point(const Eigen::VectorXd& N, const ElementGeometry& g) {
 }
 
 bool is_hexahedron(const TElement& element) {
-  const std::array<bool, 3> active = element.active_displacements();
+  const DofSet active = element.active_dofs();
   if (!(active[0] && active[1] && active[2]) || element.section_measure() != SectionMeasure::None)
     return false;
   bool corner = false;
