@@ -170,7 +170,7 @@ double relative_energy_error(const Model& model, const IncrementResult& r,
     Matrix6d D = Matrix6d::Zero();
     if (!exact.scalar()) {
       const Section& section = model.sections.at(region);
-      element.dee(model.materials.at(section.material_index), D);
+      element.dee(material_point(model.materials.at(section.material_index)), D);
       for (int a = 0; a < n; ++a)
         for (int d = 0; d < 3; ++d) u(3 * a + d) = r.U[nodes[a]][d];
       modes = incompatible_modes(element, g, D, u);
