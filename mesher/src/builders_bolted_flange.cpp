@@ -47,6 +47,7 @@ struct FlangeParams {
   std::string mu_text;
   std::optional<Friction> friction;
   bool calibrate = true;
+  bool penetration = true;  // *PRESSURE PENETRATION of the gasket interface in step PRESSURE
 };
 
 FlangeParams read_params(const BuilderParams& p) {
@@ -76,6 +77,11 @@ FlangeParams read_params(const BuilderParams& p) {
   f.mu_text = p.text("mu");
   f.friction = friction_parameter(p, "mu");
   f.calibrate = p.choice("preload-by", {"calibration", "estimate"}) == "calibration";
+  // *PRESSURE PENETRATION is a Styk extension: the decks CalculiX must run (C3D8, C3D20) leave it
+  // out unless asked for.
+  const std::string penetration = p.choice("penetration", {"auto", "yes", "no"});
+  f.penetration = penetration == "yes" ||
+                  (penetration == "auto" && f.family != "C3D8" && f.family != "C3D20");
   return f;
 }
 
@@ -230,10 +236,33 @@ BuildResult bolted_flange(const BuilderParams& p, const ElementRegistry& /*regis
   pressure_on(pressure, mesh, "BORE", f.pressure);
   pressure_on(pressure, mesh, "NECK_TOP", -kNeckTension * f.pressure);
   pressure.outputs = r.model.steps.back().outputs;
+  if (f.penetration) {
+    // The fluid enters the gasket interface at the bore (r = 25) and leaks once it reaches the
+    // gasket's outer edge (r = 54) along some path of opened nodes.
+    const auto at_radius = [&](const std::string& surface, double radius) {
+      std::vector<int> out;
+      for (int node : mesh.surface_nodes(surface))
+        if (std::abs(std::hypot(mesh.nodes[node][0], mesh.nodes[node][1]) - radius) < tol)
+          out.push_back(node);
+      return out;
+    };
+    add_node_set(r.model, "GASKET_INNER", at_radius("GASKET_FACE", G::kBore));
+    add_node_set(r.model, "FLANGE_INNER", at_radius("FLANGE_FACE", G::kBore));
+    add_node_set(r.model, "GASKET_OUTER", at_radius("GASKET_FACE", G::kGasketOuter));
+    PressurePenetration pp;
+    pp.slave = "GASKET_FACE";
+    pp.master = "FLANGE_FACE";
+    pp.exposed_slave = r.model.nsets.at("GASKET_INNER").nodes;
+    pp.exposed_master = r.model.nsets.at("FLANGE_INNER").nodes;
+    pp.pressure = f.pressure;
+    pp.leak_nset = "GASKET_OUTER";
+    pressure.penetrations.push_back(pp);
+  }
   r.model.steps.push_back(pressure);
-  r.note +=
-      "Not modelled: pressure penetration (the pressure acting on gasket/flange faces once they "
-      "separate).";
+  if (!f.penetration)
+    r.note +=
+        "Not modelled: pressure penetration (the pressure acting on gasket/flange faces once "
+        "they separate; --penetration yes adds the Styk-only *PRESSURE PENETRATION).";
   return r;
 }
 
@@ -251,6 +280,10 @@ void add_bolted_flange_builder(std::vector<BuilderInfo>& all) {
          "calibration (one solve at unit shortening: exact bolt force) or estimate (1D springs)"},
         {"pressure", "16", "internal pressure p in MPa (step 2; neck top pulled by 2.2727 p)"},
         {"pressure-increment", "2", "largest pressure increment in MPa (fixed increments)"},
+        {"penetration", "auto",
+         "the internal pressure penetrates the opened gasket interface (*PRESSURE PENETRATION, "
+         "Styk-only; leak when it reaches the gasket's outer edge): yes, no, auto = yes except "
+         "for the CalculiX families C3D8 and C3D20"},
         {"gasket-thickness", "5", "gasket thickness (the model holds half; variant 3.5)"},
         {"mu", "0", "friction coefficient of both contacts (0 = frictionless; 'rough')"},
         {"young", "206000", "E of flange and bolt (MPa)"},

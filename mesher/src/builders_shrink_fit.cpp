@@ -13,6 +13,7 @@
 #include "contact_support.hpp"
 #include "styk/mesher/block_mesh.hpp"
 #include "styk/mesher/merge.hpp"
+#include "sector_support.hpp"
 
 namespace styk::mesher::detail {
 namespace {
@@ -68,11 +69,12 @@ std::vector<double> number_list(const BuilderParams& p, const std::string& name)
   return out;
 }
 
-// Tangential nodal forces on the ring of nodes at radius r, height z (a closed circle or a
-// quarter): a uniform line load of total moment `torque` about z, distributed as the consistent
-// loads of the element edges (linear edges: halves; quadratic: 1/6, 2/3, 1/6).
+// Tangential nodal forces on the ring of nodes at radius r, height z (a closed circle, or an open
+// arc from the lowest angle to the highest: a sector's): a uniform line load of total moment
+// `torque` about z, distributed as the consistent loads of the element edges (linear edges:
+// halves; quadratic: 1/6, 2/3, 1/6).
 std::vector<ConcentratedLoad> torque_loads(const Mesh& mesh, const std::vector<int>& ring, double r,
-                                           double torque, bool quadratic) {
+                                           double torque, bool quadratic, bool closed) {
   std::vector<std::pair<double, int>> by_angle;
   for (int node : ring) {
     double a = std::atan2(mesh.nodes[node][1], mesh.nodes[node][0]);
@@ -82,7 +84,8 @@ std::vector<ConcentratedLoad> torque_loads(const Mesh& mesh, const std::vector<i
   std::sort(by_angle.begin(), by_angle.end());
   const int count = static_cast<int>(by_angle.size());
   const int step = quadratic ? 2 : 1;
-  const int edges = count / step;  // closed circle: every node starts one edge piece
+  // A closed circle: every node starts one edge piece; an arc: all but the last.
+  const int edges = closed ? count / step : (count - 1) / step;
   std::vector<double> weight(count, 0.0);
   for (int e = 0; e < edges; ++e) {
     const int i0 = e * step;
@@ -108,16 +111,22 @@ std::vector<ConcentratedLoad> torque_loads(const Mesh& mesh, const std::vector<i
   return loads;
 }
 
+// Model B as a 90 deg sector (N = 4): the quarter 0..90 deg of the full mesh with a cyclic
+// symmetry tie between its faces y = 0 (slave) and x = 0 (master).
+constexpr int kFitSectors = 4;
+
 BuildResult shrink_fit(const BuilderParams& p, const ElementRegistry&) {
   const std::string fam = family(p, kFamilies);
   const std::string model_name = to_upper(p.choice("model", {"A", "B"}));
   const bool full = model_name == "B";
-  std::string load_case = p.choice("load-case", {"auto", "axial", "torque"});
+  std::string load_case = p.choice("load-case", {"auto", "axial", "torque", "rotation"});
   if (load_case == "auto") load_case = full ? "torque" : "axial";
-  if (load_case == "torque" && !full)
-    p.fail(
-        "--load-case torque needs --model B: a quarter model cannot carry a torque "
-        "without cyclic symmetry");
+  if (load_case != "axial" && !full)
+    p.fail("--load-case " + load_case +
+           " needs --model B: a quarter model with symmetry planes cannot carry a torque (model "
+           "B with --sector yes is the quarter with cyclic symmetry)");
+  const bool sector = p.choice("sector", {"no", "yes"}) == "yes";
+  if (sector && !full) p.fail("--sector yes needs --model B (model A is already a quarter)");
   const std::string fit = p.choice("fit", {"thermal", "clearance"});
   FitMesh m;
   m.around = p.count("around", 2);
@@ -128,7 +137,7 @@ BuildResult shrink_fit(const BuilderParams& p, const ElementRegistry&) {
   m.end_rows = p.count("end-rows");
   const double alpha = p.positive("alpha"), dT = p.number("dT");
   std::string mu_text = p.text("mu");
-  if (to_upper(mu_text) == "AUTO") mu_text = load_case == "torque" ? "0.4" : "0.2";
+  if (to_upper(mu_text) == "AUTO") mu_text = load_case == "axial" ? "0.2" : "0.4";
   const std::optional<Friction> friction = friction_value(p, "mu", mu_text);
 
   BuildResult r;
@@ -137,6 +146,7 @@ BuildResult shrink_fit(const BuilderParams& p, const ElementRegistry&) {
   for (int quarter = 0; quarter < (full ? 4 : 1); ++quarter)
     mesh_quarter(mesh, type, m, quarter * 0.5 * kPi);
   merge_coincident_nodes(mesh);
+  if (sector) cut_sector(mesh, kFitSectors, 0.0);
   split_bodies(mesh, "SLEEVE", "SLEEVE_BORE", "SHAFT_FIT");
   mesh.add_to_element_set("EALL", mesh.element_sets.at("SHAFT"));
   mesh.add_to_element_set("EALL", mesh.element_sets.at("SLEEVE"));
@@ -144,16 +154,21 @@ BuildResult shrink_fit(const BuilderParams& p, const ElementRegistry&) {
 
   const double E = p.positive("young"), nu = p.number("poisson");
   const double interference = alpha * dT * kShaftRadius;
+  const std::string loading =
+      load_case == "axial"      ? "axial pressure on the sleeve top"
+      : load_case == "torque" ? "torque on the sleeve"
+                              : "the sleeve's lower outer circle turned by a prescribed angle";
   r.model = contact_model(
       mesh,
-      "SPEC 4.2 shrink fit, model " + model_name + (full ? " (full)" : " (quarter)") + ", " + fam +
-          ": shaft 60 x D20, sleeve 20 x D20/D30 centred, E = " + fmt_number(E) +
+      "SPEC 4.2 shrink fit, model " + model_name +
+          (full ? (sector ? " (90 deg sector with cyclic symmetry, N = 4)" : " (full)")
+                : " (quarter)") +
+          ", " + fam + ": shaft 60 x D20, sleeve 20 x D20/D30 centred, E = " + fmt_number(E) +
           ", nu = " + fmt_number(nu) + ", mu = " + mu_text + "; step 1 " +
           (fit == "thermal"
                ? "heats the shaft by " + fmt_number(dT) + " (alpha " + fmt_number(alpha) + ")"
                : "closes a radial interference " + fmt_number(interference)) +
-          ", then " +
-          (load_case == "axial" ? "axial pressure on the sleeve top" : "torque on the sleeve") +
+          ", then " + loading +
           ". Tab 4.1 shaft end (thermal): elongation 0.1268 (C3D21), diametral growth 0.0401",
       {{"SHAFT", "SHAFT", E, nu, fit == "thermal" ? std::optional<double>(alpha) : std::nullopt},
        {"SLEEVE", "SLEEVE", E, nu, {}}});
@@ -162,11 +177,32 @@ BuildResult shrink_fit(const BuilderParams& p, const ElementRegistry&) {
               fit == "clearance" ? std::optional<double>(-interference) : std::nullopt);
 
   const double tol = 1e-7 * mesh.size();
+  SectorBoundary boundary;
+  if (sector) {
+    boundary = sector_boundary(mesh, kFitSectors, tol);
+    add_cyclic_symmetry(r.model, boundary);
+  }
+  // Supports (fix_in_sector in the sector: its slave side follows the master side, and the tie
+  // holds the axis nodes on the axis).
+  const auto hold = [&](const std::vector<int>& nodes, std::initializer_list<int> dofs) {
+    if (sector)
+      fix_in_sector(r.model, boundary, nodes, dofs);
+    else
+      fix(r.model, nodes, dofs);
+  };
+  const auto cylindrical = [&](const std::string& nset) {
+    Transform t;
+    t.nset = nset;
+    t.axes.system = CoordinateSystem::Cylindrical;
+    t.axes.a = {0, 0, 0};
+    t.axes.b = {0, 0, 1};
+    r.model.transforms.push_back(t);
+  };
   const auto base = nodes_where(mesh, [&](const Vec3& x) { return x[2] < tol; });
   const auto end = nodes_where(mesh, [&](const Vec3& x) { return x[2] > kShaftLength - tol; });
   add_node_set(r.model, "SHAFT_BASE", base);
   add_node_set(r.model, "SHAFT_END", end);
-  fix(r.model, base, {3});
+  hold(base, {3});
   if (!full) {
     fix(r.model, nodes_where(mesh, [&](const Vec3& x) { return std::abs(x[0]) < tol; }), {1});
     fix(r.model, nodes_where(mesh, [&](const Vec3& x) { return std::abs(x[1]) < tol; }), {2});
@@ -176,29 +212,26 @@ BuildResult shrink_fit(const BuilderParams& p, const ElementRegistry&) {
     std::vector<int> centre, ring;
     for (int node : base)
       (std::hypot(mesh.nodes[node][0], mesh.nodes[node][1]) < tol ? centre : ring).push_back(node);
-    fix(r.model, centre, {1, 2});
+    if (!sector) fix(r.model, centre, {1, 2});  // in the sector the tie holds it on the axis
     add_node_set(r.model, "SHAFT_BASE_RING", ring);
-    Transform t;
-    t.nset = "SHAFT_BASE_RING";
-    t.axes.system = CoordinateSystem::Cylindrical;
-    t.axes.a = {0, 0, 0};
-    t.axes.b = {0, 0, 1};
-    r.model.transforms.push_back(t);
-    fix(r.model, ring, {2});
+    cylindrical("SHAFT_BASE_RING");
+    hold(ring, {2});
   }
   if (!friction) {
     // Frictionless: nothing holds the sleeve along (and, in model B, about) the axis. One node
-    // on its outer mid-plane is held there; with mu = 0 no force can reach it.
-    const auto hold = nodes_where(mesh, [&](const Vec3& x) {
-      return std::abs(x[0] - kSleeveRadius) < tol && std::abs(x[1]) < tol &&
+    // on its outer mid-plane is held there; with mu = 0 no force can reach it. (The sector takes
+    // the node on its master side, x = 0, where x is the tangential direction.)
+    const auto hold_node = nodes_where(mesh, [&](const Vec3& x) {
+      const double along = sector ? x[1] : x[0], across = sector ? x[0] : x[1];
+      return std::abs(along - kSleeveRadius) < tol && std::abs(across) < tol &&
              std::abs(x[2] - 0.5 * (kFitStart + kFitEnd)) <
                  0.5 * (kFitEnd - kFitStart) / m.fit_rows + tol;
     });
-    add_node_set(r.model, "SLEEVE_HOLD", {hold.at(0)});
+    add_node_set(r.model, "SLEEVE_HOLD", {hold_node.at(0)});
     if (full)
-      fix(r.model, {hold.at(0)}, {2, 3});
+      fix(r.model, {hold_node.at(0)}, {sector ? 1 : 2, 3});
     else
-      fix(r.model, {hold.at(0)}, {3});
+      fix(r.model, {hold_node.at(0)}, {3});
   }
 
   Step heat = static_step();
@@ -217,13 +250,22 @@ BuildResult shrink_fit(const BuilderParams& p, const ElementRegistry&) {
                                         }),
                             heat.temperatures.end());
   }
-  const std::vector<OutputRequest> outputs = {
+  std::vector<OutputRequest> outputs = {
       contact_print(fam), print_request(OutputRequest::Kind::NodePrint, "SHAFT_END", {"U"}),
       print_request(OutputRequest::Kind::NodePrint, "SHAFT_BASE", {"RF"}, true)};
+  const auto rim = nodes_where(mesh, [&](const Vec3& x) {
+    return std::abs(std::hypot(x[0], x[1]) - kSleeveRadius) < tol &&
+           std::abs(x[2] - kFitStart) < tol;
+  });
+  if (load_case != "axial") {
+    add_node_set(r.model, "SLEEVE_RIM", rim);
+    outputs.push_back(print_request(OutputRequest::Kind::NodePrint, "SLEEVE_RIM", {"RF"}, true));
+  }
   heat.outputs = outputs;
   r.model.steps.push_back(heat);
 
   const bool quadratic = type == "C3D20";
+  const int parts = sector ? kFitSectors : 1;  // the model carries 1/parts of the joint's torque
   int index = 1;
   if (load_case == "axial") {
     for (double pressure : number_list(p, "pressures")) {
@@ -234,21 +276,38 @@ BuildResult shrink_fit(const BuilderParams& p, const ElementRegistry&) {
       push.outputs = outputs;
       r.model.steps.push_back(push);
     }
-  } else {
-    const auto rim = nodes_where(mesh, [&](const Vec3& x) {
-      return std::abs(std::hypot(x[0], x[1]) - kSleeveRadius) < tol &&
-             std::abs(x[2] - kFitStart) < tol;
-    });
-    add_node_set(r.model, "SLEEVE_RIM", rim);
+  } else if (load_case == "torque") {
     for (double torque : number_list(p, "torques")) {
       Step twist = static_step();
       twist.name = "TORQUE" + std::to_string(index++);
       twist.procedure.initial_increment = 0.25;
-      twist.cloads = torque_loads(mesh, rim, kSleeveRadius, torque * 1000.0, quadratic);
+      twist.cloads =
+          torque_loads(mesh, rim, kSleeveRadius, torque * 1000.0 / parts, quadratic, !sector);
       twist.outputs = outputs;
       r.model.steps.push_back(twist);
     }
+  } else {
+    // Rotation control (issue 13 item 3): the rim circle's nodes turn about the axis by the
+    // prescribed angle (tangential displacement r theta in their cylindrical system, radial and
+    // axial free), so the torque follows from the reactions and the curve continues past the
+    // friction capacity. Automatic increments, at most 1/20 of the angle each.
+    cylindrical("SLEEVE_RIM");
+    const double degrees = p.number("rotation");
+    if (!(degrees > 0)) p.fail("--rotation must be positive (degrees)");
+    Step twist = static_step();
+    twist.name = "TWIST";
+    twist.procedure.initial_increment = 0.05;
+    twist.procedure.max_increment = 0.05;
+    twist.procedure.min_increment = 1e-4;
+    const double u = kSleeveRadius * degrees * kPi / 180.0;
+    for (int node : rim)
+      if (!sector || !boundary.is_slave(node)) twist.boundaries.push_back({node, 2, u, {}});
+    twist.outputs = outputs;
+    r.model.steps.push_back(twist);
   }
+  if (sector)
+    r.note = "90 deg sector of model B with cyclic symmetry (N = 4): loads and reactions are a "
+             "quarter of the joint's. ";
   return r;
 }
 
@@ -262,12 +321,18 @@ void add_shrink_fit_builder(std::vector<BuilderInfo>& all) {
        {family_param("C3D21", kFamilies),
         {"model", "A", "A: quarter (3072 elements, 144 contact pairs), B: full (12288)"},
         {"load-case", "auto",
-         "axial (step 2A, pressure on the sleeve top) or torque (2B, model "
-         "B); auto: A axial, B torque"},
+         "axial (step 2A, pressure on the sleeve top), torque (2B, model B: force couples) or "
+         "rotation (model B: the sleeve's rim turned by --rotation, torque as reaction); auto: A "
+         "axial, B torque"},
         {"fit", "thermal", "thermal (heat the shaft by dT) or clearance (*CLEARANCE -alpha dT r)"},
         {"mu", "auto", "friction coefficient (auto: 0.2 axial, 0.4 torque; 'rough')"},
         {"pressures", "52.5,72", "axial pressures on the sleeve's top annulus, one step each"},
         {"torques", "300,850", "torques on the sleeve in Nm, one step each (1000: capacity lost)"},
+        {"rotation", "1.5",
+         "load case rotation: the angle (degrees) the sleeve's lower outer circle is turned by"},
+        {"sector", "no",
+         "model B: yes = the 90 deg sector with *TIE, CYCLIC SYMMETRY (N = 4) instead of the "
+         "full model"},
         {"dT", "100", "shaft heating"},
         {"alpha", "2e-5", "shaft expansion coefficient"},
         {"around", "12", "elements around a quarter (even; contact elements per row)"},

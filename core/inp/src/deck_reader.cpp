@@ -127,6 +127,31 @@ const std::vector<DeckReader::KeywordSpec>& DeckReader::keywords() {
        &DeckReader::on_transform,
        kData},
       {"EQUATION", S::Model, {}, &DeckReader::on_equation, kData},
+      // Cyclic symmetry (cyclic_keywords.cpp)
+      {"TIE",
+       S::Model,
+       {{"NAME", true, V::Required},
+        {"CYCLIC SYMMETRY", false, V::None},
+        {"POSITION TOLERANCE", false, V::Required}},
+       &DeckReader::on_tie,
+       kData},
+      {"CYCLIC SYMMETRY MODEL",
+       S::Model,
+       {{"N", true, V::Required},
+        {"NGRAPH", false, V::Required},
+        {"TIE", false, V::Required},
+        {"CHECK", false, V::Required}},
+       &DeckReader::on_cyclic_symmetry_model,
+       kData},
+      // Pressure penetration (penetration_keywords.cpp; Styk extension after Abaqus)
+      {"PRESSURE PENETRATION",
+       S::Step,
+       {{"SLAVE", true, V::Required},
+        {"MASTER", true, V::Required},
+        {"OP", false, V::Required},
+        {"LEAK", false, V::Required}},
+       &DeckReader::on_pressure_penetration,
+       kData},
       // Temperatures (thermal_keywords.cpp)
       {"INITIAL CONDITIONS",
        S::Model,
@@ -362,6 +387,8 @@ void DeckReader::finish() {
   check_field_kinds();  // includes the materials' *ELASTIC / *CONDUCTIVITY checks
   assign_sections();
   resolve_contact_references();
+  resolve_cyclic_references();
+  resolve_penetration_references();
 }
 
 void DeckReader::assign_sections() {

@@ -85,6 +85,13 @@ class DeckReader {
   void on_orientation(const KeywordLine& kw);
   void on_transform(const KeywordLine& kw);
   void on_equation(const KeywordLine& kw);
+  // cyclic_keywords.cpp
+  void on_tie(const KeywordLine& kw);
+  void on_cyclic_symmetry_model(const KeywordLine& kw);
+  void resolve_cyclic_references();
+  // penetration_keywords.cpp
+  void on_pressure_penetration(const KeywordLine& kw);
+  void resolve_penetration_references();
   // thermal_keywords.cpp
   void on_initial_conditions(const KeywordLine& kw);
   void on_temperature(const KeywordLine& kw);

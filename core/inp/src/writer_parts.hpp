@@ -21,6 +21,10 @@ std::string shortest_number(double value);
 // *CLEARANCE, *TRANSFORM, *EQUATION and *INITIAL CONDITIONS of the model part.
 void write_contact_and_constraints(const Model& model, std::ostream& out);
 
+// The step's *PRESSURE PENETRATION definitions (Styk extension: a deck meant for CalculiX must
+// not carry them, docs/input.md).
+void write_step_penetrations(const Model& model, const Step& step, std::ostream& out);
+
 // The step's *TEMPERATURE block (nothing when the step has none and no OP=NEW).
 void write_step_temperatures(const Model& model, const Step& step, std::ostream& out);
 
