@@ -287,5 +287,55 @@ TEST(BoltedFlangePreload, CalibratedDeckCarriesThePreload) {
   for (int d = 0; d < 3; ++d) EXPECT_NEAR(q.applied[d] + q.reactions[d], 0.0, 7500.0 * 1e-8);
 }
 
+// SPEC §4.6 step 2 with pressure penetration (the builder's default for C3D21): the internal
+// pressure also acts on the gasket/flange faces where they have opened, and the leak is the first
+// pressure at which the penetrated zone reaches the gasket's outer edge (r = 54). Coarse mesh,
+// 15 and 10 kN, pressure to 24 MPa in 1 MPa increments. Checked:
+// - both leak, and the lower preload leaks at a lower pressure (published 16 and 12.5-13 MPa;
+//   this coarse mesh gives the pressures printed below, the default mesh docs/mesher.md's);
+// - the penetrated zone never shrinks as the pressure rises;
+// - once the whole gasket face is penetrated the flange hangs on the bolt: the half bolt of the
+//   sector carries the fluid on the gasket face plus the end cap, p pi (54^2 - 25^2) / 16 +
+//   p pi 25^2 / 16 = 572.58 p, to 1e-3 (the faces' interpolation of the circles).
+TEST(BoltedFlangePenetration, LeakPressureFallsWithThePreload) {
+  const test::Elements elements;
+  std::map<std::string, std::string> coarse = {
+      {"element", "C3D21"},  {"ring-layers", "2"},  {"neck-layers", "1"},  {"gasket-layers", "1"},
+      {"shank-layers", "1"}, {"head-layers", "1"},  {"gasket-rings", "4"}, {"neck-rings", "1"},
+      {"pressure", "24"},    {"pressure-increment", "1"}};
+  const double kPi = 3.14159265358979323846;
+  const double per_mpa = kPi * (54.0 * 54.0 - 25.0 * 25.0) / 16 + kPi * 25.0 * 25.0 / 16;
+  std::map<std::string, double> leak;
+  for (const std::string preload : {"15", "10"}) {
+    SCOPED_TRACE("preload " + preload + " kN");
+    coarse["preload"] = preload;
+    const mesher::BuildResult r = mesher::run_builder("bolted-flange", coarse, elements.registry);
+    ASSERT_EQ(r.model.steps.at(1).penetrations.size(), 1u);
+    const Results results =
+        run_static_analysis(r.model, elements.registry, SolveOptions{}, nullptr, nullptr);
+    int previous = 0;
+    double before = 0;
+    for (const IncrementResult& inc : results.increments) {
+      if (inc.step != 2) continue;
+      ASSERT_EQ(inc.penetrations.size(), 1u);
+      const PenetrationResult& pr = inc.penetrations[0];
+      EXPECT_GE(pr.penetrated, previous) << "p = " << pr.pressure;
+      previous = pr.penetrated;
+      if (pr.leaked && leak[preload] == 0) leak[preload] = pr.pressure;
+      if (!pr.leaked) before = pr.pressure;
+      if (pr.penetrated == pr.nodes) {
+        double bolt = 0;
+        for (int n : r.model.nsets.at("BOLT_END").nodes) bolt -= inc.RF[n][2];
+        EXPECT_NEAR(bolt, per_mpa * pr.pressure, 1e-3 * per_mpa * pr.pressure)
+            << "p = " << pr.pressure;
+      }
+    }
+    EXPECT_GT(leak[preload], 0);
+    std::printf("coarse flange, %s kN: leak between %.1f and %.1f MPa\n", preload.c_str(),
+                before, leak[preload]);
+  }
+  EXPECT_LT(leak["10"], leak["15"]);
+}
+
 }  // namespace
 }  // namespace styk
