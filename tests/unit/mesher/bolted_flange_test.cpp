@@ -296,7 +296,7 @@ TEST(BoltedFlangePreload, CalibratedDeckCarriesThePreload) {
 // - the penetrated zone never shrinks as the pressure rises;
 // - once the whole gasket face is penetrated the flange hangs on the bolt: the half bolt of the
 //   sector carries the fluid on the gasket face plus the end cap, p pi (54^2 - 25^2) / 16 +
-//   p pi 25^2 / 16 = 572.58 p, to 1e-3 (the faces' interpolation of the circles).
+//   p pi 25^2 / 16 = 572.56 p, to 1e-3 (the faces' interpolation of the circles).
 TEST(BoltedFlangePenetration, LeakPressureFallsWithThePreload) {
   const test::Elements elements;
   std::map<std::string, std::string> coarse = {

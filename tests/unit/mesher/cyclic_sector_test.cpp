@@ -18,6 +18,7 @@
 #include "contact_support.hpp"
 #include "mesher_checks.hpp"
 #include "sector_support.hpp"
+#include "styk/core/cyclic_symmetry.hpp"
 #include "styk/inp/reader.hpp"
 #include "styk/inp/writer.hpp"
 #include "styk/mesher/block_mesh.hpp"
@@ -263,6 +264,35 @@ TEST(CyclicSector, P3gSectorEqualsFullModel) {
   EXPECT_EQ(c.status_differences, 0);
   EXPECT_LE(c.displacement, 1e-9);
   EXPECT_LE(c.pressure, 1e-9);
+}
+
+// The builders' sectors at their default densities (docs/mesher.md, "Sector models"): a third of
+// the spline's 12000 and the P3G's 9504 elements, a quarter of model B's 12288, the cyclic tie
+// with N = 3 / 4 about z, and every slave node of the tie paired with a master node (the two
+// boundaries are images of each other; resolve_cyclic_symmetries throws otherwise).
+TEST(CyclicSector, BuilderSectorsAtDefaultDensity) {
+  const test::Elements elements;
+  const struct {
+    std::string builder;
+    std::map<std::string, std::string> args;
+    int elements, sectors;
+  } cases[] = {{"spline-joint", {{"sector", "yes"}}, 4000, 3},
+               {"p3g-joint", {{"sector", "yes"}}, 3168, 3},
+               {"shrink-fit", {{"model", "B"}, {"sector", "yes"}}, 3072, 4}};
+  for (const auto& c : cases) {
+    SCOPED_TRACE(c.builder);
+    const mesher::BuildResult built = mesher::run_builder(c.builder, c.args, elements.registry);
+    EXPECT_EQ(built.model.element_count(), c.elements);
+    ASSERT_EQ(built.model.cyclic_symmetries.size(), 1u);
+    EXPECT_EQ(built.model.cyclic_symmetries[0].sectors, c.sectors);
+    const std::vector<ResolvedCyclicSymmetry> ties =
+        resolve_cyclic_symmetries(built.model, elements.registry);
+    ASSERT_EQ(ties.size(), 1u);
+    const Surface& slave = built.model.surfaces.at("CYCLIC_SLAVE");
+    EXPECT_EQ(ties[0].pairs.size() + ties[0].axis_nodes.size(), slave.nodes.size());
+    EXPECT_NEAR(std::abs(ties[0].angle), 2 * kPi / c.sectors, 1e-12);
+    EXPECT_GT(ties[0].pairs.size(), 0u);
+  }
 }
 
 }  // namespace
