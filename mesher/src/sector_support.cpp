@@ -2,8 +2,8 @@
 
 #include <algorithm>
 #include <array>
-#include <map>
 #include <cmath>
+#include <map>
 #include <stdexcept>
 
 #include "builder_support.hpp"
@@ -88,9 +88,8 @@ void cut_sector(Mesh& mesh, int sectors, double theta0) {
     }
   if (kept.size() * sectors != mesh.elements.size())
     throw std::invalid_argument("the mesh does not repeat itself " + std::to_string(sectors) +
-                                " times about the z axis (" + std::to_string(kept.size()) +
-                                " of " + std::to_string(mesh.elements.size()) +
-                                " elements in the sector)");
+                                " times about the z axis (" + std::to_string(kept.size()) + " of " +
+                                std::to_string(mesh.elements.size()) + " elements in the sector)");
   mesh.elements = std::move(kept);
   for (auto& [name, members] : mesh.element_sets) {
     std::vector<int> renumbered;
@@ -108,6 +107,61 @@ void cut_sector(Mesh& mesh, int sectors, double theta0) {
     faces = std::move(renumbered);
   }
   mesh.remove_unused_nodes();
+}
+
+void mirror_about_xz(Mesh& mesh) {
+  const int node_count = static_cast<int>(mesh.nodes.size());
+  for (int n = 0; n < node_count; ++n)
+    mesh.add_node({mesh.nodes[n][0], -mesh.nodes[n][1], mesh.nodes[n][2]});
+  const int element_count = static_cast<int>(mesh.elements.size());
+  for (int e = 0; e < element_count; ++e) {
+    const MeshElement element = mesh.elements[e];
+    const std::vector<Vec3>& natural = natural_nodes(element.type);
+    std::vector<int> nodes(element.nodes.size());
+    for (std::size_t k = 0; k < natural.size(); ++k) {
+      const Vec3 reflected{natural[k][0], -natural[k][1], natural[k][2]};
+      std::size_t source = natural.size();
+      for (std::size_t j = 0; j < natural.size(); ++j)
+        if (std::abs(natural[j][0] - reflected[0]) + std::abs(natural[j][1] - reflected[1]) +
+                std::abs(natural[j][2] - reflected[2]) <
+            1e-12)
+          source = j;
+      if (source == natural.size())
+        throw std::invalid_argument("mirror_about_xz: " + element.type +
+                                    " has no node at a reflected natural point");
+      nodes[k] = element.nodes[source] + node_count;
+    }
+    mesh.add_element(element.type, nodes);
+  }
+  for (auto& [name, members] : mesh.element_sets) {
+    const std::size_t count = members.size();
+    for (std::size_t i = 0; i < count; ++i) members.push_back(members[i] + element_count);
+    std::sort(members.begin(), members.end());
+  }
+  for (auto& [name, faces] : mesh.surfaces) {
+    const std::size_t count = faces.size();
+    for (std::size_t i = 0; i < count; ++i) {
+      const FaceAxis a = face_axis(faces[i].face);
+      faces.push_back(
+          {faces[i].element + element_count, face_index(a.axis, a.axis == 1 ? -a.value : a.value)});
+    }
+    std::sort(faces.begin(), faces.end());
+  }
+}
+
+std::vector<FaceRef> faces_on_half_plane(const Mesh& mesh, double theta, double tolerance) {
+  const double c = std::cos(theta), s = std::sin(theta);
+  std::vector<FaceRef> out;
+  for (std::size_t e = 0; e < mesh.elements.size(); ++e)
+    for (int f = 0; f < 6; ++f) {
+      bool on = true;
+      for (int k : face_corner_nodes(f)) {
+        const Vec3& x = mesh.nodes[mesh.elements[e].nodes[k]];
+        on = on && std::abs(-s * x[0] + c * x[1]) <= tolerance && c * x[0] + s * x[1] >= -tolerance;
+      }
+      if (on) out.push_back({static_cast<int>(e), f});
+    }
+  return out;
 }
 
 void add_cyclic_symmetry(Model& model, const SectorBoundary& boundary) {

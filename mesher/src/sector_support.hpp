@@ -40,6 +40,16 @@ void cut_sector(Mesh& mesh, int sectors, double theta0);
 // face surfaces, those within `tolerance` of the z axis as axis nodes.
 SectorBoundary sector_boundary(const Mesh& mesh, int sectors, double tolerance);
 
+// Adds the mirror image of every element about the plane y = 0: new nodes at (x, -y, z), the
+// image's numbering reflected in eta so that it stays right-handed, in the same element sets and
+// surfaces (faces S3 and S5 swap). merge_coincident_nodes() then joins the halves along y = 0.
+// C3D8 and C3D20 only (before any conversion).
+void mirror_about_xz(Mesh& mesh);
+
+// The faces of `mesh` lying on the half-plane at angle theta about z (all corners within
+// `tolerance` of it, on its side of the axis).
+std::vector<FaceRef> faces_on_half_plane(const Mesh& mesh, double theta, double tolerance);
+
 // The cyclic symmetry tie of the sector (surfaces CYCLIC_SLAVE and CYCLIC_MASTER of TYPE=NODE,
 // the axis nodes in both; *TIE NAME=CYCLIC; N sectors about the z axis).
 void add_cyclic_symmetry(Model& model, const SectorBoundary& boundary);
