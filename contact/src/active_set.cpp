@@ -275,9 +275,9 @@ constexpr double kWedgeRatio = 1e-2;
 // crosses the slip directions (a sleeve turned past its friction capacity by a prescribed rotation
 // is free to slide axially, while its nodes slip around the axis) is held by the tangent's
 // P = I - e e^T part, so the exact Newton step is regular there; slip springs would only slow it
-// down to a linear rate (measured on model B at full slip: no convergence in 50 iterations with
-// them, 4 without). Threshold on the RMS of the motion's components across the slip directions
-// over the RMS of its tangential part at the slipping nodes.
+// down to a linear rate (measured on model B's sector at full slip: no convergence in 50
+// iterations with them, 2-6 per increment without). Threshold on the RMS of the motion's components
+// across the slip directions over the RMS of its tangential part at the slipping nodes.
 constexpr double kCrossingRatio = 1e-2;
 
 // Checks one motion v (k, unit): the range of G_v^T lambda the closed constraints can carry.
@@ -305,9 +305,9 @@ void check_motion(const std::vector<ContactConstraint>& constraints,
     Eigen::Vector2d xi = Eigen::Vector2d::Zero();
     for (int c = 1; c < 3; ++c)
       if (setup.live[j][c])
-        xi[c - 1] = at.lambda[3 * j + c] +
-                    setup.c_t[j] * (at.d[3 * j + c] - previous[j].d_ref[c]);
-    const Eigen::Vector2d e = xi.norm() > 0.0 ? Eigen::Vector2d(xi.normalized()) : Eigen::Vector2d::Zero();
+        xi[c - 1] = at.lambda[3 * j + c] + setup.c_t[j] * (at.d[3 * j + c] - previous[j].d_ref[c]);
+    const Eigen::Vector2d e =
+        xi.norm() > 0.0 ? Eigen::Vector2d(xi.normalized()) : Eigen::Vector2d::Zero();
     across += (gt - gt.dot(e) * e).squaredNorm();
     along_total += gt.squaredNorm();
   }
@@ -363,8 +363,8 @@ BodyHold body_hold(const std::vector<ContactConstraint>& constraints,
       if (status[j] != NodeStatus::Open)
         unbalanced -= std::max(at.lambda[3 * j], 0.0) * system.G.row(3 * j).transpose();
     if (unbalanced.norm() > 0.0)
-      check_motion(constraints, system, loads, setup, status, at, previous,
-                   unbalanced.normalized(), out);
+      check_motion(constraints, system, loads, setup, status, at, previous, unbalanced.normalized(),
+                   out);
   }
   return out;
 }
@@ -602,8 +602,7 @@ IncrementOutcome solve_increment(const std::vector<ContactConstraint>& constrain
     }
     record.changes = static_cast<int>(changed.size()) + zone_changes;
     record.residual = residual / scale;
-    bool converged =
-        changed.empty() && zone_changes == 0 && record.residual <= options.tolerance;
+    bool converged = changed.empty() && zone_changes == 0 && record.residual <= options.tolerance;
     if (converged && damping < 1.0) {
       // A damped step is only near the solution of its status set: one full step more makes it
       // exact.

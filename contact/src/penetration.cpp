@@ -44,8 +44,8 @@ PenetrationLayout layout_penetrations(const Model& model, const ElementRegistry&
         model.contact_pairs.begin(), model.contact_pairs.end(),
         [&](const ContactPair& p) { return p.slave == pp->slave && p.master == pp->master; });
     if (pair == model.contact_pairs.end())
-      throw InputError(pp->where, "*PRESSURE PENETRATION: no *CONTACT PAIR has slave " +
-                                      pp->slave + " and master " + pp->master);
+      throw InputError(pp->where, "*PRESSURE PENETRATION: no *CONTACT PAIR has slave " + pp->slave +
+                                      " and master " + pp->master);
     const int p = static_cast<int>(pair - model.contact_pairs.begin());
     const Surface& slave = model.surfaces.at(pp->slave);
     if (slave.kind != Surface::Kind::ElementFaces)

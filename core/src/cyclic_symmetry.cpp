@@ -68,7 +68,8 @@ class Locator {
   // The nearest node at any distance (for messages).
   double nearest_distance(const Vec3& x) const {
     double best = INFINITY;
-    for (const auto& entry : by_x_) best = std::min(best, norm(minus(model_.coords[entry.second], x)));
+    for (const auto& entry : by_x_)
+      best = std::min(best, norm(minus(model_.coords[entry.second], x)));
     return best;
   }
 
@@ -87,8 +88,7 @@ std::vector<int> bodies(const Model& model) {
   };
   for (int e = 0; e < model.element_count(); ++e) {
     const int* nodes = model.element_nodes(e);
-    for (int k = 1; k < model.elements[e].node_count; ++k)
-      parent[root(nodes[k])] = root(nodes[0]);
+    for (int k = 1; k < model.elements[e].node_count; ++k) parent[root(nodes[k])] = root(nodes[0]);
   }
   for (int n = 0; n < model.node_count(); ++n) parent[n] = root(n);
   return parent;
@@ -148,8 +148,7 @@ ResolvedCyclicSymmetry resolve_one(const Model& model, const ElementRegistry& re
   const Matrix3 forward = rotation_about(out.axis, sector);
   const Matrix3 backward = rotation_about(out.axis, -sector);
   const int first_body = body_of[off.front()];
-  if (locator.nearest(image(forward, off.front()), tolerance, distance, body_of, first_body) >=
-      0) {
+  if (locator.nearest(image(forward, off.front()), tolerance, distance, body_of, first_body) >= 0) {
     out.angle = sector;
     out.rotation = forward;
   } else if (locator.nearest(image(backward, off.front()), tolerance, distance, body_of,
@@ -162,8 +161,7 @@ ResolvedCyclicSymmetry resolve_one(const Model& model, const ElementRegistry& re
         "cyclic *TIE " + tie.tie + ": slave " + node_name(model, off.front()) +
             " turned by the sector angle 360/" + std::to_string(tie.sectors) +
             " (either way) about the axis meets no node of master surface " + tie.master +
-            " within the position tolerance " + std::to_string(tolerance) +
-            " (nearest at " +
+            " within the position tolerance " + std::to_string(tolerance) + " (nearest at " +
             std::to_string(locator.nearest_distance(image(forward, off.front()))) +
             "): is N the number of sectors of the geometry, and do the meshes of the two "
             "boundaries match? (Styk ties matching meshes only)");
@@ -173,13 +171,13 @@ ResolvedCyclicSymmetry resolve_one(const Model& model, const ElementRegistry& re
     const int master =
         locator.nearest(image(out.rotation, node), tolerance, distance, body_of, body_of[node]);
     if (master < 0)
-      throw InputError(tie.where, "cyclic *TIE " + tie.tie + ": slave " + node_name(model, node) +
-                                      " has no node of master surface " + tie.master +
-                                      " within the position tolerance " +
-                                      std::to_string(tolerance) + " of its image (nearest at " +
-                                      std::to_string(locator.nearest_distance(
-                                          image(out.rotation, node))) +
-                                      "); Styk ties matching meshes only");
+      throw InputError(tie.where,
+                       "cyclic *TIE " + tie.tie + ": slave " + node_name(model, node) +
+                           " has no node of master surface " + tie.master +
+                           " within the position tolerance " + std::to_string(tolerance) +
+                           " of its image (nearest at " +
+                           std::to_string(locator.nearest_distance(image(out.rotation, node))) +
+                           "); Styk ties matching meshes only");
     if (master == node)
       throw InputError(tie.where, "cyclic *TIE " + tie.tie + ": " + node_name(model, node) +
                                       " belongs to both surfaces but is not on the axis");
@@ -196,9 +194,7 @@ ResolvedCyclicSymmetry resolve_one(const Model& model, const ElementRegistry& re
 
 }  // namespace
 
-Vec3 rotate(const Matrix3& Q, const Vec3& v) {
-  return {dot(Q[0], v), dot(Q[1], v), dot(Q[2], v)};
-}
+Vec3 rotate(const Matrix3& Q, const Vec3& v) { return {dot(Q[0], v), dot(Q[1], v), dot(Q[2], v)}; }
 
 std::vector<int> surface_node_list(const Model& model, const ElementRegistry& registry,
                                    const Surface& surface) {
@@ -227,8 +223,8 @@ std::vector<ResolvedCyclicSymmetry> resolve_cyclic_symmetries(const Model& model
   const std::vector<int> body_of = bodies(model);
   for (const CyclicSymmetry& tie : model.cyclic_symmetries) {
     if (tie.sectors < 2)
-      throw InputError(tie.where,
-                       "cyclic *TIE " + tie.tie + " has no *CYCLIC SYMMETRY MODEL (N= and the axis)");
+      throw InputError(
+          tie.where, "cyclic *TIE " + tie.tie + " has no *CYCLIC SYMMETRY MODEL (N= and the axis)");
     out.push_back(resolve_one(model, registry, tie, size, body_of));
   }
   // A node tied by two ties would be eliminated twice.

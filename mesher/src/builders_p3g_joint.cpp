@@ -153,8 +153,7 @@ BuildResult p3g_joint(const BuilderParams& p, const ElementRegistry& registry) {
       "SPEC 4.5 P3G polygon joint (DIN 32711, D 60, n 3, e 2.25), " + fam +
           ": shaft 120 (round D65 to z 80, z 0 fixed), hub z 80-120 = arm D80 x 20 + flange "
           "D155 x 20, frictionless bore; " +
-          fmt_number(torque) +
-          " N m on the flange rim" +
+          fmt_number(torque) + " N m on the flange rim" +
           (sector ? " (120 deg sector with cyclic symmetry, N = 3: a third of it)" : "") +
           ". Published: max displacement 0.41 mm at the flange rim, max "
           "Mises 141 MPa in the hub, the contact recedes",

@@ -266,8 +266,7 @@ BuildResult spline_joint(const BuilderParams& p, const ElementRegistry& registry
           ": 6 splines D67/d61.18, w 12.48; shaft 120 (round D61.18 to z 80, z 0 fixed), hub "
           "z 80-120 = arm D80 x 20 + flange D155 x 20, radial clearance " +
           fmt_number(m.clearance) + " at tips and roots, frictionless flanks; " +
-          fmt_number(torque) +
-          " N m on the flange rim" +
+          fmt_number(torque) + " N m on the flange rim" +
           (sector ? " (120 deg sector with cyclic symmetry, N = 3: a third of it)" : "") +
           ". Published: max Mises about 35 MPa, flank pressure 0-166 MPa",
       {{"SHAFT", "SHAFT", E, nu, {}}, {"HUB", "HUB", E, nu, {}}});

@@ -110,8 +110,8 @@ std::vector<ConcentratedLoad> rim_torque_loads(const Model& model, const Element
 
 ParamDecl sector_param(int sectors) {
   return {"sector", "no",
-          "yes: a " + std::to_string(360 / sectors) + " deg sector (N = " +
-              std::to_string(sectors) +
+          "yes: a " + std::to_string(360 / sectors) +
+              " deg sector (N = " + std::to_string(sectors) +
               ") with *TIE, CYCLIC SYMMETRY instead of the full model (same mesh density)"};
 }
 

@@ -8,12 +8,12 @@
 #include <string>
 #include <vector>
 
+#include "sector_support.hpp"
 #include "styk/core/element_registry.hpp"
 #include "styk/core/model.hpp"
 #include "styk/mesher/builders.hpp"
 #include "styk/mesher/geometry_maps.hpp"
 #include "styk/mesher/mesh.hpp"
-#include "sector_support.hpp"
 
 namespace styk::mesher::detail {
 

@@ -150,11 +150,11 @@ std::string full_slip_report(const Model& model, const IncrementResult& incremen
   int closed = 0;
   for (const ContactNodeResult& c : increment.contact)
     closed += c.pair == pair && c.status != ContactStatus::Open ? 1 : 0;
-  std::string text = "contact pair " + cp.slave + "/" + cp.master +
-                     format(": full slip, all %.0f closed slave nodes slip; contact force ", closed) +
-                     format("(%.6g, %.6g, %.6g), ", r.force[0], r.force[1], r.force[2]) +
-                     format("moment (%.6g, %.6g, %.6g) about the origin", r.moment[0],
-                            r.moment[1], r.moment[2]);
+  std::string text =
+      "contact pair " + cp.slave + "/" + cp.master +
+      format(": full slip, all %.0f closed slave nodes slip; contact force ", closed) +
+      format("(%.6g, %.6g, %.6g), ", r.force[0], r.force[1], r.force[2]) +
+      format("moment (%.6g, %.6g, %.6g) about the origin", r.moment[0], r.moment[1], r.moment[2]);
   for (const CyclicSymmetry& c : model.cyclic_symmetries) {
     const Vec3 d{c.b[0] - c.a[0], c.b[1] - c.a[1], c.b[2] - c.a[2]};
     const double length = norm(d);
@@ -428,8 +428,7 @@ Results run_contact_analysis(const Model& model, const ElementRegistry& registry
         recover_increment(model, prepared, input, threads, increment);
         averaging.apply(threads, increment);
         contact::fill_contact_results(model, constraints, state, increment);
-        increment.penetrations =
-            penetration_results(model, fluid_layout, state, fluid_pressures);
+        increment.penetrations = penetration_results(model, fluid_layout, state, fluid_pressures);
         check_equilibrium(to_global(kinematic, f_t), increment, constraints, state,
                           increment.contact_equilibrium);
       }

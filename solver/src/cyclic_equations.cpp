@@ -35,7 +35,8 @@ void add_pair(const Model& model, const PreparedModel& prepared, const NodeRotat
                                 " belongs to no element, but its partner node " +
                                 std::to_string(model.node_ids[s < 0 ? pair.master : pair.slave]) +
                                 " does");
-  const Eigen::Matrix3d M = axes_of(rotations, s).transpose() * Q.transpose() * axes_of(rotations, m);
+  const Eigen::Matrix3d M =
+      axes_of(rotations, s).transpose() * Q.transpose() * axes_of(rotations, m);
   for (int i = 0; i < 3; ++i) {
     Equation e;
     e.where = where;

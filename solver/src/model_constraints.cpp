@@ -12,8 +12,8 @@ ModelConstraints ModelConstraints::build(const Model& model, const PreparedModel
                                          const ElementRegistry& registry) {
   ModelConstraints out;
   out.rotations_ = NodeRotations::from_transforms(model, prepared);
-  out.cyclic_ = cyclic_equations(model, prepared, out.rotations_,
-                                 resolve_cyclic_symmetries(model, registry));
+  out.cyclic_ =
+      cyclic_equations(model, prepared, out.rotations_, resolve_cyclic_symmetries(model, registry));
   out.equations_ = EquationElimination::build(model, prepared, out.cyclic_);
   return out;
 }

@@ -17,9 +17,10 @@ std::vector<StepPenetration> accumulate_penetrations(const Model& model) {
     StepPenetration current;
     if (!step.penetration_op_new) current.definitions = previous.definitions;
     for (const PressurePenetration& pp : step.penetrations) {
-      const auto same = std::find_if(
-          current.definitions.begin(), current.definitions.end(),
-          [&](const PressurePenetration* d) { return d->slave == pp.slave && d->master == pp.master; });
+      const auto same = std::find_if(current.definitions.begin(), current.definitions.end(),
+                                     [&](const PressurePenetration* d) {
+                                       return d->slave == pp.slave && d->master == pp.master;
+                                     });
       if (same != current.definitions.end())
         *same = &pp;
       else

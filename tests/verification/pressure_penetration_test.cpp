@@ -1,4 +1,4 @@
-// Pressure penetration (*PRESSURE PENETRATION, docs/contact.md; issue 13 item 1) on two stacked
+// Pressure penetration (*PRESSURE PENETRATION, docs/contact.md) on two stacked
 // columns pressed together by a prescribed shortening, a fluid entering their interface at the
 // edge x = 0, the LEAK set at the far edge x = 4.
 //
@@ -92,7 +92,8 @@ Results solve(const Model& model) {
 TEST(PressurePenetration, UniformColumnsOpenWhenTheFluidPressureReachesTheContactPressure) {
   Model model = columns();
   const double q0 = 10.0;
-  add_steps(model, [&](double) { return -2 * q0 / kYoung; }, 16.0, 1e6, 7);
+  add_steps(
+      model, [&](double) { return -2 * q0 / kYoung; }, 16.0, 1e6, 7);
   const Results results = solve(model);
   int open_increment = 0;
   for (const IncrementResult& inc : results.increments) {
@@ -140,9 +141,10 @@ TEST(PressurePenetration, FrontMovesWithTheFluidAndStaysConsistentWithTheContact
     for (int k = 0; k < 8; ++k) x += model.coords[model.element_nodes(e)[k]][0] / 8;
     if (x > 2) preload.dloads.push_back({e, 2, 1.0, {}});
   }
-  test::fix(model, test::nodes_where(model, [](const Vec3& x) {
-              return near(x[0], 4) && x[2] > 1 + 1e-9;
-            }), {3});
+  test::fix(
+      model,
+      test::nodes_where(model, [](const Vec3& x) { return near(x[0], 4) && x[2] > 1 + 1e-9; }),
+      {3});
   Step fluid;
   fluid.name = "FLUID";
   fluid.has_procedure = true;

@@ -4,7 +4,7 @@
 // (N sin alpha) plus friction (mu N cos alpha); with alpha = 2.86 deg friction is not what holds
 // it. A solver that treats the pin as held by friction alone reports a false loss of capacity
 // ("friction capacity exceeded": the failure of samples/spec-4.3-conical-fit-c3d21-mu0.2.inp
-// before issue 13). Checked for mu = 0, 0.2, 0.4:
+// before the fix). Checked for mu = 0, 0.2, 0.4:
 // - the step converges and the pin is held: the sleeve base's axial reaction balances the push
 //   (the pressure's resultant on the quarter, 20 MPa x pi 11.25^2 / 4 = 1988.05 N to 1e-4, the
 //   quadratic faces' interpolation of the circle) to 1e-8;
@@ -89,8 +89,9 @@ TEST(Spec43ConicalFit, PinHeldByTheTaperForEveryFrictionCoefficient) {
       EXPECT_NEAR(r.normal_sum * std::sin(alpha), push, 1e-6 * push);
     else
       EXPECT_GE(r.normal_sum * (std::sin(alpha) + m * std::cos(alpha)), push * (1 - 1e-9));
-    std::printf("conical fit mu %s: push %.2f N, normal forces %.1f N, pin Mises below z = 15 %.2f MPa\n",
-                mu.c_str(), push, r.normal_sum, r.max_mises);
+    std::printf(
+        "conical fit mu %s: push %.2f N, normal forces %.1f N, pin Mises below z = 15 %.2f MPa\n",
+        mu.c_str(), push, r.normal_sum, r.max_mises);
     by_mu[mu] = r;
   }
   // Friction shares the load, so less normal force is needed.

@@ -122,8 +122,8 @@ void write_contact_and_constraints(const Model& model, std::ostream& out) {
     if (c.position_tolerance)
       out << ", POSITION TOLERANCE=" << shortest_number(*c.position_tolerance);
     out << '\n' << c.slave << ", " << c.master << '\n';
-    out << "*CYCLIC SYMMETRY MODEL, N=" << c.sectors << ", NGRAPH=" << c.ngraph
-        << ", TIE=" << c.tie << '\n';
+    out << "*CYCLIC SYMMETRY MODEL, N=" << c.sectors << ", NGRAPH=" << c.ngraph << ", TIE=" << c.tie
+        << '\n';
     write_axes(LocalAxes{CoordinateSystem::Cylindrical, c.a, c.b}, out);
   }
   if (!model.initial_temperatures.empty()) {

@@ -20,21 +20,20 @@ void DeckReader::on_tie(const KeywordLine& kw) {
   tie.where = kw.where;
   for (const CyclicSymmetry& other : model_.cyclic_symmetries)
     if (other.tie == tie.tie)
-      throw InputError(kw.where, "*TIE " + tie.tie + " is defined twice (first at " +
-                                     other.where.str() + ")");
+      throw InputError(
+          kw.where, "*TIE " + tie.tie + " is defined twice (first at " + other.where.str() + ")");
   if (const Parameter* p = kw.find("POSITION TOLERANCE")) {
     const double value = real_value(p->value, "POSITION TOLERANCE", kw.where);
     if (!(value > 0.0))
       throw InputError(kw.where, "POSITION TOLERANCE must be positive, read " + p->value);
     tie.position_tolerance = value;
   }
-  const std::optional<DataLine> line =
-      single_data_line(kw, true, "slave surface, master surface");
+  const std::optional<DataLine> line = single_data_line(kw, true, "slave surface, master surface");
   expect_fields(*line, 2, 2, "slave surface, master surface");
   for (std::size_t i = 0; i < 2; ++i)
     if (line->fields[i].empty())
-      throw InputError(line->where, std::string(i == 0 ? "the slave" : "the master") +
-                                        " surface name is empty");
+      throw InputError(line->where,
+                       std::string(i == 0 ? "the slave" : "the master") + " surface name is empty");
   tie.slave = normalize_name(line->fields[0]);
   tie.master = normalize_name(line->fields[1]);
   if (tie.slave == tie.master)
@@ -69,8 +68,8 @@ void DeckReader::on_cyclic_symmetry_model(const KeywordLine& kw) {
                                    tie->model_where.str() + ")");
   const std::int64_t n = integer_value(kw.find("N")->value, "N", kw.where);
   if (n < 2 || n > 100000)
-    throw InputError(kw.where, "N=" + kw.find("N")->value +
-                                   ": the number of sectors must be at least 2");
+    throw InputError(kw.where,
+                     "N=" + kw.find("N")->value + ": the number of sectors must be at least 2");
   tie->sectors = static_cast<int>(n);
   if (const Parameter* ngraph = kw.find("NGRAPH")) {
     const std::int64_t g = integer_value(ngraph->value, "NGRAPH", kw.where);
@@ -86,8 +85,8 @@ void DeckReader::on_cyclic_symmetry_model(const KeywordLine& kw) {
     tie->a[i] = real_field(*line, i, std::string("coordinate ") + names[i]);
     tie->b[i] = real_field(*line, i + 3, std::string("coordinate ") + names[i + 3]);
   }
-  const double length = std::hypot(tie->b[0] - tie->a[0], tie->b[1] - tie->a[1],
-                                    tie->b[2] - tie->a[2]);
+  const double length =
+      std::hypot(tie->b[0] - tie->a[0], tie->b[1] - tie->a[1], tie->b[2] - tie->a[2]);
   const double scale = std::max({std::hypot(tie->a[0], tie->a[1], tie->a[2]),
                                  std::hypot(tie->b[0], tie->b[1], tie->b[2]), 1e-300});
   if (!(length > 1e-12 * scale))
@@ -98,13 +97,13 @@ void DeckReader::on_cyclic_symmetry_model(const KeywordLine& kw) {
 void DeckReader::resolve_cyclic_references() {
   for (const CyclicSymmetry& tie : model_.cyclic_symmetries) {
     if (tie.sectors == 0)
-      throw InputError(tie.where, "cyclic *TIE " + tie.tie +
-                                      " has no *CYCLIC SYMMETRY MODEL (N= and the axis)");
+      throw InputError(
+          tie.where, "cyclic *TIE " + tie.tie + " has no *CYCLIC SYMMETRY MODEL (N= and the axis)");
     for (const std::string* name : {&tie.slave, &tie.master})
       if (!model_.surfaces.count(*name))
-        throw InputError(tie.where, "*TIE names surface " + *name +
-                                        ", which is not defined; surfaces: " +
-                                        some_names(model_.surfaces));
+        throw InputError(tie.where,
+                         "*TIE names surface " + *name +
+                             ", which is not defined; surfaces: " + some_names(model_.surfaces));
   }
 }
 

@@ -71,10 +71,9 @@ void DeckReader::on_pressure_penetration(const KeywordLine& kw) {
     const std::vector<int> slave = nodes_of(*line, 0, "exposed slave node or node set");
     const std::vector<int> master = nodes_of(*line, 1, "exposed master node or node set");
     const double pressure = real_field(*line, 2, "fluid pressure");
-    const double critical =
-        line->fields.size() > 3 && !line->fields[3].empty()
-            ? real_field(*line, 3, "critical contact pressure")
-            : 0.0;
+    const double critical = line->fields.size() > 3 && !line->fields[3].empty()
+                                ? real_field(*line, 3, "critical contact pressure")
+                                : 0.0;
     if (critical < 0.0)
       throw InputError(line->where, "the critical contact pressure must not be negative, read " +
                                         line->fields[3]);
@@ -110,10 +109,9 @@ void DeckReader::resolve_penetration_references() {
           model_.contact_pairs.begin(), model_.contact_pairs.end(),
           [&](const ContactPair& p) { return p.slave == pp.slave && p.master == pp.master; });
       if (pair == model_.contact_pairs.end())
-        throw InputError(pp.where, "*PRESSURE PENETRATION: no *CONTACT PAIR has slave " +
-                                       pp.slave + " and master " + pp.master);
-      const std::vector<int> slave =
-          surface_nodes(model_, registry_, model_.surfaces.at(pp.slave));
+        throw InputError(pp.where, "*PRESSURE PENETRATION: no *CONTACT PAIR has slave " + pp.slave +
+                                       " and master " + pp.master);
+      const std::vector<int> slave = surface_nodes(model_, registry_, model_.surfaces.at(pp.slave));
       const std::vector<int> master =
           surface_nodes(model_, registry_, model_.surfaces.at(pp.master));
       if (const int node = first_outside(pp.exposed_slave, slave); node >= 0)

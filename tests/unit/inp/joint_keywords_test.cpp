@@ -187,8 +187,9 @@ TEST(JointKeywords, RefusesWhatItDoesNotSupportByName) {
                    "ELSET=A\n0,0,0,0,0,1\n" +
                    step,
                "*CYCLIC SYMMETRY MODEL", "unknown parameter ELSET");
-  expect_error("no_model.inp", std::string(kBlocks) + "*TIE, NAME=T, CYCLIC SYMMETRY\nLEFT, RIGHT\n" + step,
-               "*TIE", "no *CYCLIC SYMMETRY MODEL");
+  expect_error("no_model.inp",
+               std::string(kBlocks) + "*TIE, NAME=T, CYCLIC SYMMETRY\nLEFT, RIGHT\n" + step, "*TIE",
+               "no *CYCLIC SYMMETRY MODEL");
   expect_error("axis.inp",
                std::string(kBlocks) +
                    "*TIE, NAME=T, CYCLIC SYMMETRY\nLEFT, RIGHT\n*CYCLIC SYMMETRY MODEL, N=4\n1,2,"
@@ -196,8 +197,9 @@ TEST(JointKeywords, RefusesWhatItDoesNotSupportByName) {
                    step,
                "1,2,3,1,2,3", "coincide");
   expect_error("surface.inp",
-               std::string(kBlocks) + "*TIE, NAME=T, CYCLIC SYMMETRY\nLEFT, NOWHERE\n*CYCLIC "
-                                      "SYMMETRY MODEL, N=4\n0,0,0,0,0,1\n" +
+               std::string(kBlocks) +
+                   "*TIE, NAME=T, CYCLIC SYMMETRY\nLEFT, NOWHERE\n*CYCLIC "
+                   "SYMMETRY MODEL, N=4\n0,0,0,0,0,1\n" +
                    step,
                "*TIE", "NOWHERE");
   const std::string pp = "*STEP\n*STATIC\n*PRESSURE PENETRATION, SLAVE=B_BOTTOM, MASTER=A_TOP";
@@ -214,8 +216,9 @@ TEST(JointKeywords, RefusesWhatItDoesNotSupportByName) {
                "*PRESSURE PENETRATION", "no *CONTACT PAIR");
   expect_error("exposed.inp", std::string(kBlocks) + pp + "\n1, 5, 1.\n*END STEP\n",
                "*PRESSURE PENETRATION", "not a node of the slave surface");
-  expect_error("two_pressures.inp", std::string(kBlocks) + pp + "\n11, 5, 1.\n14, 8, 2.\n*END STEP\n",
-               "14, 8, 2.", "same fluid and critical pressures");
+  expect_error("two_pressures.inp",
+               std::string(kBlocks) + pp + "\n11, 5, 1.\n14, 8, 2.\n*END STEP\n", "14, 8, 2.",
+               "same fluid and critical pressures");
   expect_error("critical.inp", std::string(kBlocks) + pp + "\n11, 5, 1., -1.\n*END STEP\n",
                "11, 5, 1., -1.", "must not be negative");
   expect_error("model_level.inp",

@@ -31,15 +31,15 @@ struct FluidPenetration {
   std::vector<double> force;     // per constraint: fluid pressure x nodal area (0: no fluid)
   std::vector<double> critical;  // per constraint: critical contact pressure x nodal area
   std::vector<std::vector<int>> neighbours;  // per constraint: constraints sharing a slave face
-  std::vector<char> entry;       // per constraint: the fluid enters here
+  std::vector<char> entry;                   // per constraint: the fluid enters here
   bool empty() const { return force.empty(); }
 };
 
 struct LinearContactSystem {
-  Eigen::VectorXd d0;  // 3 m
-  Eigen::MatrixXd S;   // 3 m x 3 m; columns of components that cannot carry force may be zero
-  Eigen::MatrixXd G;   // 3 m x k
-  Eigen::VectorXd h;   // k
+  Eigen::VectorXd d0;      // 3 m
+  Eigen::MatrixXd S;       // 3 m x 3 m; columns of components that cannot carry force may be zero
+  Eigen::MatrixXd G;       // 3 m x k
+  Eigen::VectorXd h;       // k
   FluidPenetration fluid;  // empty: no pressure penetration
 };
 

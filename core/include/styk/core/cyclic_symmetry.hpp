@@ -22,8 +22,8 @@ struct CyclicNodePair {
 
 struct ResolvedCyclicSymmetry {
   const CyclicSymmetry* definition = nullptr;
-  Vec3 point{};   // a point on the axis (CyclicSymmetry::a)
-  Vec3 axis{};    // unit axis direction (a -> b)
+  Vec3 point{};        // a point on the axis (CyclicSymmetry::a)
+  Vec3 axis{};         // unit axis direction (a -> b)
   double angle = 0.0;  // signed sector angle about `axis` from the slave side to the master side
   Matrix3 rotation{};  // Q: x_master - point = Q (x_slave - point); vectors map the same way
   std::vector<CyclicNodePair> pairs;  // sorted by slave
