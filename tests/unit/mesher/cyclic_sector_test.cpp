@@ -5,7 +5,9 @@
 //   sector's reactions a quarter of the full model's (torque and axial force);
 // - frictional contact: the shrink fit's model B (SPEC §4.2) heated and twisted by force couples,
 //   full and as the builder's sector (--sector yes);
-// - frictionless contact: the P3G joint (SPEC §4.5) full and as its 120 deg sector.
+// - frictionless contact: the spline (SPEC §4.4) and P3G (SPEC §4.5) joints full and as their
+//   120 deg sectors;
+// - CalculiX solving the linear sector deck alike.
 #include <cmath>
 #include <cstdio>
 #include <cstdlib>
@@ -237,12 +239,12 @@ TEST(CyclicSector, ShrinkFitModelBSectorEqualsFullModel) {
               c.displacement, c.pressure);
   EXPECT_GT(c.contact_nodes, 0);
   EXPECT_EQ(c.status_differences, 0);
-  EXPECT_LE(c.displacement, 1e-6);
-  EXPECT_LE(c.pressure, 1e-6);
+  EXPECT_LE(c.displacement, 1e-9);
+  EXPECT_LE(c.pressure, 1e-9);
   // The contact moment about the axis: a quarter of the full model's (to the same tolerance).
   const double mf = full.results.increments.back().contact_pairs.at(0).moment[2];
   const double ms = sector.results.increments.back().contact_pairs.at(0).moment[2];
-  EXPECT_NEAR(4 * ms, mf, 1e-6 * std::abs(mf));
+  EXPECT_NEAR(4 * ms, mf, 1e-9 * std::abs(mf));
 }
 
 // SPEC §4.5 P3G joint, coarse, frictionless: the 120 deg sector (N = 3) against the full model,
@@ -258,6 +260,27 @@ TEST(CyclicSector, P3gSectorEqualsFullModel) {
   const Solved sector = build_and_solve("p3g-joint", args, elements.registry, "sector");
   const Comparison c = compare(full, sector, {"SHAFT", "HUB"});
   std::printf("P3G: %d contact nodes, displacement %.3g, pressure %.3g\n", c.contact_nodes,
+              c.displacement, c.pressure);
+  EXPECT_GT(c.contact_nodes, 0);
+  EXPECT_EQ(c.status_differences, 0);
+  EXPECT_LE(c.displacement, 1e-9);
+  EXPECT_LE(c.pressure, 1e-9);
+}
+
+// SPEC §4.4 spline joint, coarse, frictionless flanks with the 0.1 radial clearance: the 120 deg
+// sector (N = 3, two of the six splines) against the full model, to the active set's tolerance
+// 1e-9 like the P3G joint (one flank side per spline closes; the rest is linear).
+TEST(CyclicSector, SplineSectorEqualsFullModel) {
+  const test::Elements elements;
+  std::map<std::string, std::string> args = {
+      {"tooth", "2"},       {"groove", "2"},     {"flank-rows", "1"}, {"arm-rows", "1"},
+      {"flange-rows", "1"}, {"shaft-rows", "2"}, {"hub-rings", "1"},  {"flange-rings", "2"},
+      {"element", "C3D21"}};
+  const Solved full = build_and_solve("spline-joint", args, elements.registry, "full");
+  args["sector"] = "yes";
+  const Solved sector = build_and_solve("spline-joint", args, elements.registry, "sector");
+  const Comparison c = compare(full, sector, {"SHAFT", "HUB"});
+  std::printf("spline: %d contact nodes, displacement %.3g, pressure %.3g\n", c.contact_nodes,
               c.displacement, c.pressure);
   EXPECT_GT(c.contact_nodes, 0);
   EXPECT_EQ(c.status_differences, 0);
