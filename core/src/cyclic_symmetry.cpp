@@ -98,16 +98,15 @@ std::string node_name(const Model& model, int node) {
   return "node " + std::to_string(model.node_ids[node]);
 }
 
-ResolvedCyclicSymmetry resolve_one(const Model& model, const ElementRegistry& registry,
-                                   const CyclicSymmetry& tie, double size,
-                                   const std::vector<int>& body_of) {
-  ResolvedCyclicSymmetry out;
-  out.definition = &tie;
-  out.point = tie.a;
-  const Vec3 direction = minus(tie.b, tie.a);
-  const double length = norm(direction);
-  out.axis = {direction[0] / length, direction[1] / length, direction[2] / length};
-  const double tolerance = tie.position_tolerance.value_or(1e-6 * size);
+// The tie's axis, its surfaces' nodes split into those on the axis (within `tolerance`) and the
+// off-axis slave nodes the tie pairs.
+struct TieNodes {
+  std::vector<int> off_axis_slaves, masters;
+};
+
+TieNodes split_axis_nodes(const Model& model, const ElementRegistry& registry,
+                          const CyclicSymmetry& tie, double tolerance,
+                          ResolvedCyclicSymmetry& out) {
   const auto surface = [&](const std::string& name) -> const Surface& {
     const auto it = model.surfaces.find(name);
     if (it == model.surfaces.end())
@@ -115,69 +114,76 @@ ResolvedCyclicSymmetry resolve_one(const Model& model, const ElementRegistry& re
     return it->second;
   };
   const std::vector<int> slaves = surface_node_list(model, registry, surface(tie.slave));
-  const std::vector<int> masters = surface_node_list(model, registry, surface(tie.master));
-  if (slaves.empty() || masters.empty())
+  TieNodes nodes;
+  nodes.masters = surface_node_list(model, registry, surface(tie.master));
+  if (slaves.empty() || nodes.masters.empty())
     throw InputError(tie.where, "cyclic *TIE " + tie.tie + ": a surface has no nodes");
-  const auto off_axis = [&](int node) {
+  const auto on_axis = [&](int node) {
     const Vec3 r = minus(model.coords[node], out.point);
     const double along = dot(r, out.axis);
-    return norm(minus(r, Vec3{along * out.axis[0], along * out.axis[1], along * out.axis[2]}));
+    return norm(minus(r, Vec3{along * out.axis[0], along * out.axis[1], along * out.axis[2]})) <=
+           tolerance;
   };
-  const Locator locator(model, masters);
-  const double sector = 2.0 * kPi / tie.sectors;
-
-  // The sense of rotation: the one under which the first off-axis slave node finds its master.
-  std::vector<int> off;
-  for (int node : slaves) {
-    if (off_axis(node) <= tolerance)
-      out.axis_nodes.push_back(node);
-    else
-      off.push_back(node);
-  }
-  for (int node : masters)
-    if (off_axis(node) <= tolerance) out.axis_nodes.push_back(node);
+  for (int node : slaves) (on_axis(node) ? out.axis_nodes : nodes.off_axis_slaves).push_back(node);
+  for (int node : nodes.masters)
+    if (on_axis(node)) out.axis_nodes.push_back(node);
   std::sort(out.axis_nodes.begin(), out.axis_nodes.end());
   out.axis_nodes.erase(std::unique(out.axis_nodes.begin(), out.axis_nodes.end()),
                        out.axis_nodes.end());
-  if (off.empty())
+  if (nodes.off_axis_slaves.empty())
     throw InputError(tie.where, "cyclic *TIE " + tie.tie + ": every slave node lies on the axis");
-  const auto image = [&](const Matrix3& Q, int node) {
-    return plus(out.point, rotate(Q, minus(model.coords[node], out.point)));
-  };
+  return nodes;
+}
+
+Vec3 image(const Model& model, const ResolvedCyclicSymmetry& out, const Matrix3& Q, int node) {
+  return plus(out.point, rotate(Q, minus(model.coords[node], out.point)));
+}
+
+// The sense of rotation: the one under which the first off-axis slave node finds its master.
+void choose_sense(const Model& model, const CyclicSymmetry& tie, const Locator& locator,
+                  const std::vector<int>& body_of, int first, double tolerance,
+                  ResolvedCyclicSymmetry& out) {
+  const double sector = 2.0 * kPi / tie.sectors;
   double distance = 0.0;
   const Matrix3 forward = rotation_about(out.axis, sector);
   const Matrix3 backward = rotation_about(out.axis, -sector);
-  const int first_body = body_of[off.front()];
-  if (locator.nearest(image(forward, off.front()), tolerance, distance, body_of, first_body) >= 0) {
+  const int body = body_of[first];
+  if (locator.nearest(image(model, out, forward, first), tolerance, distance, body_of, body) >= 0) {
     out.angle = sector;
     out.rotation = forward;
-  } else if (locator.nearest(image(backward, off.front()), tolerance, distance, body_of,
-                             first_body) >= 0) {
+  } else if (locator.nearest(image(model, out, backward, first), tolerance, distance, body_of,
+                             body) >= 0) {
     out.angle = -sector;
     out.rotation = backward;
   } else {
     throw InputError(
         tie.where,
-        "cyclic *TIE " + tie.tie + ": slave " + node_name(model, off.front()) +
+        "cyclic *TIE " + tie.tie + ": slave " + node_name(model, first) +
             " turned by the sector angle 360/" + std::to_string(tie.sectors) +
             " (either way) about the axis meets no node of master surface " + tie.master +
             " within the position tolerance " + std::to_string(tolerance) + " (nearest at " +
-            std::to_string(locator.nearest_distance(image(forward, off.front()))) +
+            std::to_string(locator.nearest_distance(image(model, out, forward, first))) +
             "): is N the number of sectors of the geometry, and do the meshes of the two "
             "boundaries match? (Styk ties matching meshes only)");
   }
+}
+
+// Every off-axis slave node with the master node at its image, each master claimed once.
+void pair_nodes(const Model& model, const CyclicSymmetry& tie, const Locator& locator,
+                const std::vector<int>& body_of, const std::vector<int>& off, double tolerance,
+                ResolvedCyclicSymmetry& out) {
+  double distance = 0.0;
   std::map<int, int> claimed;  // master -> slave
   for (int node : off) {
-    const int master =
-        locator.nearest(image(out.rotation, node), tolerance, distance, body_of, body_of[node]);
+    const Vec3 target = image(model, out, out.rotation, node);
+    const int master = locator.nearest(target, tolerance, distance, body_of, body_of[node]);
     if (master < 0)
-      throw InputError(tie.where,
-                       "cyclic *TIE " + tie.tie + ": slave " + node_name(model, node) +
-                           " has no node of master surface " + tie.master +
-                           " within the position tolerance " + std::to_string(tolerance) +
-                           " of its image (nearest at " +
-                           std::to_string(locator.nearest_distance(image(out.rotation, node))) +
-                           "); Styk ties matching meshes only");
+      throw InputError(tie.where, "cyclic *TIE " + tie.tie + ": slave " + node_name(model, node) +
+                                      " has no node of master surface " + tie.master +
+                                      " within the position tolerance " +
+                                      std::to_string(tolerance) + " of its image (nearest at " +
+                                      std::to_string(locator.nearest_distance(target)) +
+                                      "); Styk ties matching meshes only");
     if (master == node)
       throw InputError(tie.where, "cyclic *TIE " + tie.tie + ": " + node_name(model, node) +
                                       " belongs to both surfaces but is not on the axis");
@@ -189,6 +195,22 @@ ResolvedCyclicSymmetry resolve_one(const Model& model, const ElementRegistry& re
                                       node_name(model, node));
     out.pairs.push_back({node, master});
   }
+}
+
+ResolvedCyclicSymmetry resolve_one(const Model& model, const ElementRegistry& registry,
+                                   const CyclicSymmetry& tie, double size,
+                                   const std::vector<int>& body_of) {
+  ResolvedCyclicSymmetry out;
+  out.definition = &tie;
+  out.point = tie.a;
+  const Vec3 direction = minus(tie.b, tie.a);
+  const double length = norm(direction);
+  out.axis = {direction[0] / length, direction[1] / length, direction[2] / length};
+  const double tolerance = tie.position_tolerance.value_or(1e-6 * size);
+  const TieNodes nodes = split_axis_nodes(model, registry, tie, tolerance, out);
+  const Locator locator(model, nodes.masters);
+  choose_sense(model, tie, locator, body_of, nodes.off_axis_slaves.front(), tolerance, out);
+  pair_nodes(model, tie, locator, body_of, nodes.off_axis_slaves, tolerance, out);
   return out;
 }
 

@@ -273,9 +273,9 @@ TEST(CyclicSector, P3gSectorEqualsFullModel) {
 TEST(CyclicSector, SplineSectorEqualsFullModel) {
   const test::Elements elements;
   std::map<std::string, std::string> args = {
-      {"tooth", "2"},       {"groove", "2"},     {"flank-rows", "1"}, {"arm-rows", "1"},
-      {"flange-rows", "1"}, {"shaft-rows", "2"}, {"hub-rings", "1"},  {"flange-rings", "2"},
-      {"element", "C3D21"}};
+      {"tooth", "2"},     {"groove", "2"},       {"flank-rows", "1"},
+      {"arm-rows", "1"},  {"flange-rows", "1"},  {"shaft-rows", "2"},
+      {"hub-rings", "1"}, {"flange-rings", "2"}, {"element", "C3D21"}};
   const Solved full = build_and_solve("spline-joint", args, elements.registry, "full");
   args["sector"] = "yes";
   const Solved sector = build_and_solve("spline-joint", args, elements.registry, "sector");
