@@ -34,7 +34,7 @@ m spec-3.2.4-punch-halfspace-c3d21-mu0.04.inp punch-halfspace --element C3D21 --
 m spec-3.2.4-punch-halfspace-c3d28-mu0.04.inp punch-halfspace --element C3D28 --mu 0.04
 m spec-3.2.4-punch-halfspace-c3d21-aniso.inp punch-halfspace --element C3D21 --mu 0.04 --mu2 0.4
 m spec-4.2-shrink-fit-A-c3d21-axial.inp shrink-fit --model A --element C3D21 --load-case axial
-m spec-4.2-shrink-fit-B-c3d21-torque.inp shrink-fit --model B --element C3D21 --load-case torque
+m spec-4.2-shrink-fit-B-sector-c3d21-rotation.inp shrink-fit --model B --sector yes --element C3D21 --load-case rotation
 m spec-4.3-conical-fit-c3d21-mu0.2.inp conical-fit --element C3D21 --mu 0.2
 m spec-4.4-spline-joint-c3d21.inp spline-joint --element C3D21
 m spec-4.5-p3g-joint-c3d21.inp p3g-joint --element C3D21

@@ -123,17 +123,68 @@ struct Iterate {
   Eigen::VectorXd lambda, alpha, d;
 };
 
-Eigen::VectorXd displacements(const LinearContactSystem& system, const Iterate& x) {
-  Eigen::VectorXd d = system.d0 - system.S * x.lambda;
+// What the contacts feel besides their own forces: the structure's loads (d0, h) and the fluid
+// forces of the penetrated zone, fluid = the known normal forces p A on its nodes:
+// d0 - S fluid and h - G^T fluid.
+struct Loads {
+  Eigen::VectorXd d0, h;
+};
+
+Loads loads_with_fluid(const LinearContactSystem& system, const std::vector<char>& penetrated) {
+  Loads out{system.d0, system.h};
+  for (std::size_t j = 0; j < penetrated.size(); ++j) {
+    if (!penetrated[j]) continue;
+    const double f = system.fluid.force[j];
+    const auto row = static_cast<Eigen::Index>(3 * j);
+    out.d0 -= f * system.S.col(row);
+    if (system.G.cols() > 0) out.h -= f * system.G.row(row).transpose();
+  }
+  return out;
+}
+
+Eigen::VectorXd displacements(const LinearContactSystem& system, const Loads& loads,
+                              const Iterate& x) {
+  Eigen::VectorXd d = loads.d0 - system.S * x.lambda;
   if (system.G.cols() > 0) d += system.G * x.alpha;
   return d;
+}
+
+// The fluid's penetrated zone at an iterate: the nodes reachable from an entry node through nodes
+// that are open or carry less than the critical normal force (breadth-first over the slave
+// faces). Empty without pressure penetration.
+std::vector<char> penetrated_zone(const FluidPenetration& fluid,
+                                  const std::vector<NodeStatus>& status,
+                                  const Eigen::VectorXd& lambda) {
+  if (fluid.empty()) return {};
+  const std::size_t m = status.size();
+  std::vector<char> zone(m, 0);
+  const auto wet = [&](std::size_t j) {
+    return fluid.force[j] > 0.0 &&
+           (status[j] == NodeStatus::Open || lambda[3 * j] < fluid.critical[j]);
+  };
+  std::vector<std::size_t> front;
+  for (std::size_t j = 0; j < m; ++j)
+    if (fluid.entry[j] && wet(j)) {
+      zone[j] = 1;
+      front.push_back(j);
+    }
+  while (!front.empty()) {
+    const std::size_t j = front.back();
+    front.pop_back();
+    for (int k : fluid.neighbours[j])
+      if (!zone[k] && wet(k)) {
+        zone[k] = 1;
+        front.push_back(k);
+      }
+  }
+  return zone;
 }
 
 // Solves the linearised conditions of `status` at `at` (slip rows with the proximal weight, see
 // LocalPoint::proximal). Returns false when the system is singular (a body held only by contact is
 // not held by the closed constraints).
 bool solve_linearised(const std::vector<ContactConstraint>& constraints,
-                      const LinearContactSystem& system, const Setup& setup,
+                      const LinearContactSystem& system, const Loads& loads, const Setup& setup,
                       const std::vector<NodeStatus>& status, const Iterate& at,
                       const std::vector<ConstraintState>& previous, double eps, double proximal,
                       Iterate& out) {
@@ -157,7 +208,7 @@ bool solve_linearised(const std::vector<ContactConstraint>& constraints,
     const LocalRows rows = linearise(p, status[node]);
     for (int j = 0; j < n; ++j) S_rows.col(j) = system.S.block<3, 1>(3 * node, unknowns[j]);
     const Eigen::MatrixXd QS = rows.Q * S_rows;
-    const Eigen::Vector3d Qd0 = rows.Q * system.d0.segment<3>(3 * node);
+    const Eigen::Vector3d Qd0 = rows.Q * loads.d0.segment<3>(3 * node);
     Eigen::MatrixXd QG;
     if (k > 0) QG = rows.Q * system.G.middleRows<3>(3 * node);
     for (int r = i; r < end; ++r) {
@@ -171,7 +222,7 @@ bool solve_linearised(const std::vector<ContactConstraint>& constraints,
   }
   for (int a = 0; a < k; ++a) {
     for (int j = 0; j < n; ++j) A(n + a, j) = system.G(unknowns[j], a);
-    rhs[n + a] = system.h[a];
+    rhs[n + a] = loads.h[a];
   }
   out.lambda = Eigen::VectorXd::Zero(3 * m);
   out.alpha = Eigen::VectorXd::Zero(k);
@@ -193,7 +244,7 @@ bool solve_linearised(const std::vector<ContactConstraint>& constraints,
     for (int j = 0; j < n; ++j) out.lambda[unknowns[j]] = x[j];
     out.alpha = x.tail(k);
   }
-  out.d = displacements(system, out);
+  out.d = displacements(system, loads, out);
   return true;
 }
 
@@ -211,13 +262,33 @@ struct BodyHold {
   EquilibriumLoss loss;
 };
 
+// A motion that presses the closed nodes together as the load pushes the body along it (a pin
+// in a taper: the contact's normal components along the push, sin(alpha) = 0.05 of the motion for
+// a 1:10 taper) is held by normal forces that grow with the motion, however little friction
+// there is: no friction capacity to exceed. Measured as the RMS of the closing normal components
+// over the RMS of the whole relative motion at the closed nodes (tangential rows unscaled by mu);
+// a cylinder's nodes give below 1e-3 (the quadratic faces' normal error at symmetry-plane nodes),
+// hence the threshold.
+constexpr double kWedgeRatio = 1e-2;
+
+// The exact slip tangent lacks stiffness only along each node's slip direction e. A motion that
+// crosses the slip directions (a sleeve turned past its friction capacity by a prescribed rotation
+// is free to slide axially, while its nodes slip around the axis) is held by the tangent's
+// P = I - e e^T part, so the exact Newton step is regular there; slip springs would only slow it
+// down to a linear rate (measured on model B's sector at full slip: no convergence in 50
+// iterations with them, 2-6 per increment without). Threshold on the RMS of the motion's components
+// across the slip directions over the RMS of its tangential part at the slipping nodes.
+constexpr double kCrossingRatio = 1e-2;
+
 // Checks one motion v (k, unit): the range of G_v^T lambda the closed constraints can carry.
-void check_motion(const LinearContactSystem& system, const Setup& setup,
+void check_motion(const std::vector<ContactConstraint>& constraints,
+                  const LinearContactSystem& system, const Loads& loads, const Setup& setup,
                   const std::vector<NodeStatus>& status, const Iterate& at,
-                  const Eigen::VectorXd& v, BodyHold& out) {
+                  const std::vector<ConstraintState>& previous, const Eigen::VectorXd& v,
+                  BodyHold& out) {
   const Eigen::VectorXd gv = system.G * v;
   const double g_max = gv.cwiseAbs().maxCoeff();
-  double carried = 0.0, capacity = 0.0;
+  double carried = 0.0, capacity = 0.0, across = 0.0, along_total = 0.0;
   int slipping = 0;
   for (std::size_t j = 0; j < status.size(); ++j) {
     if (status[j] == NodeStatus::Open) continue;
@@ -230,10 +301,38 @@ void check_motion(const LinearContactSystem& system, const Setup& setup,
     if (status[j] == NodeStatus::Stick) return;  // a sticking node holds the motion
     ++slipping;
     capacity += ln * gt.norm();
+    // The slip direction e = xi / |xi|, xi = lambda_t + c_t (d_t - d_t_ref) (friction_law.hpp).
+    Eigen::Vector2d xi = Eigen::Vector2d::Zero();
+    for (int c = 1; c < 3; ++c)
+      if (setup.live[j][c])
+        xi[c - 1] = at.lambda[3 * j + c] + setup.c_t[j] * (at.d[3 * j + c] - previous[j].d_ref[c]);
+    const Eigen::Vector2d e =
+        xi.norm() > 0.0 ? Eigen::Vector2d(xi.normalized()) : Eigen::Vector2d::Zero();
+    across += (gt - gt.dot(e) * e).squaredNorm();
+    along_total += gt.squaredNorm();
   }
   if (slipping == 0) return;
+  if (across > kCrossingRatio * kCrossingRatio * along_total) return;  // held by P (above)
+  const double push = loads.h.dot(v) - carried;  // the load not carried by the normal forces
+  const double applied = std::abs(push);
+  // The push moves the body along sign(push) v, which changes the closed nodes' normal
+  // displacements by sign(push) (G v)_n: positive closes them.
+  double closing = 0.0, motion = 0.0;
+  for (std::size_t j = 0; j < status.size(); ++j) {
+    if (status[j] == NodeStatus::Open) continue;
+    const double normal = (push >= 0.0 ? 1.0 : -1.0) * gv[3 * j];
+    closing += normal > 0.0 ? normal * normal : 0.0;
+    motion += normal * normal;
+    for (int c = 1; c < 3; ++c) {
+      const double scale = constraints[j].scale(c);
+      if (scale > 0.0) motion += (gv[3 * j + c] / scale) * (gv[3 * j + c] / scale);
+    }
+  }
+  // A wedge: no friction limit, and the normal rows see the motion, so the exact Newton step is
+  // regular (slip springs would only slow it down: they hold the body back against the small
+  // stiffness sin^2(alpha) k_n of the wedge).
+  if (closing > kWedgeRatio * kWedgeRatio * motion) return;
   out.slip_only = true;
-  const double applied = std::abs(system.h.dot(v) - carried);
   const double excess = applied - capacity;
   EquilibriumLoss& worst = out.loss;
   if (!(excess > 1e-9 * std::max(applied, 1e-300))) return;
@@ -249,19 +348,23 @@ void check_motion(const LinearContactSystem& system, const Setup& setup,
 // Every free motion on its own, and with several the direction of the unbalanced load
 // h - (what the normal forces carry), which separates h from the reachable set when no single
 // motion does (e.g. a sleeve free to turn and slide, pushed and twisted at once).
-BodyHold body_hold(const LinearContactSystem& system, const Setup& setup,
-                   const std::vector<NodeStatus>& status, const Iterate& at) {
+BodyHold body_hold(const std::vector<ContactConstraint>& constraints,
+                   const LinearContactSystem& system, const Loads& loads, const Setup& setup,
+                   const std::vector<NodeStatus>& status, const Iterate& at,
+                   const std::vector<ConstraintState>& previous) {
   BodyHold out;
   const int k = static_cast<int>(system.G.cols());
   for (int a = 0; a < k; ++a)
-    check_motion(system, setup, status, at, Eigen::VectorXd::Unit(k, a), out);
+    check_motion(constraints, system, loads, setup, status, at, previous,
+                 Eigen::VectorXd::Unit(k, a), out);
   if (k > 1) {
-    Eigen::VectorXd unbalanced = system.h;
+    Eigen::VectorXd unbalanced = loads.h;
     for (std::size_t j = 0; j < status.size(); ++j)
       if (status[j] != NodeStatus::Open)
         unbalanced -= std::max(at.lambda[3 * j], 0.0) * system.G.row(3 * j).transpose();
     if (unbalanced.norm() > 0.0)
-      check_motion(system, setup, status, at, unbalanced.normalized(), out);
+      check_motion(constraints, system, loads, setup, status, at, previous, unbalanced.normalized(),
+                   out);
   }
   return out;
 }
@@ -342,7 +445,12 @@ IncrementOutcome solve_increment(const std::vector<ContactConstraint>& constrain
   for (int j = 0; j < m; ++j)
     at.lambda.segment<3>(3 * j) = state.nodes[j].lambda + extrapolation * state.nodes[j].dlambda;
   at.alpha = state.alpha + extrapolation * state.dalpha;
-  at.d = displacements(system, at);
+  // The fluid's zone starts where the last increment left it.
+  std::vector<char> zone;
+  if (!system.fluid.empty())
+    for (int j = 0; j < m; ++j) zone.push_back(state.nodes[j].penetrated ? 1 : 0);
+  Loads loads = loads_with_fluid(system, zone);
+  at.d = displacements(system, loads, at);
   auto force_scale = [&](const Iterate& x) {
     return std::max(
         {x.lambda.size() > 0 ? x.lambda.cwiseAbs().maxCoeff() : 0.0, setup.load_force, 1e-300});
@@ -369,8 +477,31 @@ IncrementOutcome solve_increment(const std::vector<ContactConstraint>& constrain
       status[j] = constraints[j].gap0 <= 0.0 ? NodeStatus::Stick : NodeStatus::Open;
     }
   }
+  // An extrapolated predictor that sends every closed frictional node to slip while the last
+  // increment had sticking nodes overshoots the front (the change of the last increment
+  // continued): start from the elastic trial instead. Measured on model B's sector turned by a
+  // prescribed angle: from such a predictor the iteration stalled (3 x 50 iterations and three
+  // cut-backs in the second increment); from the trial it converges in 5.
+  bool elastic_trial = extrapolation == 0.0;
+  if (trust_predictor && extrapolation > 0.0) {
+    int closed_frictional = 0, sticking = 0, stuck_before = 0;
+    for (int j = 0; j < m; ++j) {
+      if (!constraints[j].law.has_tangential()) continue;
+      stuck_before += state.nodes[j].status == NodeStatus::Stick ? 1 : 0;
+      if (status[j] == NodeStatus::Open) continue;
+      ++closed_frictional;
+      sticking += status[j] == NodeStatus::Stick ? 1 : 0;
+    }
+    if (closed_frictional > 0 && sticking == 0 && stuck_before > 0) {
+      elastic_trial = true;
+      for (int j = 0; j < m; ++j)
+        if (status[j] == NodeStatus::Slip && constraints[j].law.has_tangential())
+          status[j] = NodeStatus::Stick;
+    }
+  }
 
-  std::vector<std::vector<NodeStatus>> seen{status};
+  using Seen = std::pair<std::vector<NodeStatus>, std::vector<char>>;
+  std::vector<Seen> seen{{status, zone}};
   std::vector<std::vector<int>> changed_history;
   double damping = 1.0;
   bool closed_touching = !trust_predictor;
@@ -379,7 +510,7 @@ IncrementOutcome solve_increment(const std::vector<ContactConstraint>& constrain
   // extrapolated predictor it may have to move either way. Not in the first iteration either:
   // the growth from the predictor (the last step's solution) to the trial is the load step's,
   // not the front's. Both cost the builder's shrink-fit model A iterations (bench README).
-  const bool from_elastic_trial = extrapolation == 0.0;
+  const bool from_elastic_trial = elastic_trial;
   for (int iteration = 1; iteration <= options.max_iterations; ++iteration) {
     const double eps = 1e-12 * force_scale(at);
     Iterate next;
@@ -387,7 +518,7 @@ IncrementOutcome solve_increment(const std::vector<ContactConstraint>& constrain
     // genuine loss of equilibrium: stop here, the driver reports it) or the iterate is merely far
     // from the stick zone the solution has: take the step with the slip springs
     // (LocalPoint::proximal), which give the body a stiffness along the slip.
-    const BodyHold hold = body_hold(system, setup, status, at);
+    const BodyHold hold = body_hold(constraints, system, loads, setup, status, at, state.nodes);
     if (hold.loss.lost) {
       outcome.loss = hold.loss;
       outcome.reason = "friction capacity exceeded";
@@ -395,12 +526,12 @@ IncrementOutcome solve_increment(const std::vector<ContactConstraint>& constrain
       return outcome;
     }
     bool regularised = hold.slip_only;
-    bool solved = solve_linearised(constraints, system, setup, status, at, state.nodes, eps,
+    bool solved = solve_linearised(constraints, system, loads, setup, status, at, state.nodes, eps,
                                    regularised ? kSlipSpring : 0.0, next);
     if (!solved && !regularised && any_slipping(status)) {
       // Singular for another reason (e.g. slip directions that leave a rotation free).
       regularised = true;
-      solved = solve_linearised(constraints, system, setup, status, at, state.nodes, eps,
+      solved = solve_linearised(constraints, system, loads, setup, status, at, state.nodes, eps,
                                 kSlipSpring, next);
     }
     if (!solved) {
@@ -421,7 +552,7 @@ IncrementOutcome solve_increment(const std::vector<ContactConstraint>& constrain
     if (damping < 1.0) {
       next.lambda = at.lambda + damping * (next.lambda - at.lambda);
       next.alpha = at.alpha + damping * (next.alpha - at.alpha);
-      next.d = displacements(system, next);
+      next.d = displacements(system, loads, next);
     }
     const double scale = force_scale(next);
     std::vector<NodeStatus> new_status(m);
@@ -462,16 +593,23 @@ IncrementOutcome solve_increment(const std::vector<ContactConstraint>& constrain
           break;
       }
     }
-    record.changes = static_cast<int>(changed.size());
+    // The fluid's zone follows the contact state: a moved front is a change like a status's.
+    std::vector<char> new_zone = penetrated_zone(system.fluid, new_status, next.lambda);
+    int zone_changes = 0;
+    for (std::size_t j = 0; j < new_zone.size(); ++j) {
+      zone_changes += new_zone[j] != zone[j] ? 1 : 0;
+      record.penetrated += new_zone[j];
+    }
+    record.changes = static_cast<int>(changed.size()) + zone_changes;
     record.residual = residual / scale;
-    bool converged = changed.empty() && record.residual <= options.tolerance;
+    bool converged = changed.empty() && zone_changes == 0 && record.residual <= options.tolerance;
     if (converged && damping < 1.0) {
       // A damped step is only near the solution of its status set: one full step more makes it
       // exact.
       converged = false;
       damping = 1.0;
-    } else if (!converged && !changed.empty() &&
-               std::find(seen.begin(), seen.end(), new_status) != seen.end()) {
+    } else if (!converged && record.changes > 0 &&
+               std::find(seen.begin(), seen.end(), Seen{new_status, new_zone}) != seen.end()) {
       // A status set seen before: the iteration cycles. Shorter steps break the cycle.
       record.cycle = true;
       damping = std::max(damping * 0.5, 1.0 / 64.0);
@@ -479,9 +617,14 @@ IncrementOutcome solve_increment(const std::vector<ContactConstraint>& constrain
     outcome.history.push_back(record);
     if (log) log(record);
     changed_history.push_back(changed);
-    seen.push_back(new_status);
+    seen.emplace_back(new_status, new_zone);
     at = std::move(next);
     status = std::move(new_status);
+    if (zone_changes > 0) {
+      zone = std::move(new_zone);
+      loads = loads_with_fluid(system, zone);
+      at.d = displacements(system, loads, at);
+    }
     outcome.iterations = iteration;
     if (converged) {
       outcome.converged = true;
@@ -495,6 +638,8 @@ IncrementOutcome solve_increment(const std::vector<ContactConstraint>& constrain
           for (int c = 1; c < 3; ++c)
             if (setup.live[j][c]) s.slip[c - 1] += (s.d[c] - s.d_ref[c]) / constraints[j].scale(c);
         s.d_ref = s.d;
+        s.penetrated = !zone.empty() && zone[j] != 0;
+        s.fluid = s.penetrated ? system.fluid.force[j] : 0.0;
       }
       state.dalpha = at.alpha - state.alpha;
       state.alpha = at.alpha;

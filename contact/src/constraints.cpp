@@ -7,6 +7,7 @@
 #include <map>
 #include <set>
 
+#include "styk/core/cyclic_symmetry.hpp"
 #include "surface_geometry.hpp"
 
 namespace styk::contact {
@@ -137,6 +138,31 @@ double model_size(const Model& model) {
   return model.node_count() > 0 ? (hi - lo).norm() : 1.0;
 }
 
+// A contact node cut by a cyclic symmetry boundary (docs/contact.md, "Cyclic symmetry"): the
+// slave-side copy and its master-side image are one node of the structure, whose faces lie on
+// both sides of the boundary. The constraint stays on the image, with the faces of the copy
+// turned onto it (normal sum and area added); the copy's own constraint would repeat it. Returns
+// how many were joined.
+int join_cyclic_copies(const std::vector<ResolvedCyclicSymmetry>& ties,
+                       std::map<int, SlaveNode>& slaves) {
+  int joined = 0;
+  for (const ResolvedCyclicSymmetry& tie : ties) {
+    Eigen::Matrix3d Q;
+    for (int i = 0; i < 3; ++i)
+      for (int j = 0; j < 3; ++j) Q(i, j) = tie.rotation[i][j];
+    for (const CyclicNodePair& pair : tie.pairs) {
+      const auto copy = slaves.find(pair.slave);
+      const auto image = slaves.find(pair.master);
+      if (copy == slaves.end() || image == slaves.end()) continue;
+      image->second.normal_sum += Q * copy->second.normal_sum;
+      image->second.area += copy->second.area;
+      slaves.erase(copy);
+      ++joined;
+    }
+  }
+  return joined;
+}
+
 }  // namespace
 
 Eigen::Vector3d ContactConstraint::row(int c) const {
@@ -200,6 +226,7 @@ std::vector<ContactConstraint> build_contact_constraints(const Model& model,
   auto note = [&](const std::string& line) {
     if (notes != nullptr) notes->push_back(line);
   };
+  const std::vector<ResolvedCyclicSymmetry> cyclic = resolve_cyclic_symmetries(model, registry);
 
   for (std::size_t p = 0; p < model.contact_pairs.size(); ++p) {
     const ContactPair& pair = model.contact_pairs[p];
@@ -248,6 +275,9 @@ std::vector<ContactConstraint> build_contact_constraints(const Model& model,
       for (int n : slave_surface.nodes) slaves[n] = SlaveNode{};
     }
 
+    if (const int joined = join_cyclic_copies(cyclic, slaves); joined > 0)
+      note("contact pair " + pair.slave + "/" + pair.master + ": " + std::to_string(joined) +
+           " slave nodes on the cyclic symmetry boundary are joined with their images");
     int skipped_shared = 0, skipped_outside = 0;
     for (const auto& [node, s] : slaves) {
       if (constrained.count(node) != 0) {

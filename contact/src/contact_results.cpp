@@ -38,6 +38,7 @@ void fill_contact_results(const Model& model, const std::vector<ContactConstrain
     r.t1 = to_vec3(c.t1);
     r.t2 = to_vec3(c.t2);
     r.force = to_vec3(f);
+    r.fluid_pressure = s.fluid * per_area;
     out.contact.push_back(r);
 
     ContactPairResult& total = out.contact_pairs.at(c.pair);

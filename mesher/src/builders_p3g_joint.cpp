@@ -86,6 +86,7 @@ BuildResult p3g_joint(const BuilderParams& p, const ElementRegistry& registry) {
   m.core = p.positive("core");
   if (m.core >= 27) p.fail("--core must stay inside the polygon (< 27)");
   const double torque = p.number("torque");
+  const bool sector = sector_requested(p);
 
   BuildResult r;
   Mesh& mesh = r.mesh;
@@ -99,7 +100,8 @@ BuildResult p3g_joint(const BuilderParams& p, const ElementRegistry& registry) {
   const double flange_grading = kFlangeRadius / kArmRadius;
   // The faces along the polygon inside the round part, both sides: a C3D28 layer on the
   // contact surface closes through them (docs/mesher.md).
-  std::vector<FaceRef> round_polygon;
+  // (Kept as a mesh surface so that a sector cut renumbers it.)
+  const std::string round_polygon = "__ROUND_POLYGON";
   for (const AxialSegment& seg : {round, arm, flange}) {
     const bool hub = seg.z0 >= kHubStart;
     mesh_hexagon_core(mesh, type, m.core, n, seg, "SHAFT");
@@ -113,8 +115,8 @@ BuildResult p3g_joint(const BuilderParams& p, const ElementRegistry& registry) {
         const Block outer =
             mesh_block(mesh, curve_ring(polygon(k), circle(k, kRoundRadius, 1, n), seg),
                        spec(m.round_rings, 1, "SHAFT"));
-        for (const FaceRef& f : ring.side_faces(0, +1)) round_polygon.push_back(f);
-        for (const FaceRef& f : outer.side_faces(0, -1)) round_polygon.push_back(f);
+        mesh.add_to_surface(round_polygon, ring.side_faces(0, +1));
+        mesh.add_to_surface(round_polygon, outer.side_faces(0, -1));
         continue;
       }
       mesh_block(mesh, curve_ring(polygon(k), circle(k, kArmRadius, 0.5, n), seg),
@@ -127,6 +129,7 @@ BuildResult p3g_joint(const BuilderParams& p, const ElementRegistry& registry) {
     }
   }
   merge_coincident_nodes(mesh);
+  if (sector) cut_joint_sector(mesh, p);
   // The hub's face at z = 80 rests on the round part's shoulder without shared nodes (their
   // radial divisions differ): touching, not a contact surface (a pure torque loads it not).
   split_bodies(mesh, "HUB", "HUB_BORE", "SHAFT_POLYGON");
@@ -136,12 +139,13 @@ BuildResult p3g_joint(const BuilderParams& p, const ElementRegistry& registry) {
     convert_contact_layers(mesh, fam, {"HUB_BORE"});
     const std::string work = "__SHAFT_LAYER";
     mesh.surfaces[work] = mesh.surfaces.at("SHAFT_POLYGON");
-    mesh.add_to_surface(work, round_polygon);
+    mesh.add_to_surface(work, mesh.surfaces.at(round_polygon));
     convert_layer_to_c3d28(mesh, work);
     mesh.surfaces.erase(work);
   } else {
     convert_contact_layers(mesh, fam, {"HUB_BORE", "SHAFT_POLYGON"});
   }
+  mesh.surfaces.erase(round_polygon);
 
   const double E = p.positive("young"), nu = p.number("poisson");
   r.model = contact_model(
@@ -149,14 +153,21 @@ BuildResult p3g_joint(const BuilderParams& p, const ElementRegistry& registry) {
       "SPEC 4.5 P3G polygon joint (DIN 32711, D 60, n 3, e 2.25), " + fam +
           ": shaft 120 (round D65 to z 80, z 0 fixed), hub z 80-120 = arm D80 x 20 + flange "
           "D155 x 20, frictionless bore; " +
-          fmt_number(torque) +
-          " N m on the flange rim. Published: max displacement 0.41 mm at the flange rim, max "
+          fmt_number(torque) + " N m on the flange rim" +
+          (sector ? " (120 deg sector with cyclic symmetry, N = 3: a third of it)" : "") +
+          ". Published: max displacement 0.41 mm at the flange rim, max "
           "Mises 141 MPa in the hub, the contact recedes",
       {{"SHAFT", "SHAFT", E, nu, {}}, {"HUB", "HUB", E, nu, {}}});
   add_surfaces(r.model, mesh, {"HUB_BORE", "SHAFT_POLYGON", "FLANGE_RIM"});
   add_contact(r.model, "POLYGON", "HUB_BORE", "SHAFT_POLYGON", std::nullopt);
 
-  add_joint_torque_step(r, registry, fam, torque, 0.5 * (kFlangeStart + kShaftLength));
+  if (!sector) {
+    add_joint_torque_step(r, registry, fam, torque, 0.5 * (kFlangeStart + kShaftLength));
+    return r;
+  }
+  const SectorBoundary boundary = sector_boundary(mesh, kJointSectors, 1e-7 * mesh.size());
+  add_cyclic_symmetry(r.model, boundary);
+  add_joint_torque_step(r, registry, fam, torque, 0.5 * (kFlangeStart + kShaftLength), &boundary);
   return r;
 }
 
@@ -178,6 +189,7 @@ void add_p3g_joint_builder(std::vector<BuilderInfo>& all) {
         {"flange-rings", "28", "radial elements of the flange, Ø80 to Ø155 (graded)"},
         {"core", "25", "circumradius of the shaft's hexagonal core"},
         {"torque", "1000", "torque on the flange rim (N m)"},
+        sector_param(kJointSectors),
         {"young", "200000", "Young's modulus E (MPa)"},
         {"poisson", "0.3", "Poisson's ratio"}},
        p3g_joint});

@@ -11,6 +11,7 @@
 #include "builder_catalogue.hpp"
 #include "builder_support.hpp"
 #include "contact_support.hpp"
+#include "sector_support.hpp"
 #include "styk/mesher/block_mesh.hpp"
 #include "styk/mesher/merge.hpp"
 
@@ -68,11 +69,12 @@ std::vector<double> number_list(const BuilderParams& p, const std::string& name)
   return out;
 }
 
-// Tangential nodal forces on the ring of nodes at radius r, height z (a closed circle or a
-// quarter): a uniform line load of total moment `torque` about z, distributed as the consistent
-// loads of the element edges (linear edges: halves; quadratic: 1/6, 2/3, 1/6).
+// Tangential nodal forces on the ring of nodes at radius r, height z (a closed circle, or an open
+// arc from the lowest angle to the highest: a sector's): a uniform line load of total moment
+// `torque` about z, distributed as the consistent loads of the element edges (linear edges:
+// halves; quadratic: 1/6, 2/3, 1/6).
 std::vector<ConcentratedLoad> torque_loads(const Mesh& mesh, const std::vector<int>& ring, double r,
-                                           double torque, bool quadratic) {
+                                           double torque, bool quadratic, bool closed) {
   std::vector<std::pair<double, int>> by_angle;
   for (int node : ring) {
     double a = std::atan2(mesh.nodes[node][1], mesh.nodes[node][0]);
@@ -82,7 +84,8 @@ std::vector<ConcentratedLoad> torque_loads(const Mesh& mesh, const std::vector<i
   std::sort(by_angle.begin(), by_angle.end());
   const int count = static_cast<int>(by_angle.size());
   const int step = quadratic ? 2 : 1;
-  const int edges = count / step;  // closed circle: every node starts one edge piece
+  // A closed circle: every node starts one edge piece; an arc: all but the last.
+  const int edges = closed ? count / step : (count - 1) / step;
   std::vector<double> weight(count, 0.0);
   for (int e = 0; e < edges; ++e) {
     const int i0 = e * step;
@@ -135,159 +138,261 @@ void hold_sector_planes(Model& model, const Mesh& mesh, double sweep, double tol
   fix(model, second, {2});
 }
 
-BuildResult shrink_fit(const BuilderParams& p, const ElementRegistry&) {
-  const std::string fam = family(p, kAllHexFamilies);
-  const std::string model_name = to_upper(p.choice("model", {"A", "B", "C"}));
-  const bool full = model_name == "B", sector = model_name == "C";
-  std::string load_case = p.choice("load-case", {"auto", "axial", "torque", "fit"});
-  if (load_case == "auto") load_case = full ? "torque" : "axial";
-  if (load_case == "torque" && !full)
-    p.fail("--load-case torque needs --model B: a " + std::string(sector ? "sector" : "quarter") +
-           " model cannot carry a torque without cyclic symmetry");
-  const std::string fit = p.choice("fit", {"thermal", "clearance"});
-  FitMesh m;
-  m.around = p.count("around", 2);
-  if (m.around % 2 != 0) p.fail("--around must be even (two O-grid blocks per quarter)");
-  const int sector_around = p.count("sector", 2);
-  if (sector_around % 2 != 0 || sector_around > m.around)
-    p.fail("--sector must be even (two O-grid blocks) and at most --around (" +
-           std::to_string(m.around) + ")");
-  const double sweep = sector ? 0.5 * kPi * sector_around / m.around : 0.5 * kPi;
-  m.shaft_rings = p.count("shaft-rings");
-  m.sleeve_rings = p.count("sleeve-rings");
-  m.fit_rows = p.count("fit-rows");
-  m.end_rows = p.count("end-rows");
-  const double alpha = p.positive("alpha"), dT = p.number("dT");
-  std::string mu_text = p.text("mu");
-  if (to_upper(mu_text) == "AUTO") mu_text = load_case == "torque" ? "0.4" : "0.2";
-  const std::string model_text = full     ? " (full)"
-                                 : sector ? " (sector of " + fmt_number(sweep * 180 / kPi) + " deg)"
-                                          : " (quarter)";
-  const std::optional<Friction> friction = friction_value(p, "mu", mu_text);
+// Model B as a 90 deg sector (N = 4): the quarter 0..90 deg of the full mesh with a cyclic
+// symmetry tie between its faces y = 0 (slave) and x = 0 (master).
+constexpr int kFitSectors = 4;
 
-  BuildResult r;
-  Mesh& mesh = r.mesh;
-  const std::string type = base_type(fam);
-  for (int quarter = 0; quarter < (full ? 4 : 1); ++quarter)
-    mesh_sector(mesh, type, m, quarter * 0.5 * kPi, sweep, sector ? sector_around : m.around);
-  merge_coincident_nodes(mesh);
-  split_bodies(mesh, "SLEEVE", "SLEEVE_BORE", "SHAFT_FIT");
-  mesh.add_to_element_set("EALL", mesh.element_sets.at("SHAFT"));
-  mesh.add_to_element_set("EALL", mesh.element_sets.at("SLEEVE"));
-  convert_contact_layers(mesh, fam, {"SLEEVE_BORE", "SHAFT_FIT"});
+// The builder's parameters, checked.
+struct FitCase {
+  std::string family, model_name, load_case, fit, mu_text;
+  bool full = false;    // model B
+  bool sector = false;  // model B as a 90 deg sector with cyclic symmetry (--sector yes)
+  bool thin = false;    // model C: a thin sector between two symmetry planes
+  int thin_around = 2;  // model C: elements around
+  double sweep = 0.5 * kPi;  // angle of a quarter, or of model C's sector
+  FitMesh mesh;
+  double alpha = 0, dT = 0;
+  std::optional<Friction> friction;
+};
 
-  const double E = p.positive("young"), nu = p.number("poisson");
-  const double interference = alpha * dT * kShaftRadius;
-  r.model = contact_model(
-      mesh,
-      "SPEC 4.2 shrink fit, model " + model_name + model_text + ", " + fam +
-          ": shaft 60 x D20, sleeve 20 x D20/D30 centred, E = " + fmt_number(E) +
-          ", nu = " + fmt_number(nu) + ", mu = " + mu_text + "; step 1 " +
-          (fit == "thermal"
-               ? "heats the shaft by " + fmt_number(dT) + " (alpha " + fmt_number(alpha) + ")"
-               : "closes a radial interference " + fmt_number(interference)) +
-          ", then " +
-          (load_case == "axial"    ? "axial pressure on the sleeve top"
-           : load_case == "torque" ? "torque on the sleeve"
-                                   : "nothing more") +
-          ". Tab 4.1 shaft end (thermal): elongation 0.1268 (C3D21), diametral growth 0.0401",
-      {{"SHAFT", "SHAFT", E, nu, fit == "thermal" ? std::optional<double>(alpha) : std::nullopt},
-       {"SLEEVE", "SLEEVE", E, nu, {}}});
-  add_surfaces(r.model, mesh, {"SLEEVE_BORE", "SHAFT_FIT", "SLEEVE_TOP"});
-  add_contact(r.model, "FIT", "SLEEVE_BORE", "SHAFT_FIT", friction,
-              fit == "clearance" ? std::optional<double>(-interference) : std::nullopt);
+FitCase read_fit_case(const BuilderParams& p) {
+  FitCase c;
+  c.family = family(p, kAllHexFamilies);
+  c.model_name = to_upper(p.choice("model", {"A", "B", "C"}));
+  c.full = c.model_name == "B";
+  c.thin = c.model_name == "C";
+  c.load_case = p.choice("load-case", {"auto", "axial", "torque", "rotation", "fit"});
+  if (c.load_case == "auto") c.load_case = c.full ? "torque" : "axial";
+  if ((c.load_case == "torque" || c.load_case == "rotation") && !c.full)
+    p.fail("--load-case " + c.load_case + " needs --model B: a " +
+           std::string(c.thin ? "sector" : "quarter") +
+           " model with symmetry planes cannot carry a torque (model B with --sector yes is the "
+           "quarter with cyclic symmetry)");
+  c.sector = p.choice("sector", {"no", "yes"}) == "yes";
+  if (c.sector && !c.full) p.fail("--sector yes needs --model B (model A is already a quarter)");
+  c.fit = p.choice("fit", {"thermal", "clearance"});
+  c.mesh.around = p.count("around", 2);
+  if (c.mesh.around % 2 != 0) p.fail("--around must be even (two O-grid blocks per quarter)");
+  c.thin_around = p.count("sector-around", 2);
+  if (c.thin_around % 2 != 0 || c.thin_around > c.mesh.around)
+    p.fail("--sector-around must be even (two O-grid blocks) and at most --around (" +
+           std::to_string(c.mesh.around) + ")");
+  if (c.thin) c.sweep = 0.5 * kPi * c.thin_around / c.mesh.around;
+  c.mesh.shaft_rings = p.count("shaft-rings");
+  c.mesh.sleeve_rings = p.count("sleeve-rings");
+  c.mesh.fit_rows = p.count("fit-rows");
+  c.mesh.end_rows = p.count("end-rows");
+  c.alpha = p.positive("alpha");
+  c.dT = p.number("dT");
+  c.mu_text = p.text("mu");
+  if (to_upper(c.mu_text) == "AUTO") c.mu_text = c.load_case == "axial" ? "0.2" : "0.4";
+  c.friction = friction_value(p, "mu", c.mu_text);
+  return c;
+}
 
+void add_cylindrical_transform(Model& model, const std::string& nset) {
+  Transform t;
+  t.nset = nset;
+  t.axes.system = CoordinateSystem::Cylindrical;
+  t.axes.a = {0, 0, 0};
+  t.axes.b = {0, 0, 1};
+  model.transforms.push_back(t);
+}
+
+// Supports: the shaft base axially; model A its symmetry planes, model B the base centre across
+// and the rest of the base tangentially (cylindrical *TRANSFORM: carries the torque, leaves the
+// thermal growth free); frictionless, one sleeve node along (and about) the axis. In the sector
+// (`boundary` not null) the slave side follows its master side and the tie holds the axis nodes
+// on the axis, so fix_in_sector skips them.
+void add_fit_supports(Model& model, const Mesh& mesh, const FitCase& c,
+                      const SectorBoundary* boundary) {
   const double tol = 1e-7 * mesh.size();
+  const auto hold = [&](const std::vector<int>& nodes, std::initializer_list<int> dofs) {
+    if (boundary != nullptr)
+      fix_in_sector(model, *boundary, nodes, dofs);
+    else
+      fix(model, nodes, dofs);
+  };
   const auto base = nodes_where(mesh, [&](const Vec3& x) { return x[2] < tol; });
   const auto end = nodes_where(mesh, [&](const Vec3& x) { return x[2] > kShaftLength - tol; });
-  add_node_set(r.model, "SHAFT_BASE", base);
-  add_node_set(r.model, "SHAFT_END", end);
-  fix(r.model, base, {3});
-  if (sector) {
-    hold_sector_planes(r.model, mesh, sweep, tol);
-  } else if (!full) {
-    fix(r.model, nodes_where(mesh, [&](const Vec3& x) { return std::abs(x[0]) < tol; }), {1});
-    fix(r.model, nodes_where(mesh, [&](const Vec3& x) { return std::abs(x[1]) < tol; }), {2});
+  add_node_set(model, "SHAFT_BASE", base);
+  add_node_set(model, "SHAFT_END", end);
+  hold(base, {3});
+  if (c.thin) {
+    hold_sector_planes(model, mesh, c.sweep, tol);
+  } else if (!c.full) {
+    fix(model, nodes_where(mesh, [&](const Vec3& x) { return std::abs(x[0]) < tol; }), {1});
+    fix(model, nodes_where(mesh, [&](const Vec3& x) { return std::abs(x[1]) < tol; }), {2});
   } else {
-    // The base's centre holds x, y; every other base node is held tangentially (a cylindrical
-    // *TRANSFORM), which carries the torque and leaves the thermal growth free.
     std::vector<int> centre, ring;
     for (int node : base)
       (std::hypot(mesh.nodes[node][0], mesh.nodes[node][1]) < tol ? centre : ring).push_back(node);
-    fix(r.model, centre, {1, 2});
-    add_node_set(r.model, "SHAFT_BASE_RING", ring);
-    Transform t;
-    t.nset = "SHAFT_BASE_RING";
-    t.axes.system = CoordinateSystem::Cylindrical;
-    t.axes.a = {0, 0, 0};
-    t.axes.b = {0, 0, 1};
-    r.model.transforms.push_back(t);
-    fix(r.model, ring, {2});
+    if (boundary == nullptr) fix(model, centre, {1, 2});
+    add_node_set(model, "SHAFT_BASE_RING", ring);
+    add_cylindrical_transform(model, "SHAFT_BASE_RING");
+    hold(ring, {2});
   }
-  if (!friction) {
-    // Frictionless: nothing holds the sleeve along (and, in model B, about) the axis. One node
-    // on its outer mid-plane is held there; with mu = 0 no force can reach it.
-    const auto hold = nodes_where(mesh, [&](const Vec3& x) {
-      return std::abs(x[0] - kSleeveRadius) < tol && std::abs(x[1]) < tol &&
-             std::abs(x[2] - 0.5 * (kFitStart + kFitEnd)) <
-                 0.5 * (kFitEnd - kFitStart) / m.fit_rows + tol;
-    });
-    add_node_set(r.model, "SLEEVE_HOLD", {hold.at(0)});
-    if (full)
-      fix(r.model, {hold.at(0)}, {2, 3});
-    else
-      fix(r.model, {hold.at(0)}, {3});
-  }
+  if (c.friction) return;
+  // Frictionless: nothing holds the sleeve along (and, in model B, about) the axis. One node on
+  // its outer mid-plane is held there; with mu = 0 no force can reach it. (The sector takes the
+  // node on its master side, x = 0, where x is the tangential direction.)
+  const bool sector = boundary != nullptr;
+  const auto hold_node = nodes_where(mesh, [&](const Vec3& x) {
+    const double along = sector ? x[1] : x[0], across = sector ? x[0] : x[1];
+    return std::abs(along - kSleeveRadius) < tol && std::abs(across) < tol &&
+           std::abs(x[2] - 0.5 * (kFitStart + kFitEnd)) <
+               0.5 * (kFitEnd - kFitStart) / c.mesh.fit_rows + tol;
+  });
+  add_node_set(model, "SLEEVE_HOLD", {hold_node.at(0)});
+  if (c.full)
+    fix(model, {hold_node.at(0)}, {sector ? 1 : 2, 3});
+  else
+    fix(model, {hold_node.at(0)}, {3});
+}
 
+// Step FIT: the shaft heated by dT (thermal fit), or nothing but the *CLEARANCE closing.
+Step heating_step(Model& model, const Mesh& mesh, const FitCase& c) {
   Step heat = static_step();
   heat.name = "FIT";
   heat.procedure.initial_increment = 0.25;
-  if (fit == "thermal") {
-    for (int node = 0; node < r.model.node_count(); ++node)
-      r.model.initial_temperatures.push_back({node, 0.0, {}});
-    for (int e : mesh.element_sets.at("SHAFT"))
-      for (int node : mesh.elements[e].nodes) heat.temperatures.push_back({node, dT, {}});
-    std::sort(heat.temperatures.begin(), heat.temperatures.end(),
-              [](const NodalTemperature& a, const NodalTemperature& b) { return a.node < b.node; });
-    heat.temperatures.erase(std::unique(heat.temperatures.begin(), heat.temperatures.end(),
-                                        [](const NodalTemperature& a, const NodalTemperature& b) {
-                                          return a.node == b.node;
-                                        }),
-                            heat.temperatures.end());
-  }
-  const std::vector<OutputRequest> outputs = {
-      contact_print(fam), print_request(OutputRequest::Kind::NodePrint, "SHAFT_END", {"U"}),
-      print_request(OutputRequest::Kind::NodePrint, "SHAFT_BASE", {"RF"}, true)};
-  heat.outputs = outputs;
-  r.model.steps.push_back(heat);
+  if (c.fit != "thermal") return heat;
+  for (int node = 0; node < model.node_count(); ++node)
+    model.initial_temperatures.push_back({node, 0.0, {}});
+  for (int e : mesh.element_sets.at("SHAFT"))
+    for (int node : mesh.elements[e].nodes) heat.temperatures.push_back({node, c.dT, {}});
+  std::sort(heat.temperatures.begin(), heat.temperatures.end(),
+            [](const NodalTemperature& a, const NodalTemperature& b) { return a.node < b.node; });
+  heat.temperatures.erase(std::unique(heat.temperatures.begin(), heat.temperatures.end(),
+                                      [](const NodalTemperature& a, const NodalTemperature& b) {
+                                        return a.node == b.node;
+                                      }),
+                          heat.temperatures.end());
+  return heat;
+}
 
-  const bool quadratic = type == "C3D20";
+// The load steps after FIT: axial pushes, torques as force couples on the sleeve's rim, or the
+// rim turned by a prescribed angle (rotation control: the rim circle's nodes turn about the axis,
+// tangential displacement r theta in their cylindrical system with radial and axial free, so the
+// torque follows from the reactions and the curve continues past the friction capacity;
+// automatic increments of at most 1/20 of the angle).
+void add_load_steps(Model& model, const Mesh& mesh, const FitCase& c, const BuilderParams& p,
+                    const std::vector<int>& rim, const std::vector<OutputRequest>& outputs,
+                    const SectorBoundary* boundary) {
+  const bool quadratic = base_type(c.family) == "C3D20";
+  const int parts = boundary != nullptr ? kFitSectors : 1;  // 1/parts of the joint's torque
   int index = 1;
-  if (load_case == "fit") return r;
-  if (load_case == "axial") {
+  if (c.load_case == "fit") return;
+  if (c.load_case == "axial") {
     for (double pressure : number_list(p, "pressures")) {
       Step push = static_step();
       push.name = "PUSH" + std::to_string(index++);
       push.procedure.initial_increment = 0.25;
       pressure_on(push, mesh, "SLEEVE_TOP", pressure);
       push.outputs = outputs;
-      r.model.steps.push_back(push);
+      model.steps.push_back(push);
     }
-  } else {
-    const auto rim = nodes_where(mesh, [&](const Vec3& x) {
-      return std::abs(std::hypot(x[0], x[1]) - kSleeveRadius) < tol &&
-             std::abs(x[2] - kFitStart) < tol;
-    });
-    add_node_set(r.model, "SLEEVE_RIM", rim);
+    return;
+  }
+  if (c.load_case == "torque") {
     for (double torque : number_list(p, "torques")) {
       Step twist = static_step();
       twist.name = "TORQUE" + std::to_string(index++);
       twist.procedure.initial_increment = 0.25;
-      twist.cloads = torque_loads(mesh, rim, kSleeveRadius, torque * 1000.0, quadratic);
+      twist.cloads = torque_loads(mesh, rim, kSleeveRadius, torque * 1000.0 / parts, quadratic,
+                                  boundary == nullptr);
       twist.outputs = outputs;
-      r.model.steps.push_back(twist);
+      model.steps.push_back(twist);
     }
+    return;
   }
+  add_cylindrical_transform(model, "SLEEVE_RIM");
+  const double degrees = p.number("rotation");
+  if (!(degrees > 0)) p.fail("--rotation must be positive (degrees)");
+  Step twist = static_step();
+  twist.name = "TWIST";
+  twist.procedure.initial_increment = 0.05;
+  twist.procedure.max_increment = 0.05;
+  twist.procedure.min_increment = 1e-4;
+  const double u = kSleeveRadius * degrees * kPi / 180.0;
+  for (int node : rim)
+    if (boundary == nullptr || !boundary->is_slave(node))
+      twist.boundaries.push_back({node, 2, u, {}});
+  twist.outputs = outputs;
+  model.steps.push_back(twist);
+}
+
+std::string fit_heading(const FitCase& c, double young, double poisson, double interference) {
+  const std::string loading = c.load_case == "axial"    ? "axial pressure on the sleeve top"
+                              : c.load_case == "torque" ? "torque on the sleeve"
+                              : c.load_case == "fit"    ? "nothing more"
+                                                        : "the sleeve's lower outer circle turned by a prescribed angle";
+  const std::string model_text =
+      c.full   ? (c.sector ? " (90 deg sector with cyclic symmetry, N = 4)" : " (full)")
+      : c.thin ? " (sector of " + fmt_number(c.sweep * 180 / kPi) + " deg)"
+               : " (quarter)";
+  return "SPEC 4.2 shrink fit, model " + c.model_name + model_text +
+         ", " + c.family +
+         ": shaft 60 x D20, sleeve 20 x D20/D30 centred, E = " + fmt_number(young) +
+         ", nu = " + fmt_number(poisson) + ", mu = " + c.mu_text + "; step 1 " +
+         (c.fit == "thermal"
+              ? "heats the shaft by " + fmt_number(c.dT) + " (alpha " + fmt_number(c.alpha) + ")"
+              : "closes a radial interference " + fmt_number(interference)) +
+         ", then " + loading +
+         ". Tab 4.1 shaft end (thermal): elongation 0.1268 (C3D21), diametral growth 0.0401";
+}
+
+BuildResult shrink_fit(const BuilderParams& p, const ElementRegistry&) {
+  const FitCase c = read_fit_case(p);
+  BuildResult r;
+  Mesh& mesh = r.mesh;
+  for (int quarter = 0; quarter < (c.full ? 4 : 1); ++quarter)
+    mesh_sector(mesh, base_type(c.family), c.mesh, quarter * 0.5 * kPi, c.sweep,
+                c.thin ? c.thin_around : c.mesh.around);
+  merge_coincident_nodes(mesh);
+  if (c.sector) cut_sector(mesh, kFitSectors, 0.0);
+  split_bodies(mesh, "SLEEVE", "SLEEVE_BORE", "SHAFT_FIT");
+  mesh.add_to_element_set("EALL", mesh.element_sets.at("SHAFT"));
+  mesh.add_to_element_set("EALL", mesh.element_sets.at("SLEEVE"));
+  convert_contact_layers(mesh, c.family, {"SLEEVE_BORE", "SHAFT_FIT"});
+
+  const double E = p.positive("young"), nu = p.number("poisson");
+  const double interference = c.alpha * c.dT * kShaftRadius;
+  r.model = contact_model(mesh, fit_heading(c, E, nu, interference),
+                          {{"SHAFT", "SHAFT", E, nu,
+                            c.fit == "thermal" ? std::optional<double>(c.alpha) : std::nullopt},
+                           {"SLEEVE", "SLEEVE", E, nu, {}}});
+  add_surfaces(r.model, mesh, {"SLEEVE_BORE", "SHAFT_FIT", "SLEEVE_TOP"});
+  add_contact(r.model, "FIT", "SLEEVE_BORE", "SHAFT_FIT", c.friction,
+              c.fit == "clearance" ? std::optional<double>(-interference) : std::nullopt);
+
+  const double tol = 1e-7 * mesh.size();
+  SectorBoundary boundary;
+  if (c.sector) {
+    boundary = sector_boundary(mesh, kFitSectors, tol);
+    add_cyclic_symmetry(r.model, boundary);
+  }
+  const SectorBoundary* sector = c.sector ? &boundary : nullptr;
+  add_fit_supports(r.model, mesh, c, sector);
+
+  Step heat = heating_step(r.model, mesh, c);
+  std::vector<OutputRequest> outputs = {
+      contact_print(c.family), print_request(OutputRequest::Kind::NodePrint, "SHAFT_END", {"U"}),
+      print_request(OutputRequest::Kind::NodePrint, "SHAFT_BASE", {"RF"}, true)};
+  const auto rim = nodes_where(mesh, [&](const Vec3& x) {
+    return std::abs(std::hypot(x[0], x[1]) - kSleeveRadius) < tol &&
+           std::abs(x[2] - kFitStart) < tol;
+  });
+  if (c.load_case != "axial") {
+    add_node_set(r.model, "SLEEVE_RIM", rim);
+    outputs.push_back(print_request(OutputRequest::Kind::NodePrint, "SLEEVE_RIM", {"RF"}, true));
+  }
+  heat.outputs = outputs;
+  r.model.steps.push_back(heat);
+  add_load_steps(r.model, mesh, c, p, rim, outputs, sector);
+  if (c.sector)
+    r.note =
+        "90 deg sector of model B with cyclic symmetry (N = 4): loads and reactions are a "
+        "quarter of the joint's. ";
   return r;
 }
 
@@ -301,15 +406,22 @@ void add_shrink_fit_builder(std::vector<BuilderInfo>& all) {
        {family_param("C3D21", kAllHexFamilies),
         {"model", "A",
          "A: quarter (3072 elements, 144 contact pairs), B: full (12288), C: a thin sector of "
-         "--sector elements around (symmetry planes; heating and axial load only)"},
+         "--sector-around elements around (symmetry planes; heating and axial load only)"},
         {"load-case", "auto",
-         "axial (step 2A, pressure on the sleeve top), torque (2B, model B) or fit (the heating "
-         "step alone); auto: A and C axial, B torque"},
-        {"sector", "2", "model C: elements around the sector (even; 2 = 15 deg with --around 12)"},
+         "axial (step 2A, pressure on the sleeve top), torque (2B, model B: force couples), "
+         "rotation (model B: the sleeve's rim turned by --rotation, torque as reaction) or fit (the "
+         "heating step alone); auto: A and C axial, B torque"},
+        {"sector-around", "2",
+         "model C: elements around the thin sector (even; 2 = 15 deg with --around 12)"},
         {"fit", "thermal", "thermal (heat the shaft by dT) or clearance (*CLEARANCE -alpha dT r)"},
         {"mu", "auto", "friction coefficient (auto: 0.2 axial, 0.4 torque; 'rough')"},
         {"pressures", "52.5,72", "axial pressures on the sleeve's top annulus, one step each"},
         {"torques", "300,850", "torques on the sleeve in Nm, one step each (1000: capacity lost)"},
+        {"rotation", "1.5",
+         "load case rotation: the angle (degrees) the sleeve's lower outer circle is turned by"},
+        {"sector", "no",
+         "model B: yes = the 90 deg sector with *TIE, CYCLIC SYMMETRY (N = 4) instead of the "
+         "full model"},
         {"dT", "100", "shaft heating"},
         {"alpha", "2e-5", "shaft expansion coefficient"},
         {"around", "12", "elements around a quarter (even; contact elements per row)"},

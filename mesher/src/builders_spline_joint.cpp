@@ -217,6 +217,7 @@ BuildResult spline_joint(const BuilderParams& p, const ElementRegistry& registry
   if (m.clearance >= kTipRadius - kRootRadius - 0.5)
     p.fail("--clearance must leave a flank to touch (< 2.4)");
   const double torque = p.number("torque");
+  const bool sector = sector_requested(p);
 
   BuildResult r;
   Mesh& mesh = r.mesh;
@@ -240,6 +241,7 @@ BuildResult spline_joint(const BuilderParams& p, const ElementRegistry& registry
     }
   }
   merge_coincident_nodes(mesh);
+  if (sector) cut_joint_sector(mesh, p);
   split_bodies(mesh, "HUB", "HUB_FLANKS", "SHAFT_FLANKS");
   mesh.add_to_element_set("EALL", mesh.element_sets.at("SHAFT"));
   mesh.add_to_element_set("EALL", mesh.element_sets.at("HUB"));
@@ -264,13 +266,20 @@ BuildResult spline_joint(const BuilderParams& p, const ElementRegistry& registry
           ": 6 splines D67/d61.18, w 12.48; shaft 120 (round D61.18 to z 80, z 0 fixed), hub "
           "z 80-120 = arm D80 x 20 + flange D155 x 20, radial clearance " +
           fmt_number(m.clearance) + " at tips and roots, frictionless flanks; " +
-          fmt_number(torque) +
-          " N m on the flange rim. Published: max Mises about 35 MPa, flank pressure 0-166 MPa",
+          fmt_number(torque) + " N m on the flange rim" +
+          (sector ? " (120 deg sector with cyclic symmetry, N = 3: a third of it)" : "") +
+          ". Published: max Mises about 35 MPa, flank pressure 0-166 MPa",
       {{"SHAFT", "SHAFT", E, nu, {}}, {"HUB", "HUB", E, nu, {}}});
   add_surfaces(r.model, mesh, {"HUB_FLANKS", "SHAFT_FLANKS", "FLANGE_RIM"});
   add_contact(r.model, "FLANKS", "HUB_FLANKS", "SHAFT_FLANKS", std::nullopt);
 
-  add_joint_torque_step(r, registry, fam, torque, 0.5 * (kFlangeStart + kShaftLength));
+  if (!sector) {
+    add_joint_torque_step(r, registry, fam, torque, 0.5 * (kFlangeStart + kShaftLength));
+    return r;
+  }
+  const SectorBoundary boundary = sector_boundary(mesh, kJointSectors, 1e-7 * mesh.size());
+  add_cyclic_symmetry(r.model, boundary);
+  add_joint_torque_step(r, registry, fam, torque, 0.5 * (kFlangeStart + kShaftLength), &boundary);
   return r;
 }
 
@@ -294,6 +303,7 @@ void add_spline_joint_builder(std::vector<BuilderInfo>& all) {
         {"core", "26", "circumradius of the shaft's hexagonal core"},
         {"clearance", "0.1", "radial clearance at the spline tips and roots"},
         {"torque", "1000", "torque on the flange rim (N m)"},
+        sector_param(kJointSectors),
         {"young", "200000", "Young's modulus E (MPa)"},
         {"poisson", "0.3", "Poisson's ratio"}},
        spline_joint});

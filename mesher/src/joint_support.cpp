@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 #include <map>
+#include <stdexcept>
 
 #include <Eigen/Core>
 
@@ -107,14 +108,39 @@ std::vector<ConcentratedLoad> rim_torque_loads(const Model& model, const Element
   return loads;
 }
 
+ParamDecl sector_param(int sectors) {
+  return {"sector", "no",
+          "yes: a " + std::to_string(360 / sectors) +
+              " deg sector (N = " + std::to_string(sectors) +
+              ") with *TIE, CYCLIC SYMMETRY instead of the full model (same mesh density)"};
+}
+
+bool sector_requested(const BuilderParams& params) {
+  return params.choice("sector", {"no", "yes"}) == "yes";
+}
+
+void cut_joint_sector(Mesh& mesh, const BuilderParams& params) {
+  try {
+    cut_sector(mesh, kJointSectors, kJointSectorStart * kPi / 180.0);
+  } catch (const std::invalid_argument& e) {
+    params.fail(std::string("--sector yes: ") + e.what());
+  }
+}
+
 void add_joint_torque_step(BuildResult& result, const ElementRegistry& registry,
-                           const std::string& family, double torque_nm, double hold_z) {
+                           const std::string& family, double torque_nm, double hold_z,
+                           const SectorBoundary* sector) {
   const Mesh& mesh = result.mesh;
   Model& model = result.model;
   const double tol = 1e-7 * mesh.size();
   const auto end = nodes_where(mesh, [&](const Vec3& x) { return x[2] < tol; });
   add_node_set(model, "SHAFT_END", end);
-  fix(model, end, {1, 2, 3});
+  if (sector != nullptr) {
+    fix_in_sector(model, *sector, end, {1, 2, 3});
+    torque_nm /= sector->sectors;
+  } else {
+    fix(model, end, {1, 2, 3});
+  }
   const std::vector<int> rim = mesh.surface_nodes("FLANGE_RIM");
   add_node_set(model, "FLANGE_RIM", rim);
   const auto off = [&](int node) {

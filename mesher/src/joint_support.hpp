@@ -8,6 +8,7 @@
 #include <string>
 #include <vector>
 
+#include "sector_support.hpp"
 #include "styk/core/element_registry.hpp"
 #include "styk/core/model.hpp"
 #include "styk/mesher/builders.hpp"
@@ -73,7 +74,19 @@ std::vector<ConcentratedLoad> rim_torque_loads(const Model& model, const Element
 // cannot hold the hub along the axis; no force reaches that node under a torque); step TORQUE
 // with `torque_nm` N m on the rim (rim_torque_loads, mm units) and the contact, rim U and
 // SHAFT_END RF prints.
+// A sector model (`sector` not null) carries torque_nm / N on its part of the rim, and its
+// supports skip what the cyclic tie holds (fix_in_sector).
 void add_joint_torque_step(BuildResult& result, const ElementRegistry& registry,
-                           const std::string& family, double torque_nm, double hold_z);
+                           const std::string& family, double torque_nm, double hold_z,
+                           const SectorBoundary* sector = nullptr);
+
+// The --sector parameter of the joint builders ("no" or "yes") and what it means.
+ParamDecl sector_param(int sectors);
+bool sector_requested(const BuilderParams& params);
+// Cuts the 120 deg sector -30 .. 90 deg (N = 3: the hexagonal core's rhombus edges and the
+// pitch boundaries lie on those planes) out of a full joint mesh; a builder error otherwise.
+void cut_joint_sector(Mesh& mesh, const BuilderParams& params);
+constexpr int kJointSectors = 3;
+constexpr double kJointSectorStart = -30.0;  // degrees
 
 }  // namespace styk::mesher::detail

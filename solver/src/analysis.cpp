@@ -50,6 +50,7 @@ constexpr long long kIterativeFromDofs = 150000;
 // *TRANSFORM and *EQUATION make the system the direct solver's: GAMG's rigid-body near-null
 // space is built for global dofs without eliminated ones.
 std::string constraint_keyword(const Model& model) {
+  if (!model.cyclic_symmetries.empty()) return "*TIE, CYCLIC SYMMETRY";
   return model.equations.empty() ? "*TRANSFORM" : "*EQUATION";
 }
 
@@ -127,7 +128,7 @@ Results run_static_analysis(const Model& model, const ElementRegistry& registry,
     prepared = prepare_model(model, registry);
     check_output_requests(model, prepared);
     conditions = accumulate_step_conditions(model, prepared);
-    constraints = ModelConstraints::build(model, prepared);
+    constraints = ModelConstraints::build(model, prepared, registry);
     temperatures = step_temperatures(model);
     for (const std::string& warning : model_warnings(model, prepared)) phases.warning(warning);
   }

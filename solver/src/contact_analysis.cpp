@@ -17,6 +17,7 @@
 #include "model_warnings.hpp"
 #include "output_quantities.hpp"
 #include "parallel.hpp"
+#include "penetration_steps.hpp"
 #include "phase_recorder.hpp"
 #include "prepared_model.hpp"
 #include "recovery.hpp"
@@ -127,6 +128,55 @@ std::vector<double> to_global(const ModelConstraints& kinematic, std::vector<dou
   return nodal;
 }
 
+// Per frictional pair: whether every closed slave node slips (full slip: the friction capacity
+// is reached), and the log line that reports it with the contact forces' resultant, which is then
+// the capacity (about the cyclic symmetry axis, per sector and for the whole structure, when the
+// model has one).
+std::vector<char> full_slip(const Model& model,
+                            const std::vector<contact::ContactConstraint>& constraints,
+                            const contact::ContactState& state) {
+  std::vector<int> closed(model.contact_pairs.size(), 0), stick(model.contact_pairs.size(), 0);
+  std::vector<char> frictional(model.contact_pairs.size(), 0);
+  for (std::size_t j = 0; j < constraints.size(); ++j) {
+    const int p = constraints[j].pair;
+    frictional[p] = frictional[p] || constraints[j].law.kind == contact::FrictionLaw::Kind::Coulomb;
+    if (state.nodes[j].status == contact::NodeStatus::Open) continue;
+    ++closed[p];
+    if (state.nodes[j].status == contact::NodeStatus::Stick) ++stick[p];
+  }
+  std::vector<char> out(model.contact_pairs.size(), 0);
+  for (std::size_t p = 0; p < out.size(); ++p)
+    out[p] = frictional[p] && closed[p] > 0 && stick[p] == 0;
+  return out;
+}
+
+std::string full_slip_report(const Model& model, const IncrementResult& increment, int pair) {
+  const ContactPair& cp = model.contact_pairs[pair];
+  const ContactPairResult& r = increment.contact_pairs[pair];
+  int closed = 0;
+  for (const ContactNodeResult& c : increment.contact)
+    closed += c.pair == pair && c.status != ContactStatus::Open ? 1 : 0;
+  std::string text =
+      "contact pair " + cp.slave + "/" + cp.master +
+      format(": full slip, all %.0f closed slave nodes slip; contact force ", closed) +
+      format("(%.6g, %.6g, %.6g), ", r.force[0], r.force[1], r.force[2]) +
+      format("moment (%.6g, %.6g, %.6g) about the origin", r.moment[0], r.moment[1], r.moment[2]);
+  for (const CyclicSymmetry& c : model.cyclic_symmetries) {
+    const Vec3 d{c.b[0] - c.a[0], c.b[1] - c.a[1], c.b[2] - c.a[2]};
+    const double length = norm(d);
+    // Moment about the axis through a: (M_origin - a x F) . axis.
+    const Vec3 axF{c.a[1] * r.force[2] - c.a[2] * r.force[1],
+                   c.a[2] * r.force[0] - c.a[0] * r.force[2],
+                   c.a[0] * r.force[1] - c.a[1] * r.force[0]};
+    double m = 0.0;
+    for (int k = 0; k < 3; ++k) m += (r.moment[k] - axF[k]) * d[k] / length;
+    text += format("; about the axis of cyclic symmetry %.6g per sector, %.6g on the whole", m,
+                   m * c.sectors) +
+            format(" structure (%.0f sectors)", c.sectors);
+  }
+  return text;
+}
+
 }  // namespace
 
 Results run_contact_analysis(const Model& model, const ElementRegistry& registry,
@@ -157,7 +207,7 @@ Results run_contact_analysis(const Model& model, const ElementRegistry& registry
     prepared = prepare_model(model, registry);
     check_output_requests(model, prepared);
     conditions = accumulate_step_conditions(model, prepared);
-    kinematic = ModelConstraints::build(model, prepared);
+    kinematic = ModelConstraints::build(model, prepared, registry);
     temperature_changes = step_temperature_changes(model);
     for (const std::string& warning : model_warnings(model, prepared)) phases.warning(warning);
     std::vector<std::string> notes;
@@ -261,6 +311,9 @@ Results run_contact_analysis(const Model& model, const ElementRegistry& registry
 
   Results results;
   contact::ContactState state;
+  const std::vector<StepPenetration> penetration = accumulate_penetrations(model);
+  std::vector<std::string> leaked;  // zones ("SLAVE/MASTER") whose leak has been reported
+  std::vector<char> slipping(model.contact_pairs.size(), 0);  // full slip at the last increment
   StepLoads previous{std::vector<double>(prepared.active_dofs(), 0.0), {}, {}};
   std::vector<double> u_previous(prepared.active_dofs(), 0.0);  // nodal components
   double total_time = 0.0;
@@ -305,6 +358,10 @@ Results run_contact_analysis(const Model& model, const ElementRegistry& registry
         B.apply(solve_global(start.mechanical, start.thermal, up_start));
     const Eigen::VectorXd d0_end = B.apply(solve_global(end.mechanical, end.thermal, up_end));
     const Eigen::VectorXd h_start = rigid_load(start), h_end = rigid_load(end);
+    const contact::PenetrationLayout fluid_layout =
+        contact::layout_penetrations(model, registry, constraints, penetration[k].definitions);
+    // Per zone: the fluid pressure of the last converged increment (the step's start value first).
+    std::vector<double> fluid_before = penetration[k].start;
 
     const double period = step.procedure.total_time;
     const bool fixed = step.procedure.fixed_increments;
@@ -320,6 +377,8 @@ Results run_contact_analysis(const Model& model, const ElementRegistry& registry
       const double tau = (t + dt) / period;
       system.d0 = (1.0 - tau) * d0_start + tau * d0_end;
       system.h = (1.0 - tau) * h_start + tau * h_end;
+      const std::vector<double> fluid_pressures = penetration[k].at(tau);
+      system.fluid = contact::fluid_loads(fluid_layout, constraints, fluid_pressures);
       contact::ContactState trial = state;
       const std::string where = "contact step " + std::to_string(k + 1) + " increment " +
                                 std::to_string(increment_number + 1) +
@@ -331,6 +390,7 @@ Results run_contact_analysis(const Model& model, const ElementRegistry& registry
                     (r.anticipated > 0
                          ? format(" (%.0f of them ahead of the slip front)", r.anticipated)
                          : "") +
+                    (system.fluid.empty() ? "" : format(", %.0f penetrated", r.penetrated)) +
                     (r.cycle ? format(", cycle detected: step length %.3g", r.damping) : "") +
                     (r.regularised ? ", held by slipping nodes alone: slip springs" : ""));
       };
@@ -376,8 +436,10 @@ Results run_contact_analysis(const Model& model, const ElementRegistry& registry
       const std::vector<double> dT_t = lerp_or_empty(start.dT, end.dT, tau);
       const std::vector<double> up_t = lerp(up_start, up_end, tau);
       Eigen::VectorXd lambda(3 * constraints.size());
-      for (std::size_t j = 0; j < constraints.size(); ++j)
+      for (std::size_t j = 0; j < constraints.size(); ++j) {
         lambda.segment<3>(3 * j) = state.nodes[j].lambda;
+        lambda[3 * j] += state.nodes[j].fluid;  // pressure penetration: a normal force too
+      }
       std::vector<double> contact_forces(prepared.active_dofs(), 0.0);
       B.add_transpose(lambda, -1.0, contact_forces);
       // External forces on the nodal dofs (reactions are measured against them): the mechanical
@@ -413,12 +475,31 @@ Results run_contact_analysis(const Model& model, const ElementRegistry& registry
           estimate_stress_errors(model, prepared, states_t, threads, increment);
         compute_section_forces(model, prepared, k, increment);
         contact::fill_contact_results(model, constraints, state, increment);
+        increment.penetrations = penetration_results(model, fluid_layout, state, fluid_pressures);
         check_equilibrium(prepared, to_global(kinematic, f_t), increment, constraints, state,
                           increment.contact_equilibrium);
       }
       phases.info(where + format(": converged in %.0f iterations, equilibrium residual %.2e",
                                  outcome.iterations,
                                  increment.contact_equilibrium.relative_residual));
+      for (std::size_t z = 0; z < increment.penetrations.size(); ++z) {
+        const PenetrationResult& pr = increment.penetrations[z];
+        const std::string& label = fluid_layout.zones[z].label;
+        if (!pr.leaked) continue;
+        if (std::find(leaked.begin(), leaked.end(), label) != leaked.end()) continue;
+        leaked.push_back(label);
+        phases.info(where + ": pressure penetration " + label +
+                    format(": leak at fluid pressure %.6g (the penetrated zone, %.0f of ",
+                           pr.pressure, pr.penetrated) +
+                    format("%.0f nodes, reaches the LEAK set; the increment before held at %.6g)",
+                           pr.nodes, fluid_before[z]));
+      }
+      fluid_before = fluid_pressures;
+      const std::vector<char> slipping_now = full_slip(model, constraints, state);
+      for (std::size_t p = 0; p < slipping_now.size(); ++p)
+        if (slipping_now[p] && !slipping[p])
+          phases.info(where + ": " + full_slip_report(model, increment, static_cast<int>(p)));
+      slipping = slipping_now;
       results.increments.push_back(std::move(increment));
       u_previous = u;
       kinematic.rotations().to_local(u_previous);

@@ -1,6 +1,7 @@
 #include "contact_operator.hpp"
 
 #include <algorithm>
+#include <map>
 
 namespace styk::solver_detail {
 
@@ -53,68 +54,77 @@ void ContactOperator::add_transpose(const Eigen::VectorXd& lambda, double factor
     for (int p = ptr_[i]; p < ptr_[i + 1]; ++p) f[dof_[p]] += factor * value_[p] * lambda[i];
 }
 
+namespace {
+
+// The columns B^T e_i of the used rows as sparse right-hand sides of the reduced nodal system
+// (turned to the nodal systems, R^T, and reduced by the equations, P^T: a dependent dof's entry
+// moves to its masters), and the reduced dofs whose solution the contact rows need: the nodal
+// dofs of the contact nodes, or the masters of those that are dependent.
+struct ReducedColumns {
+  std::vector<LinearSolver::SparseColumn> F;
+  std::vector<int> wanted;  // reduced nodal dofs
+  std::vector<int> local;   // per active dof: index into wanted, -1
+};
+
+}  // namespace
+
 Eigen::MatrixXd ContactOperator::compliance(LinearSolver& solver, int active_dofs,
                                             const ModelConstraints& kinematic, int block) const {
   std::vector<int> columns;
   for (int i = 0; i < rows(); ++i)
     if (row_used(i)) columns.push_back(i);
   Eigen::MatrixXd S = Eigen::MatrixXd::Zero(rows(), rows());
-  if (kinematic.empty()) {
-    // S_ij = B_i K^-1 B_j^T needs K^-1 B_j^T only at the dofs B touches: sparse right-hand sides,
-    // few wanted rows (LinearSolver::solve_sparse_columns).
-    std::vector<LinearSolver::SparseColumn> F(columns.size());
-    std::vector<int> local(active_dofs, -1), wanted;
-    for (std::size_t j = 0; j < columns.size(); ++j)
-      for (int p = ptr_[columns[j]]; p < ptr_[columns[j] + 1]; ++p) {
-        F[j].dof.push_back(dof_[p]);
-        F[j].value.push_back(value_[p]);
-        if (local[dof_[p]] < 0) {
-          local[dof_[p]] = static_cast<int>(wanted.size());
-          wanted.push_back(dof_[p]);
-        }
-      }
-    solver.solve_sparse_columns(F, wanted, active_dofs, block,
-                                [&](const std::vector<int>& solved, const Eigen::MatrixXd& X) {
-                                  for (std::size_t j = 0; j < solved.size(); ++j)
-                                    for (int i : columns) {
-                                      double sum = 0.0;
-                                      for (int p = ptr_[i]; p < ptr_[i + 1]; ++p)
-                                        sum += value_[p] * X(local[dof_[p]], j);
-                                      S(i, columns[solved[j]]) = sum;
-                                    }
-                                });
-    S = 0.5 * (S + S.transpose()).eval();
-    return S;
-  }
-  const auto n = static_cast<std::size_t>(active_dofs);
-  for (std::size_t first = 0; first < columns.size(); first += block) {
-    const int count = static_cast<int>(std::min<std::size_t>(block, columns.size() - first));
-    std::vector<double> F(n * count, 0.0);
-    for (int j = 0; j < count; ++j) {
-      const int i = columns[first + j];
-      for (int p = ptr_[i]; p < ptr_[i + 1]; ++p) F[j * n + dof_[p]] += value_[p];
+  // Per active dof: the reduced nodal dofs and coefficients it is made of (itself; a dependent
+  // dof its masters' combination).
+  std::vector<std::vector<std::pair<int, double>>> made_of(active_dofs);
+  for (int d = 0; d < active_dofs; ++d) made_of[d] = {{d, 1.0}};
+  for (const DependentDof& dependent : kinematic.equations().dependents())
+    made_of[dependent.dof] = dependent.masters;
+  const NodeRotations& rotations = kinematic.rotations();
+  // Global component c of node a in nodal dofs: u_c = sum_k R(c, k) w_k.
+  const auto nodal_terms = [&](int dof) {
+    const int a = dof / 3, c = dof % 3;
+    std::vector<std::pair<int, double>> out;
+    const Eigen::Matrix3d* R = rotations.of(a);
+    for (int k = 0; k < 3; ++k) {
+      const double r = R != nullptr ? (*R)(c, k) : (k == c ? 1.0 : 0.0);
+      if (r == 0.0) continue;
+      for (const auto& [j, coefficient] : made_of[3 * a + k]) out.emplace_back(j, r * coefficient);
     }
-    std::vector<double> column(kinematic.empty() ? 0 : n);
-    if (!kinematic.empty())
-      for (int j = 0; j < count; ++j) {
-        std::copy(F.begin() + j * n, F.begin() + (j + 1) * n, column.begin());
-        column =
-            kinematic.reduced_forces(kinematic.plus_global(std::vector<double>(n, 0.0), column));
-        std::copy(column.begin(), column.end(), F.begin() + j * n);
+    return out;
+  };
+  // B^T e_i in reduced nodal dofs (the transpose of the same map) and the wanted dofs.
+  ReducedColumns reduced;
+  reduced.local.assign(active_dofs, -1);
+  std::vector<std::vector<std::pair<int, double>>> row_terms(rows());
+  for (int i : columns) {
+    std::map<int, double> sum;
+    for (int p = ptr_[i]; p < ptr_[i + 1]; ++p)
+      for (const auto& [j, coefficient] : nodal_terms(dof_[p])) sum[j] += value_[p] * coefficient;
+    LinearSolver::SparseColumn column;
+    for (const auto& [j, v] : sum) {
+      if (v == 0.0) continue;
+      column.dof.push_back(j);
+      column.value.push_back(v);
+      row_terms[i].emplace_back(j, v);
+      if (reduced.local[j] < 0) {
+        reduced.local[j] = static_cast<int>(reduced.wanted.size());
+        reduced.wanted.push_back(j);
       }
-    std::vector<double> X = solver.solve_homogeneous(F, count);
-    if (!kinematic.empty())
-      for (int j = 0; j < count; ++j) {
-        std::copy(X.begin() + j * n, X.begin() + (j + 1) * n, column.begin());
-        kinematic.to_global_displacements(column);
-        std::copy(column.begin(), column.end(), X.begin() + j * n);
-      }
-    for (int j = 0; j < count; ++j) {
-      const Eigen::Map<const Eigen::VectorXd> x(X.data() + j * n, active_dofs);
-      const Eigen::VectorXd Bx = apply(Eigen::Ref<const Eigen::VectorXd>(x));
-      for (int i : columns) S(i, columns[first + j]) = Bx[i];
     }
+    reduced.F.push_back(std::move(column));
   }
+  // S_ij = (B R P)_i x_j: row i's reduced terms dotted with the solution at the wanted dofs.
+  solver.solve_sparse_columns(reduced.F, reduced.wanted, active_dofs, block,
+                              [&](const std::vector<int>& solved, const Eigen::MatrixXd& X) {
+                                for (std::size_t j = 0; j < solved.size(); ++j)
+                                  for (int i : columns) {
+                                    double sum = 0.0;
+                                    for (const auto& [dof, v] : row_terms[i])
+                                      sum += v * X(reduced.local[dof], j);
+                                    S(i, columns[solved[j]]) = sum;
+                                  }
+                              });
   // Symmetric in exact arithmetic; symmetrise the round-off away.
   S = 0.5 * (S + S.transpose()).eval();
   return S;

@@ -30,10 +30,12 @@ class ContactOperator {
   Eigen::MatrixXd apply_columns(const Eigen::MatrixXd& U) const;  // B U (columns)
 
   // S = B K_ff^-1 B^T with `solver` prepared on K; unused rows/columns stay zero. Columns are
-  // solved in blocks of `block` right-hand sides. With *TRANSFORM / *EQUATION (`kinematic` not
-  // empty) K is the reduced nodal stiffness P^T R^T K R P: each column B^T e_i (global forces) is
-  // turned to nodal components and reduced before the solve, and the solution expanded and
-  // rotated back, so S stays the compliance seen by the global contact rows.
+  // solved in blocks of `block` sparse right-hand sides, the solution wanted only at the contact
+  // dofs (LinearSolver::solve_sparse_columns). With *TRANSFORM / *EQUATION / cyclic symmetry
+  // (`kinematic` not empty) K is the reduced nodal stiffness P^T R^T K R P, and the contact rows
+  // are taken through the same map, S = (B R P) K^-1 (B R P)^T: each column is turned to nodal
+  // components and reduced (still sparse: a dependent dof's entry moves to its masters), and the
+  // solution is wanted at the reduced dofs the contact nodes are made of.
   Eigen::MatrixXd compliance(LinearSolver& solver, int active_dofs,
                              const ModelConstraints& kinematic, int block = 64) const;
 

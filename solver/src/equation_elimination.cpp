@@ -76,11 +76,17 @@ double* entry(StiffnessMatrix& K, int i, int j) {
 
 }  // namespace
 
-EquationElimination EquationElimination::build(const Model& model, const PreparedModel& prepared) {
+EquationElimination EquationElimination::build(const Model& model, const PreparedModel& prepared,
+                                               const std::vector<Equation>& generated) {
   EquationElimination out;
   std::map<int, RawEquation> raw;
   std::vector<int> involved;
-  for (const Equation& equation : model.equations) {
+  std::vector<const Equation*> all;
+  for (const Equation& equation : model.equations) all.push_back(&equation);
+  for (const Equation& equation : generated) all.push_back(&equation);
+  for (std::size_t index = 0; index < all.size(); ++index) {
+    const Equation& equation = *all[index];
+    const std::size_t fewest_terms = index < model.equations.size() ? 2 : 1;
     std::vector<int> dofs;
     for (const EquationTerm& term : equation.terms) {
       if (term.node < 0 || term.node >= model.node_count())
@@ -103,15 +109,16 @@ EquationElimination EquationElimination::build(const Model& model, const Prepare
                                              " (only beam elements carry rotations 4, 5, 6)");
       dofs.push_back(dof);
     }
-    if (dofs.size() < 2 || equation.terms[0].coefficient == 0.0)
+    if (dofs.size() < fewest_terms || equation.terms[0].coefficient == 0.0)
       throw InputError(equation.where,
                        "*EQUATION needs at least two terms and a non-zero first coefficient");
     const int dependent = dofs[0];
     if (raw.count(dependent) != 0)
       throw InputError(equation.where, "*EQUATION: " + dof_name(model, prepared, dependent) +
                                            " is already the first (eliminated) term of the "
-                                           "equation at line " +
-                                           std::to_string(raw[dependent].where.line));
+                                           "constraint equation at line " +
+                                           std::to_string(raw[dependent].where.line) +
+                                           " (an *EQUATION or a cyclic symmetry *TIE)");
     RawEquation& eq = raw[dependent];
     eq.where = equation.where;
     for (std::size_t i = 1; i < dofs.size(); ++i)
@@ -145,10 +152,11 @@ void EquationElimination::check_not_prescribed(const Model& model, const Prepare
                                                const std::vector<int>& prescribed) const {
   for (const DependentDof& d : dependents_)
     if (std::binary_search(prescribed.begin(), prescribed.end(), d.dof))
-      throw InputError(d.where, "*EQUATION: its first term, " + dof_name(model, prepared, d.dof) +
-                                    ", is eliminated by the equation and also prescribed by a "
-                                    "*BOUNDARY; make another term the first one or drop the "
-                                    "boundary condition");
+      throw InputError(d.where, dof_name(model, prepared, d.dof) +
+                                    " is eliminated by the constraint equation of this line (its "
+                                    "first term, or a cyclic symmetry slave or axis node) and "
+                                    "also prescribed by a *BOUNDARY; make another term the first "
+                                    "one, or drop the boundary condition");
 }
 
 std::vector<std::pair<int, int>> EquationElimination::extra_node_couplings(

@@ -25,9 +25,11 @@ struct DependentDof {
 
 class EquationElimination {
  public:
-  // Resolves the model's equations. Throws InputError at an equation's line for a term on a node
+  // Resolves the model's equations and the `generated` ones (cyclic symmetry, which may have a
+  // single term: that dof is zero). Throws InputError at an equation's line for a term on a node
   // no element uses, a dependent dof eliminated twice, or dependencies that form a cycle.
-  static EquationElimination build(const Model& model, const PreparedModel& prepared);
+  static EquationElimination build(const Model& model, const PreparedModel& prepared,
+                                   const std::vector<Equation>& generated = {});
 
   bool empty() const { return dependents_.empty(); }
   const std::vector<DependentDof>& dependents() const { return dependents_; }

@@ -4,13 +4,17 @@
 #include <iterator>
 
 #include "assembly.hpp"
+#include "cyclic_equations.hpp"
 
 namespace styk::solver_detail {
 
-ModelConstraints ModelConstraints::build(const Model& model, const PreparedModel& prepared) {
+ModelConstraints ModelConstraints::build(const Model& model, const PreparedModel& prepared,
+                                         const ElementRegistry& registry) {
   ModelConstraints out;
   out.rotations_ = NodeRotations::from_transforms(model, prepared);
-  out.equations_ = EquationElimination::build(model, prepared);
+  out.cyclic_ =
+      cyclic_equations(model, prepared, out.rotations_, resolve_cyclic_symmetries(model, registry));
+  out.equations_ = EquationElimination::build(model, prepared, out.cyclic_);
   return out;
 }
 
@@ -64,11 +68,15 @@ std::vector<Restraint> ModelConstraints::restraints(const Model& model,
                                                     const PreparedModel& prepared,
                                                     const std::vector<int>& prescribed) const {
   std::vector<Restraint> out;
-  out.reserve(prescribed.size() + model.equations.size());
+  out.reserve(prescribed.size() + model.equations.size() + cyclic_.size());
   for (int dof : prescribed)
     out.push_back(Restraint{
         {{prepared.node_of(dof), rotations_.direction(dof), rotations_.rotational(dof)}}});
-  for (const Equation& equation : model.equations) {
+  std::vector<const Equation*> equations;
+  for (const Equation& equation : model.equations) equations.push_back(&equation);
+  for (const Equation& equation : cyclic_) equations.push_back(&equation);
+  for (const Equation* each : equations) {
+    const Equation& equation = *each;
     Restraint restraint;
     for (const EquationTerm& term : equation.terms) {
       const int a = prepared.active_of_node[term.node];

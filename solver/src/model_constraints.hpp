@@ -16,10 +16,14 @@ namespace styk::solver_detail {
 
 class ModelConstraints {
  public:
-  // Throws InputError at the offending *TRANSFORM / *EQUATION line (see the two builders).
-  static ModelConstraints build(const Model& model, const PreparedModel& prepared);
+  // Throws InputError at the offending *TRANSFORM / *EQUATION / *TIE line (see the builders).
+  // Cyclic symmetry ties become equations (cyclic_equations.hpp).
+  static ModelConstraints build(const Model& model, const PreparedModel& prepared,
+                                const ElementRegistry& registry);
 
   bool empty() const { return rotations_.empty() && equations_.empty(); }
+  // The model has a cyclic symmetry tie (its equations are part of equations()).
+  bool cyclic() const { return !cyclic_.empty(); }
   const NodeRotations& rotations() const { return rotations_; }
   const EquationElimination& equations() const { return equations_; }
 
@@ -60,6 +64,7 @@ class ModelConstraints {
  private:
   NodeRotations rotations_;
   EquationElimination equations_;
+  std::vector<Equation> cyclic_;  // the equations of the cyclic symmetry ties
 };
 
 }  // namespace styk::solver_detail

@@ -21,6 +21,10 @@ void refuse_mechanical_features(const Model& model, const char* procedure) {
   if (!model.equations.empty())
     throw InputError(model.equations.front().where,
                      "*EQUATION" + in + ": equations act on displacement dofs only");
+  if (!model.cyclic_symmetries.empty())
+    throw InputError(
+        model.cyclic_symmetries.front().where,
+        "*TIE, CYCLIC SYMMETRY" + in + ": cyclic symmetry acts on displacement dofs only");
   if (!model.transforms.empty())
     throw InputError(model.transforms.front().where,
                      "*TRANSFORM" + in + ": local systems act on displacement dofs only");

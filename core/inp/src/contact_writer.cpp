@@ -1,5 +1,7 @@
 // Writing of the contact, local-system, constraint and temperature keywords (writer_parts.hpp).
+#include <algorithm>
 #include <charconv>
+#include <stdexcept>
 
 #include "writer_parts.hpp"
 
@@ -115,9 +117,40 @@ void write_contact_and_constraints(const Model& model, std::ostream& out) {
     write_axes(transform.axes, out);
   }
   write_equations(model, out);
+  for (const CyclicSymmetry& c : model.cyclic_symmetries) {
+    out << "*TIE, NAME=" << c.tie << ", CYCLIC SYMMETRY";
+    if (c.position_tolerance)
+      out << ", POSITION TOLERANCE=" << shortest_number(*c.position_tolerance);
+    out << '\n' << c.slave << ", " << c.master << '\n';
+    out << "*CYCLIC SYMMETRY MODEL, N=" << c.sectors << ", NGRAPH=" << c.ngraph << ", TIE=" << c.tie
+        << '\n';
+    write_axes(LocalAxes{CoordinateSystem::Cylindrical, c.a, c.b}, out);
+  }
   if (!model.initial_temperatures.empty()) {
     out << "*INITIAL CONDITIONS, TYPE=TEMPERATURE\n";
     write_temperatures(model, model.initial_temperatures, out);
+  }
+}
+
+void write_step_penetrations(const Model& model, const Step& step, std::ostream& out) {
+  if (step.penetration_op_new && step.penetrations.empty())
+    throw std::logic_error(
+        "write_inp: *PRESSURE PENETRATION, OP=NEW needs a definition in the same step");
+  for (std::size_t k = 0; k < step.penetrations.size(); ++k) {
+    const PressurePenetration& pp = step.penetrations[k];
+    out << "*PRESSURE PENETRATION, SLAVE=" << pp.slave << ", MASTER=" << pp.master;
+    if (k == 0 && step.penetration_op_new) out << ", OP=NEW";
+    if (!pp.leak_nset.empty()) out << ", LEAK=" << pp.leak_nset;
+    out << '\n';
+    // One line per exposed node; the shorter list repeats its first node (the lines' union is
+    // what is read back).
+    const std::size_t lines = std::max(pp.exposed_slave.size(), pp.exposed_master.size());
+    for (std::size_t i = 0; i < lines; ++i) {
+      const int s = pp.exposed_slave[i < pp.exposed_slave.size() ? i : 0];
+      const int m = pp.exposed_master[i < pp.exposed_master.size() ? i : 0];
+      out << model.node_ids[s] << ", " << model.node_ids[m] << ", " << shortest_number(pp.pressure)
+          << ", " << shortest_number(pp.critical) << '\n';
+    }
   }
 }
 

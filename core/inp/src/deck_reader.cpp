@@ -172,7 +172,8 @@ const std::vector<DeckReader::KeywordSpec>& DeckReader::keywords() {
        &DeckReader::on_transform,
        kData},
       {"EQUATION", S::Model, {}, &DeckReader::on_equation, kData},
-      // Ties, couplings, MPCs and pre-tension (tie_keywords.cpp, coupling_keywords.cpp)
+      // Ties (tie_keywords.cpp; CYCLIC SYMMETRY: cyclic_keywords.cpp), couplings, MPCs and
+      // pre-tension (coupling_keywords.cpp)
       {"TIE",
        S::Model,
        {{"NAME", true, V::Required},
@@ -201,6 +202,23 @@ const std::vector<DeckReader::KeywordSpec>& DeckReader::keywords() {
         {"NODE", true, V::Required},
         {"ELEMENT", false, V::Required}},
        &DeckReader::on_pretension_section,
+       kData},
+      {"CYCLIC SYMMETRY MODEL",
+       S::Model,
+       {{"N", true, V::Required},
+        {"NGRAPH", false, V::Required},
+        {"TIE", false, V::Required},
+        {"CHECK", false, V::Required}},
+       &DeckReader::on_cyclic_symmetry_model,
+       kData},
+      // Pressure penetration (penetration_keywords.cpp; Styk extension after Abaqus)
+      {"PRESSURE PENETRATION",
+       S::Step,
+       {{"SLAVE", true, V::Required},
+        {"MASTER", true, V::Required},
+        {"OP", false, V::Required},
+        {"LEAK", false, V::Required}},
+       &DeckReader::on_pressure_penetration,
        kData},
       // Temperatures (thermal_keywords.cpp)
       {"INITIAL CONDITIONS",
@@ -445,6 +463,8 @@ void DeckReader::finish() {
   assign_sections();
   resolve_contact_references();
   resolve_constraint_references();
+  resolve_cyclic_references();
+  resolve_penetration_references();
 }
 
 void DeckReader::assign_sections() {

@@ -122,6 +122,13 @@ class DeckReader {
   // The dof of a *CLOAD line (field 2): 1..3, or a moment 4..6 on the reference node of a
   // distributing coupling.
   int load_dof(const DataLine& line, const std::vector<int>& nodes) const;
+  // cyclic_keywords.cpp (*TIE, CYCLIC SYMMETRY)
+  void read_cyclic_tie(const KeywordLine& kw);
+  void on_cyclic_symmetry_model(const KeywordLine& kw);
+  void resolve_cyclic_references();
+  // penetration_keywords.cpp
+  void on_pressure_penetration(const KeywordLine& kw);
+  void resolve_penetration_references();
   // thermal_keywords.cpp
   void on_initial_conditions(const KeywordLine& kw);
   void on_temperature(const KeywordLine& kw);

@@ -6,11 +6,26 @@
 namespace styk::inp {
 
 void DeckReader::on_tie(const KeywordLine& kw) {
-  for (const char* other : {"CYCLIC SYMMETRY", "MULTISTAGE", "FLUID PERIODIC", "FLUID CYCLIC"})
+  for (const char* other : {"MULTISTAGE", "FLUID PERIODIC", "FLUID CYCLIC"})
     if (kw.find(other))
       throw InputError(kw.where, std::string("*TIE, ") + other +
-                                     " is not supported; Styk reads *TIE as tied contact (no "
-                                     "CYCLIC SYMMETRY, MULTISTAGE or FLUID parameter)");
+                                     " is not supported; Styk reads *TIE as tied contact or, "
+                                     "with CYCLIC SYMMETRY, as a cyclic symmetry tie");
+  const std::string name = normalize_name(kw.find("NAME")->value);
+  for (const Tie& other : model_.ties)
+    if (other.name == name)
+      throw InputError(kw.where,
+                       "*TIE " + name + " is defined twice (first at " + other.where.str() + ")");
+  for (const CyclicSymmetry& other : model_.cyclic_symmetries)
+    if (other.tie == name)
+      throw InputError(kw.where,
+                       "*TIE " + name + " is defined twice (first at " + other.where.str() + ")");
+  if (kw.find("CYCLIC SYMMETRY")) {
+    if (kw.find("ADJUST"))
+      throw InputError(kw.where, "ADJUST= belongs to a tied-contact *TIE, not to CYCLIC SYMMETRY");
+    read_cyclic_tie(kw);
+    return;
+  }
   read_tied_contact(kw);
 }
 

@@ -197,6 +197,7 @@ void write_step(const Model& model, const Step& step, std::ostream& out) {
   }
   inp::write_body_loads(model, step, out);
   inp::write_step_temperatures(model, step, out);
+  inp::write_step_penetrations(model, step, out);
   if (!step.cfluxes.empty() || step.cflux_op_new) {
     out << (step.kind == StepKind::ElectricConduction ? "*CECUR" : "*CFLUX")
         << (step.cflux_op_new ? ", OP=NEW" : "") << '\n';

@@ -31,6 +31,9 @@ void write_ties_and_couplings(const Model& model, std::ostream& out);
 void write_step_changes(const Model& model, const Step& step, std::ostream& out);
 // A step's *DLOAD GRAV / CENTRIF lines.
 void write_body_loads(const Model& model, const Step& step, std::ostream& out);
+// The step's *PRESSURE PENETRATION definitions (Styk extension: a deck meant for CalculiX must
+// not carry them, docs/input.md).
+void write_step_penetrations(const Model& model, const Step& step, std::ostream& out);
 
 // The step's *TEMPERATURE block (nothing when the step has none and no OP=NEW).
 void write_step_temperatures(const Model& model, const Step& step, std::ostream& out);

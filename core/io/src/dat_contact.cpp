@@ -81,6 +81,25 @@ void print_contact(std::ostream& out, const Model& model, const OutputRequest& r
     vector_row(out, "force", inc.contact_pairs[p].force);
     vector_row(out, "moment", inc.contact_pairs[p].moment);
   }
+  // Pressure penetration (Styk-only): per definition the fluid pressure, the penetrated share and
+  // the leak flag, then the penetrated slave nodes with the fluid pressure acting on them.
+  for (const PenetrationResult& pr : inc.penetrations) {
+    if (pr.pair < 0 || pr.pair >= static_cast<int>(model.contact_pairs.size())) continue;
+    const ContactPair& pair = model.contact_pairs[pr.pair];
+    header(out,
+           "pressure penetration (slave node,fluid pressure) of pair " + pair.slave + "/" +
+               pair.master,
+           inc.total_time);
+    char buffer[160];
+    std::snprintf(buffer, sizeof buffer,
+                  "  fluid pressure %s, %d of %d slave nodes penetrated, %s\n",
+                  fortran_e13_6(pr.pressure).c_str(), pr.penetrated, pr.nodes,
+                  pr.leaked ? "leaking" : "not leaking");
+    out << buffer;
+    for (const ContactNodeResult* c : rows)
+      if (c->pair == pr.pair && c->fluid_pressure > 0.0)
+        row(out, model.node_ids[c->node], {c->fluid_pressure});
+  }
   if (inc.contact_equilibrium.valid) {
     const ContactEquilibrium& e = inc.contact_equilibrium;
     header(out, "equilibrium (applied loads + reactions = 0; contact slave + master = 0)",

@@ -80,7 +80,7 @@ const std::vector<ReferenceProblem>& model_size_problems() {
       fit_model("shrink-fit-full", "B", "Full joint (model B)"),
       fit_model("shrink-fit-quarter", "A", "Quarter, two symmetry planes (model A)"),
       fit_model("shrink-fit-sector", "C",
-                "Sector of 15 deg, two symmetry planes (model C, --sector 2)")};
+                "Sector of 15 deg, two symmetry planes (model C, --sector-around 2)")};
   return problems;
 }
 

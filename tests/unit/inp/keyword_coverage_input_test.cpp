@@ -242,9 +242,9 @@ TEST(KeywordCoverage, TiesCouplingsMpcsPretension) {
 
 TEST(KeywordCoverage, ConstraintErrors) {
   const std::string base = std::string(kBlock) + "*NODE\n100, 0.5, 0.5, 2.\n" + kSteel;
-  expect_error("kc_tie_cyclic.inp",
-               base + "*TIE, NAME=T, CYCLIC SYMMETRY\nTOPFACE, BOTFACE\n" + kStep, "*TIE",
-               "CYCLIC SYMMETRY is not supported");
+  expect_error("kc_tie_multistage.inp",
+               base + "*TIE, NAME=T, MULTISTAGE\nTOPFACE, BOTFACE\n" + kStep, "*TIE",
+               "MULTISTAGE is not supported");
   expect_error("kc_tie_surface.inp", base + "*TIE, NAME=T\nTOPFACE, NOPE\n" + kStep, "*TIE",
                "surface NOPE, which is not defined");
   expect_error("kc_coupling_alone.inp",

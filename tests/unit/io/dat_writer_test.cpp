@@ -176,5 +176,44 @@ TEST(DatWriter, MissingFieldIsReported) {
   EXPECT_THROW(write_dat(out, tiny_model(), results), std::runtime_error);
 }
 
+// *CONTACT PRINT of a step with *PRESSURE PENETRATION: after the pair totals, the fluid pressure,
+// the penetrated share and the leak flag, then the penetrated slave nodes (fluid pressure > 0)
+// with their fluid pressure, sorted by id (docs/results.md).
+TEST(DatWriter, PressurePenetrationBlockFollowsTheContactPrint) {
+  Model model = tiny_model();
+  ContactPair pair;
+  pair.slave = "S";
+  pair.master = "M";
+  model.contact_pairs.push_back(pair);
+  OutputRequest contact;
+  contact.kind = OutputRequest::Kind::ContactPrint;
+  contact.vars = {"CSTATUS"};
+  model.steps[0].outputs = {contact};
+  Results results = tiny_results();
+  IncrementResult& inc = results.increments[0];
+  for (int node : {2, 0, 1}) {
+    ContactNodeResult c;
+    c.node = node;
+    c.fluid_pressure = node == 1 ? 0.0 : 16.0;
+    c.status = node == 1 ? ContactStatus::Stick : ContactStatus::Open;
+    inc.contact.push_back(c);
+  }
+  inc.contact_pairs.resize(1);
+  PenetrationResult pr;
+  pr.pressure = 16.0;
+  pr.penetrated = 2;
+  pr.nodes = 3;
+  inc.penetrations.push_back(pr);
+  std::ostringstream out;
+  write_dat(out, model, results);
+  const std::string text = out.str();
+  const std::string expected =
+      "\n pressure penetration (slave node,fluid pressure) of pair S/M and time 0.5000000E+00\n\n"
+      "  fluid pressure  1.600000E+01, 2 of 3 slave nodes penetrated, not leaking\n"
+      "         2  1.600000E+01\n"
+      "   1234567  1.600000E+01\n";
+  EXPECT_NE(text.find(expected), std::string::npos) << text;
+}
+
 }  // namespace
 }  // namespace styk

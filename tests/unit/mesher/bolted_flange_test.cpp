@@ -287,5 +287,117 @@ TEST(BoltedFlangePreload, CalibratedDeckCarriesThePreload) {
   for (int d = 0; d < 3; ++d) EXPECT_NEAR(q.applied[d] + q.reactions[d], 0.0, 7500.0 * 1e-8);
 }
 
+// SPEC §4.6 step 2 with pressure penetration (the builder's default for C3D21): the internal
+// pressure also acts on the gasket/flange faces where they have opened, and the leak is the first
+// pressure at which the penetrated zone reaches the gasket's outer edge (r = 54). Coarse mesh,
+// 15 and 10 kN, pressure to 24 MPa in 1 MPa increments. Checked:
+// - both leak, and the lower preload leaks at a lower pressure (published 16 and 12.5-13 MPa;
+//   this coarse mesh gives the pressures printed below, the default mesh docs/mesher.md's);
+// - the penetrated zone never shrinks as the pressure rises;
+// - once the whole gasket face is penetrated the flange hangs on the bolt: the half bolt of the
+//   sector carries the fluid on the gasket face plus the end cap, p pi (54^2 - 25^2) / 16 +
+//   p pi 25^2 / 16 = 572.56 p, to 1e-3 (the faces' interpolation of the circles).
+TEST(BoltedFlangePenetration, LeakPressureFallsWithThePreload) {
+  const test::Elements elements;
+  std::map<std::string, std::string> coarse = {{"element", "C3D21"},  {"ring-layers", "2"},
+                                               {"neck-layers", "1"},  {"gasket-layers", "1"},
+                                               {"shank-layers", "1"}, {"head-layers", "1"},
+                                               {"gasket-rings", "4"}, {"neck-rings", "1"},
+                                               {"pressure", "24"},    {"pressure-increment", "1"}};
+  const double kPi = 3.14159265358979323846;
+  const double per_mpa = kPi * (54.0 * 54.0 - 25.0 * 25.0) / 16 + kPi * 25.0 * 25.0 / 16;
+  std::map<std::string, double> leak;
+  for (const std::string preload : {"15", "10"}) {
+    SCOPED_TRACE("preload " + preload + " kN");
+    coarse["preload"] = preload;
+    const mesher::BuildResult r = mesher::run_builder("bolted-flange", coarse, elements.registry,
+                                                      studies::static_solve(elements.registry));
+    ASSERT_EQ(r.model.steps.at(1).penetrations.size(), 1u);
+    const Results results =
+        run_static_analysis(r.model, elements.registry, SolveOptions{}, nullptr, nullptr);
+    int previous = 0;
+    double before = 0;
+    for (const IncrementResult& inc : results.increments) {
+      if (inc.step != 2) continue;
+      ASSERT_EQ(inc.penetrations.size(), 1u);
+      const PenetrationResult& pr = inc.penetrations[0];
+      EXPECT_GE(pr.penetrated, previous) << "p = " << pr.pressure;
+      previous = pr.penetrated;
+      if (pr.leaked && leak[preload] == 0) leak[preload] = pr.pressure;
+      if (!pr.leaked) before = pr.pressure;
+      if (pr.penetrated == pr.nodes) {
+        double bolt = 0;
+        for (int n : r.model.nsets.at("BOLT_END").nodes) bolt -= inc.RF[n][2];
+        EXPECT_NEAR(bolt, per_mpa * pr.pressure, 1e-3 * per_mpa * pr.pressure)
+            << "p = " << pr.pressure;
+      }
+    }
+    EXPECT_GT(leak[preload], 0);
+    std::printf("coarse flange, %s kN: leak between %.1f and %.1f MPa\n", preload.c_str(), before,
+                leak[preload]);
+  }
+  EXPECT_LT(leak["10"], leak["15"]);
+}
+
+// The cyclic sector (--sector yes: 45 deg around one whole bolt, *TIE, CYCLIC SYMMETRY with N = 8,
+// the bolt's plane kept symmetric) against the 1/32 model with its two symmetry planes, coarse,
+// frictionless, with pressure penetration, preload 15 kN then 24 MPa in 4 MPa increments. The two
+// describe the same joint, so at every increment the sector's bolt carries twice the half bolt's
+// force, and every gasket slave node of the 1/32 model has the same status and contact pressure
+// as its twin in the sector (to 1e-9 of the largest, the active set's tolerance), the penetrated
+// zone the same.
+TEST(BoltedFlangeSector, CyclicSectorEqualsTheSymmetryPlaneModel) {
+  const test::Elements elements;
+  std::map<std::string, std::string> coarse = {{"element", "C3D21"},  {"ring-layers", "2"},
+                                               {"neck-layers", "1"},  {"gasket-layers", "1"},
+                                               {"shank-layers", "1"}, {"head-layers", "1"},
+                                               {"gasket-rings", "4"}, {"neck-rings", "1"},
+                                               {"pressure", "24"},    {"pressure-increment", "4"}};
+  const auto solve = [&](const std::map<std::string, std::string>& args, Model& model) {
+    model = mesher::run_builder("bolted-flange", args, elements.registry,
+                                studies::static_solve(elements.registry))
+                .model;
+    return run_static_analysis(model, elements.registry, SolveOptions{}, nullptr, nullptr);
+  };
+  Model half, sector;
+  const Results h = solve(coarse, half);
+  coarse["sector"] = "yes";
+  const Results c = solve(coarse, sector);
+  ASSERT_EQ(sector.cyclic_symmetries.size(), 1u);
+  EXPECT_EQ(sector.cyclic_symmetries[0].sectors, 8);
+  ASSERT_EQ(h.increments.size(), c.increments.size());
+  const auto bolt = [](const Model& model, const IncrementResult& inc) {
+    double force = 0;
+    for (int n : model.nsets.at("BOLT_END").nodes) force -= inc.RF[n][2];
+    return force;
+  };
+  for (std::size_t i = 0; i < h.increments.size(); ++i) {
+    const IncrementResult& a = h.increments[i];
+    const IncrementResult& b = c.increments[i];
+    SCOPED_TRACE("step " + std::to_string(a.step) + " t = " + std::to_string(a.step_time));
+    EXPECT_NEAR(bolt(sector, b), 2 * bolt(half, a), 1e-9 * std::abs(bolt(sector, b)));
+    double p_max = 0;
+    for (const ContactNodeResult& r : a.contact) p_max = std::max(p_max, std::abs(r.pressure));
+    int matched = 0;
+    for (const ContactNodeResult& r : a.contact) {
+      if (r.pair != 0) continue;
+      const Vec3& x = half.coords[r.node];
+      for (const ContactNodeResult& t : b.contact) {
+        const Vec3& y = sector.coords[t.node];
+        if (t.pair != 0 || std::hypot(x[0] - y[0], x[1] - y[1], x[2] - y[2]) > 1e-9) continue;
+        ++matched;
+        EXPECT_EQ(r.status, t.status);
+        EXPECT_NEAR(r.pressure, t.pressure, 1e-9 * p_max);
+        EXPECT_EQ(r.fluid_pressure > 0, t.fluid_pressure > 0);
+      }
+    }
+    EXPECT_GT(matched, 0);
+    if (!a.penetrations.empty()) {
+      ASSERT_EQ(b.penetrations.size(), 1u);
+      EXPECT_EQ(a.penetrations[0].leaked, b.penetrations[0].leaked);
+    }
+  }
+}
+
 }  // namespace
 }  // namespace styk

@@ -21,11 +21,26 @@
 
 namespace styk::contact {
 
+// Pressure penetration (docs/contact.md, "Pressure penetration"): a fluid that enters the
+// interface at entry nodes and presses both faces apart wherever it reaches. On a node of the
+// penetrated zone it acts as a known normal force p A (like a compressive contact force: the
+// slave is pushed away from the master). The zone is found with the iterate: the nodes connected
+// to an entry node through nodes that are open or whose normal force is below the critical one;
+// it moves with the iteration until it is consistent with the contact state.
+struct FluidPenetration {
+  std::vector<double> force;     // per constraint: fluid pressure x nodal area (0: no fluid)
+  std::vector<double> critical;  // per constraint: critical contact pressure x nodal area
+  std::vector<std::vector<int>> neighbours;  // per constraint: constraints sharing a slave face
+  std::vector<char> entry;                   // per constraint: the fluid enters here
+  bool empty() const { return force.empty(); }
+};
+
 struct LinearContactSystem {
-  Eigen::VectorXd d0;  // 3 m
-  Eigen::MatrixXd S;   // 3 m x 3 m; columns of components that cannot carry force may be zero
-  Eigen::MatrixXd G;   // 3 m x k
-  Eigen::VectorXd h;   // k
+  Eigen::VectorXd d0;      // 3 m
+  Eigen::MatrixXd S;       // 3 m x 3 m; columns of components that cannot carry force may be zero
+  Eigen::MatrixXd G;       // 3 m x k
+  Eigen::VectorXd h;       // k
+  FluidPenetration fluid;  // empty: no pressure penetration
 };
 
 struct ConstraintState {
@@ -35,6 +50,8 @@ struct ConstraintState {
   Eigen::Vector3d d_ref = Eigen::Vector3d::Zero();    // at the last converged increment
   Eigen::Vector2d slip = Eigen::Vector2d::Zero();     // accumulated slip along t1, t2 (length)
   Eigen::Vector3d dlambda = Eigen::Vector3d::Zero();  // change of lambda over that increment
+  bool penetrated = false;  // in the fluid's penetrated zone (pressure penetration)
+  double fluid = 0.0;       // the fluid's normal force on the node (0 outside the zone)
 };
 
 // What carries over from increment to increment and from step to step.
@@ -49,6 +66,7 @@ struct IterationRecord {
   int iteration = 0;
   int open = 0, stick = 0, slip = 0;
   int changes = 0;           // status changes against the status set the iteration solved with
+  int penetrated = 0;        // nodes in the fluid's penetrated zone (pressure penetration)
   int anticipated = 0;       // of which sticking nodes sent to slip ahead of the front
   double residual = 0.0;     // max complementarity residual / largest multiplier
   double damping = 1.0;      // step length taken (< 1 after a cycle was detected)

@@ -243,6 +243,21 @@ struct SectionChange {
   SourceLoc where;
 };
 
+// Styk extension after Abaqus' *PRESSURE PENETRATION (step data, docs/input.md): a fluid
+// pressure that enters the interface of the contact pair slave/master at the exposed slave nodes
+// and acts on both faces wherever the penetrated zone reaches: the slave nodes connected to an
+// exposed node through nodes that are open or carry a contact pressure below `critical`.
+// CalculiX has no such keyword.
+struct PressurePenetration {
+  std::string slave, master;       // upper-case surfaces of a *CONTACT PAIR
+  std::vector<int> exposed_slave;  // node indices (first data field: node or node set)
+  std::vector<int> exposed_master; // second field
+  double pressure = 0.0;           // fluid pressure at the end of the step (ramps like a load)
+  double critical = 0.0;           // critical contact pressure (default 0: only where open)
+  std::string leak_nset;           // Styk-only LEAK=: slave nodes on the far side of the seal
+  SourceLoc where;
+};
+
 struct Step {
   std::string name;
   StepKind kind = StepKind::Static;
@@ -268,6 +283,10 @@ struct Step {
   bool cflux_op_new = false;
   bool dflux_op_new = false;
   std::vector<SectionChange> section_changes;
+  // *PRESSURE PENETRATION: accumulated over the steps like the loads (a later definition for the
+  // same pair replaces it; OP=NEW removes every earlier one).
+  std::vector<PressurePenetration> penetrations;
+  bool penetration_op_new = false;
   std::vector<OutputRequest> outputs;
   SourceLoc where;
 };
@@ -406,6 +425,23 @@ struct PretensionSection {
   int reference_node = 0;          // node index of NODE=
   std::optional<Vec3> normal;      // the data line; unset: the mean face normal
   SourceLoc where;
+  SourceLoc where;
+};
+
+// *TIE, CYCLIC SYMMETRY with its *CYCLIC SYMMETRY MODEL (CalculiX): the datum sector of a
+// structure of `sectors` equal sectors about the axis a -> b. Every node of the slave surface is
+// tied to the master node that the rotation about the axis by one sector angle (from the slave side
+// to the master side) carries it to, u_master = Q u_slave (a static load that repeats in every
+// sector: nodal diameter 0); nodes on the axis belong to both surfaces and move along it only.
+struct CyclicSymmetry {
+  std::string tie;                 // upper-case *TIE NAME=
+  std::string slave, master;       // upper-case surface names (their nodes are tied)
+  std::optional<double> position_tolerance;  // *TIE, POSITION TOLERANCE=
+  int sectors = 0;                 // *CYCLIC SYMMETRY MODEL, N= (0 until one names this tie)
+  int ngraph = 1;                  // NGRAPH= (CalculiX's output copies; read and written back)
+  Vec3 a{}, b{};                   // the axis through a and b
+  SourceLoc where;                 // the *TIE line
+  SourceLoc model_where;           // the *CYCLIC SYMMETRY MODEL line
 };
 
 class Model {
@@ -441,6 +477,7 @@ class Model {
   std::vector<Coupling> couplings;
   std::vector<Mpc> mpcs;
   std::vector<PretensionSection> pretension_sections;
+  std::vector<CyclicSymmetry> cyclic_symmetries;
   std::vector<NodalTemperature> initial_temperatures;  // nodes not listed start at 0
   std::vector<InitialStress> initial_stresses;          // sorted by (element, point), unique
 

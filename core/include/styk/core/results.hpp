@@ -26,10 +26,20 @@ struct ContactNodeResult {
   Vec3 normal{};                   // unit normal out of the slave, towards the master
   Vec3 t1{}, t2{};                 // unit tangents, t2 = normal x t1
   Vec3 force{};                    // contact force on the slave node, global axes
+  double fluid_pressure = 0.0;     // pressure penetration: the fluid's pressure on the node (0
+                                   // outside the penetrated zone)
 };
 struct ContactPairResult {
   Vec3 force{};                    // total contact force on the slave surface
   Vec3 moment{};                   // its moment about the global origin
+};
+// A *PRESSURE PENETRATION at the end of an increment (docs/contact.md).
+struct PenetrationResult {
+  int pair = 0;                    // index into Model::contact_pairs
+  double pressure = 0.0;           // the fluid pressure of the increment
+  int penetrated = 0;              // slave nodes in the penetrated zone
+  int nodes = 0;                   // slave nodes the fluid could reach (the pair's)
+  bool leaked = false;             // the zone reaches a node of LEAK= (false without LEAK=)
 };
 // Global balance of a contact increment: applied loads + reactions = 0, and the contact forces on
 // the two sides of every pair cancel.
@@ -126,6 +136,7 @@ struct IncrementResult {
   std::vector<ContactNodeResult> contact;
   std::vector<ContactPairResult> contact_pairs;
   ContactEquilibrium contact_equilibrium;
+  std::vector<PenetrationResult> penetrations;  // one per *PRESSURE PENETRATION of the step
 
   // Scalar-field steps (*HEAT TRANSFER, *COUPLED THERMAL-ELECTRICAL): U, RF, S and E stay empty.
   ScalarFieldResult scalar;
