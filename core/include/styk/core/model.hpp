@@ -425,7 +425,6 @@ struct PretensionSection {
   int reference_node = 0;          // node index of NODE=
   std::optional<Vec3> normal;      // the data line; unset: the mean face normal
   SourceLoc where;
-  SourceLoc where;
 };
 
 // *TIE, CYCLIC SYMMETRY with its *CYCLIC SYMMETRY MODEL (CalculiX): the datum sector of a
