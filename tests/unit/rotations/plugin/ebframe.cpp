@@ -44,12 +44,12 @@ class EulerBernoulliFrame : public styk::TElement {
   }
   int face_rule_order() const override { return 1; }
 
-  void stiffness(const styk::ElementGeometry& g, const styk::Material& material, styk::RuleKind,
-                 Eigen::MatrixXd& K, const styk::ElementOptions&) const override {
+  void stiffness(const styk::ElementGeometry& g, const styk::ElementMaterial& material,
+                 styk::RuleKind, Eigen::MatrixXd& K, const styk::ElementOptions&) const override {
     Eigen::Matrix3d R;
     double L = 0.0;
     axes(g, R, L);
-    const Constants c = constants(g, material, L);
+    const Constants c = constants(g, material.material(), L);
     Eigen::Matrix<double, 12, 12> k = Eigen::Matrix<double, 12, 12>::Zero();
     auto pair = [&](int i, int j, double value) {
       k(i, j) += value;
@@ -73,19 +73,21 @@ class EulerBernoulliFrame : public styk::TElement {
     K = T.transpose() * k * T;
   }
 
-  void thermal_load(const styk::ElementGeometry& g, const styk::Material&, styk::RuleKind,
-                    const Eigen::Ref<const Eigen::VectorXd>& nodal_dT, Eigen::VectorXd& f,
-                    const styk::ElementOptions&) const override {
-    if (!nodal_dT.isZero(0.0))
-      throw styk::InputError(g.where, "EBF2 (test element) takes no temperature change");
+  void eigenstrain_load(const styk::ElementGeometry& g, const styk::ElementMaterial& material,
+                        styk::RuleKind, Eigen::VectorXd& f, const styk::ElementOptions&,
+                        const Eigen::MatrixXd* initial_stress) const override {
+    if (material.has_thermal_strain() || initial_stress != nullptr)
+      throw styk::InputError(g.where,
+                             "EBF2 (test element) takes no temperature change or initial stress");
     f.setZero(12);
   }
 
   // One point: the axial stress N / A along the bar, as a global tensor t t^T sigma.
-  void strains_stresses(const styk::ElementGeometry& g, const styk::Material& material,
+  void strains_stresses(const styk::ElementGeometry& g, const styk::ElementMaterial& law,
                         styk::RuleKind, const Eigen::Ref<const Eigen::VectorXd>& u,
                         Eigen::MatrixXd& strain, Eigen::MatrixXd& stress,
-                        const styk::ElementOptions&, const Eigen::VectorXd*) const override {
+                        const styk::ElementOptions&, const Eigen::MatrixXd*) const override {
+    const styk::Material& material = law.material();
     Eigen::Matrix3d R;
     double L = 0.0;
     axes(g, R, L);
