@@ -185,7 +185,8 @@ FitCase read_fit_case(const BuilderParams& p) {
   c.alpha = p.positive("alpha");
   c.dT = p.number("dT");
   c.mu_text = p.text("mu");
-  if (to_upper(c.mu_text) == "AUTO") c.mu_text = c.load_case == "axial" ? "0.2" : "0.4";
+  if (to_upper(c.mu_text) == "AUTO")
+    c.mu_text = c.load_case == "torque" || c.load_case == "rotation" ? "0.4" : "0.2";
   c.friction = friction_value(p, "mu", c.mu_text);
   return c;
 }

@@ -164,8 +164,8 @@ TEST(ConstraintInput, EquationErrors) {
                "the first coefficient of an equation must not be zero");
   expect_error("equation_dof_11.inp", base + "2\n5, 11, 1., 6, 11, -1.\n" + kStep, "5, 11",
                "dof of term 1 11 (temperature) is not supported yet");
-  expect_error("equation_dof_4.inp", base + "2\n5, 1, 1., 6, 4, -1.\n" + kStep, "5, 1, 1., 6, 4",
-               "dof of term 2 4 is out of range");
+  expect_error("equation_dof_7.inp", base + "2\n5, 1, 1., 6, 7, -1.\n" + kStep, "5, 1, 1., 6, 7",
+               "dof of term 2 7 is out of range");
   expect_error("equation_short.inp", base + "3\n5, 1, 1., 6, 1, -1.\n" + kStep, "3\n5, 1",
                "the equation announces 3 terms but gives 2");
   expect_error("equation_fields.inp", base + "2\n5, 1, 1., 6, 1\n" + kStep, "5, 1, 1., 6, 1\n",

@@ -123,8 +123,8 @@ TEST(ResultsCheckLegacy, OlderFilesCannotBeVerified) {
       << joined(overflow.problems);
 }
 
-// Datasets this build does not know (future fields: rotations per node, section forces per
-// element) are read and their values checked like any other. Their rows are named by their count
+// Datasets this build does not know (future fields, here XN per node and XE per element; UR and
+// SF, which this test once used, are known now) are read and their values checked like any other. Their rows are named by their count
 // when it fits one entity only (1 = the element), by number otherwise (8 = nodes, element nodes
 // and integration points of the cube alike).
 TEST_F(ResultsCheckTest, UnknownDatasetsAreScannedToo) {
@@ -144,12 +144,12 @@ TEST_F(ResultsCheckTest, UnknownDatasetsAreScannedToo) {
     H5Sclose(space);
     H5Fclose(file);
   };
-  add("/steps/step_1/increment_1/UR", 8, 3 * 5 + 2);
-  add("/steps/step_2/increment_1/SF", 1, 1);
+  add("/steps/step_1/increment_1/XN", 8, 3 * 5 + 2);
+  add("/steps/step_2/increment_1/XE", 1, 1);
   const ResultsCheck report = check_results_file(path);
   EXPECT_EQ(joined(report.problems),
-            "dataset /steps/step_1/increment_1/UR: row 5, component 3 is NaN, not a finite number\n"
-            "dataset /steps/step_2/increment_1/SF: element 1, component 2 is NaN, not a finite "
+            "dataset /steps/step_1/increment_1/XN: row 5, component 3 is NaN, not a finite number\n"
+            "dataset /steps/step_2/increment_1/XE: element 1, component 2 is NaN, not a finite "
             "number\n");
   EXPECT_EQ(report.verdict, ResultsCheck::Verdict::Damaged);
 }

@@ -126,7 +126,7 @@ TEST_F(StudyBuilders, DistortedCantileversKeepTheirVolume) {
 TEST_F(StudyBuilders, ShrinkFitSectorHasItsSymmetryPlanes) {
   const std::map<std::string, std::string> coarse = {
       {"element", "C3D21"},  {"model", "C"},    {"load-case", "fit"},
-      {"around", "4"},       {"sector", "2"},   {"shaft-rings", "2"},
+      {"around", "4"},       {"sector-around", "2"},   {"shaft-rings", "2"},
       {"sleeve-rings", "2"}, {"fit-rows", "4"}, {"end-rows", "2"}};
   const Built b = build(registry_, "shrink-fit", coarse);
   // Shaft per row: core 1 + two rings of 2 x 1 = 5, x (2 + 4 + 2) rows; sleeve 2 x 2 x 4.
