@@ -13,10 +13,6 @@ void DeckReader::read_cyclic_tie(const KeywordLine& kw) {
   CyclicSymmetry tie;
   tie.tie = set_name(kw, "NAME");
   tie.where = kw.where;
-  for (const CyclicSymmetry& other : model_.cyclic_symmetries)
-    if (other.tie == tie.tie)
-      throw InputError(
-          kw.where, "*TIE " + tie.tie + " is defined twice (first at " + other.where.str() + ")");
   if (const Parameter* p = kw.find("POSITION TOLERANCE")) {
     const double value = real_value(p->value, "POSITION TOLERANCE", kw.where);
     if (!(value > 0.0))

@@ -33,10 +33,6 @@ void DeckReader::read_tied_contact(const KeywordLine& kw) {
   Tie tie;
   tie.name = set_name(kw, "NAME");
   tie.where = kw.where;
-  for (const Tie& other : model_.ties)
-    if (other.name == tie.name)
-      throw InputError(
-          kw.where, "*TIE " + tie.name + " is defined twice (first at " + other.where.str() + ")");
   if (const Parameter* p = kw.find("POSITION TOLERANCE")) {
     const double value = real_value(p->value, "POSITION TOLERANCE", kw.where);
     if (!(value >= 0.0))
