@@ -84,6 +84,29 @@ void put_tensor(const Eigen::Matrix3d& m, Eigen::MatrixXd& rows, Eigen::Index ro
   rows.row(row) << m(0, 0), m(1, 1), m(2, 2), m(0, 1), m(0, 2), m(1, 2);
 }
 
+// Consistent nodal forces (translations only) of a force per unit length along the axis,
+// force(frame, x) at the point x of a station frame, integrated with `points` Gauss points.
+template <typename ForcePerLength>
+void line_load(const Beam& beam, const ElementGeometry& g, int points, ForcePerLength&& force,
+               Eigen::VectorXd& f) {
+  if (g.section == nullptr || !g.section->beam)
+    throw InputError(g.where, beam_detail::label(beam, g) + " has no *BEAM SECTION");
+  ElementSection section;
+  section.section = &*g.section->beam;
+  section.direction = beam.planar() ? Vec3{0.0, 0.0, -1.0} : g.section->beam->direction;
+  std::vector<double> xi, weights;
+  gauss_legendre(points, xi, weights);
+  f.setZero(6 * beam.node_count());
+  StationFrame frame;
+  for (std::size_t k = 0; k < xi.size(); ++k) {
+    beam_detail::station_frame(beam, g, section, xi[k], static_cast<int>(k) + 1, frame);
+    const Eigen::Vector3d x = g.X.transpose() * frame.N;
+    const Eigen::Vector3d q = force(frame, x);
+    for (int n = 0; n < beam.node_count(); ++n)
+      f.segment<3>(6 * n) += (weights[k] * frame.jacobian * frame.N(n)) * q;
+  }
+}
+
 }  // namespace
 
 void Beam::stiffness(const ElementGeometry& g, const ElementMaterial& material, RuleKind kind,
@@ -122,24 +145,15 @@ void Beam::body_load(const ElementGeometry& g, double density, RuleKind,
                      const BodyAcceleration& acceleration, Eigen::VectorXd& f) const {
   if (g.section == nullptr || !g.section->beam)
     throw InputError(g.where, beam_detail::label(*this, g) + " has no *BEAM SECTION");
-  ElementSection section;
-  section.section = &*g.section->beam;
-  section.direction = planar_ ? Vec3{0.0, 0.0, -1.0} : g.section->beam->direction;
-  const double area = beam_section_properties(*g.section->beam).area;
-  // Mass per length density A; a Gauss rule with one point more than the nodes integrates the
-  // linear field of a centrifugal load exactly on a straight element.
-  std::vector<double> xi, weights;
-  gauss_legendre(node_count() + 1, xi, weights);
-  f.setZero(6 * node_count());
-  StationFrame frame;
-  for (std::size_t k = 0; k < xi.size(); ++k) {
-    beam_detail::station_frame(*this, g, section, xi[k], static_cast<int>(k) + 1, frame);
-    const Eigen::Vector3d x = g.X.transpose() * frame.N;
-    const Vec3 a = acceleration.at({x(0), x(1), x(2)});
-    const Eigen::Vector3d force = density * area * Eigen::Vector3d(a[0], a[1], a[2]);
-    for (int n = 0; n < node_count(); ++n)
-      f.segment<3>(6 * n) += (weights[k] * frame.jacobian * frame.N(n)) * force;
-  }
+  // Mass per length density A; one Gauss point more than the nodes integrates the linear field
+  // of a centrifugal load exactly on a straight element.
+  const double mass = density * beam_section_properties(*g.section->beam).area;
+  line_load(*this, g, node_count() + 1,
+            [&](const StationFrame&, const Eigen::Vector3d& x) {
+              const Vec3 a = acceleration.at({x(0), x(1), x(2)});
+              return Eigen::Vector3d(mass * a[0], mass * a[1], mass * a[2]);
+            },
+            f);
 }
 
 void Beam::pressure_load(const ElementGeometry& g, int face, double p, Eigen::VectorXd& f) const {
@@ -154,22 +168,12 @@ void Beam::pressure_load(const ElementGeometry& g, int face, double p, Eigen::Ve
                                   " lies in the x-y plane: its section axis 1 is (0, 0, -1), out "
                                   "of the plane, so P1 has nothing to load; use P2 (along the "
                                   "in-plane normal n2)");
-  if (g.section == nullptr || !g.section->beam)
-    throw InputError(g.where, beam_detail::label(*this, g) + " has no *BEAM SECTION");
-  ElementSection section;
-  section.section = &*g.section->beam;
-  section.direction = planar_ ? Vec3{0.0, 0.0, -1.0} : g.section->beam->direction;
   // Gauss rule with as many points as nodes: exact for a uniform load on a straight element.
-  std::vector<double> xi, weights;
-  gauss_legendre(node_count(), xi, weights);
-  f.setZero(6 * node_count());
-  StationFrame frame;
-  for (std::size_t k = 0; k < xi.size(); ++k) {
-    beam_detail::station_frame(*this, g, section, xi[k], static_cast<int>(k) + 1, frame);
-    const Eigen::Vector3d force = p * (face == 0 ? frame.n1 : frame.n2);
-    for (int a = 0; a < node_count(); ++a)
-      f.segment<3>(6 * a) += (weights[k] * frame.jacobian * frame.N(a)) * force;
-  }
+  line_load(*this, g, node_count(),
+            [&](const StationFrame& frame, const Eigen::Vector3d&) -> Eigen::Vector3d {
+              return p * (face == 0 ? frame.n1 : frame.n2);
+            },
+            f);
 }
 
 void Beam::section_resultants(const ElementGeometry& g, const ElementMaterial& material,

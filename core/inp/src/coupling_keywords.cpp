@@ -180,12 +180,11 @@ void DeckReader::on_pretension_section(const KeywordLine& kw) {
   model_.pretension_sections.push_back(std::move(section));
 }
 
-int DeckReader::load_dof(const DataLine& line, const std::vector<int>& nodes) const {
+int DeckReader::load_dof(const DataLine& line) const {
   const std::int64_t dof = integer_field(line, 1, "dof");
   if (dof < 4 || dof > 6) return displacement_dof(line, 1, "dof");
   // A moment: taken by beam nodes (the solver names a node without rotations) and by the
   // reference node of a distributing coupling, which carries it to its surface.
-  (void)nodes;
   return static_cast<int>(dof);
 }
 

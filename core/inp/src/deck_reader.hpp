@@ -119,9 +119,9 @@ class DeckReader {
   void on_mpc(const KeywordLine& kw);
   void on_pretension_section(const KeywordLine& kw);
   void resolve_constraint_references();
-  // The dof of a *CLOAD line (field 2): 1..3, or a moment 4..6 on the reference node of a
-  // distributing coupling.
-  int load_dof(const DataLine& line, const std::vector<int>& nodes) const;
+  // The dof of a *CLOAD line (field 2): a force 1..3 or a moment 4..6 (beam nodes, a distributing
+  // coupling's reference node; the solver checks that the node takes it).
+  int load_dof(const DataLine& line) const;
   // cyclic_keywords.cpp (*TIE, CYCLIC SYMMETRY)
   void read_cyclic_tie(const KeywordLine& kw);
   void on_cyclic_symmetry_model(const KeywordLine& kw);

@@ -153,7 +153,7 @@ void DeckReader::on_cload(const KeywordLine& kw) {
   while (std::optional<DataLine> line = next_data_line()) {
     expect_fields(*line, 3, 3, "node or node set, dof, value");
     const std::vector<int> nodes = nodes_of(*line, 0, "node or node set");
-    const int dof = load_dof(*line, nodes);  // coupling_keywords.cpp: moments on couplings
+    const int dof = load_dof(*line);  // coupling_keywords.cpp: moments 4..6
     const double value = real_field(*line, 2, "value");
     for (int node : nodes) step.cloads.push_back({node, dof, value, line->where});
   }
