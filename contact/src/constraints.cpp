@@ -7,6 +7,7 @@
 #include <map>
 #include <set>
 
+#include "styk/core/local_axes.hpp"
 #include "surface_geometry.hpp"
 
 namespace styk::contact {
@@ -157,25 +158,6 @@ double ContactConstraint::scale(int c) const {
   return 0.0;
 }
 
-Eigen::Matrix3d local_axes_at(const LocalAxes& axes, const Eigen::Vector3d& x) {
-  const Eigen::Vector3d a(axes.a[0], axes.a[1], axes.a[2]);
-  const Eigen::Vector3d b(axes.b[0], axes.b[1], axes.b[2]);
-  Eigen::Matrix3d E;
-  if (axes.system == CoordinateSystem::Rectangular) {
-    const Eigen::Vector3d e1 = a.normalized();
-    const Eigen::Vector3d e3 = a.cross(b).normalized();
-    E << e1, e3.cross(e1), e3;
-    return E;
-  }
-  const Eigen::Vector3d e3 = (b - a).normalized();
-  Eigen::Vector3d radial = (x - a) - (x - a).dot(e3) * e3;
-  // On the axis the radial direction is undefined: any normal to the axis will do.
-  if (radial.norm() < 1e-12 * (b - a).norm()) radial = e3.unitOrthogonal();
-  const Eigen::Vector3d e1 = radial.normalized();
-  E << e1, e3.cross(e1), e3;
-  return E;
-}
-
 void tangent_frame(const Eigen::Vector3d& n, const Eigen::Vector3d* preferred, Eigen::Vector3d& t1,
                    Eigen::Vector3d& t2) {
   auto projected = [&](const Eigen::Vector3d& v) { return Eigen::Vector3d(v - v.dot(n) * n); };
@@ -322,9 +304,13 @@ std::vector<ContactConstraint> build_contact_constraints(const Model& model,
            std::binary_search(adjust->nodes.begin(), adjust->nodes.end(), node)) ||
           (pair.adjust_tolerance && std::abs(c.gap0) <= *pair.adjust_tolerance))
         c.gap0 = 0.0;
-      Eigen::Vector3d preferred;
-      if (orientation != nullptr) preferred = local_axes_at(orientation->axes, xs).col(0);
-      tangent_frame(c.normal, orientation != nullptr ? &preferred : nullptr, c.t1, c.t2);
+      // The orientation's local 1 axis at the node; a node on a cylindrical orientation's axis has
+      // none and takes the default tangent.
+      Eigen::Matrix3d axes = Eigen::Matrix3d::Identity();
+      const bool oriented =
+          orientation != nullptr && local_axes_at(orientation->axes, model.coords[node], axes);
+      const Eigen::Vector3d preferred = axes.col(0);
+      tangent_frame(c.normal, oriented ? &preferred : nullptr, c.t1, c.t2);
       constrained.insert(node);
       out.push_back(std::move(c));
     }
