@@ -21,6 +21,7 @@
 #include "stress_averaging.hpp"
 #include "styk/contact/active_set.hpp"
 #include "styk/contact/contact_results.hpp"
+#include "styk/core/vec3.hpp"
 #include "thermal_load.hpp"
 
 namespace styk::solver_detail {
@@ -54,8 +55,6 @@ Vec3 dof_sum(const std::vector<double>& f) {
   return sum;
 }
 
-double norm(const Vec3& v) { return std::sqrt(v[0] * v[0] + v[1] * v[1] + v[2] * v[2]); }
-
 std::string node_ids(const Model& model, const std::vector<contact::ContactConstraint>& constraints,
                      const std::vector<int>& which) {
   std::string list;
@@ -88,15 +87,16 @@ void check_equilibrium(const std::vector<double>& applied, const IncrementResult
   // Relative to the forces involved, not only to their sums: in a self-balanced model (a full
   // shrink fit under heat) every sum is round-off and a ratio of sums would be meaningless.
   double magnitude = 0.0;
-  for (const Vec3& rf : increment.RF) magnitude += norm(rf);
+  for (const Vec3& rf : increment.RF) magnitude += as_eigen(rf).norm();
   for (std::size_t j = 0; j < constraints.size(); ++j)
     magnitude += contact::slave_force(constraints[j], state.nodes[j]).norm();
   for (double f : applied) magnitude += std::abs(f);
-  const double scale = std::max({norm(out.applied), norm(out.reactions), norm(out.contact_slave),
+  const double scale = std::max({as_eigen(out.applied).norm(), as_eigen(out.reactions).norm(),
+                                 as_eigen(out.contact_slave).norm(),
                                  magnitude / static_cast<double>(std::max<std::size_t>(
                                                  1, constraints.size() + increment.RF.size())),
                                  1e-300});
-  out.relative_residual = norm(imbalance) / scale;
+  out.relative_residual = as_eigen(imbalance).norm() / scale;
 }
 
 // The loads of one step end (or start): mechanical forces on the nodal dofs (what reactions are
