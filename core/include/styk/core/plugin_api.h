@@ -37,8 +37,10 @@ extern "C" {
  * incompatible-mode and stabilisation hooks (new virtual functions); 3 = TElement gained
  * active_displacements(), section_measure() and the kinematics hooks point_measure(),
  * face_quadrature(), complete_strain() (plane and truss elements), ElementGeometry gained
- * cross_section. */
-#define STYK_PLUGIN_ABI_VERSION 3u
+ * cross_section; 4 = TElement describes itself: form(), vtk_cell() and conversion() (new virtual
+ * functions); 5 = point_measure() takes the shape-function values and strain_operator() is new
+ * (axisymmetric elements), FaceDef::axis = -1 marks faces off the cube's planes. */
+#define STYK_PLUGIN_ABI_VERSION 5u
 
 /* The name of the entry point, for dlsym. */
 #define STYK_PLUGIN_ENTRY_NAME "styk_plugin_register"
