@@ -53,7 +53,7 @@ void PlaneElement::dee(const Material& material, Matrix6d& D) const {
   D.col(2).setZero();
 }
 
-double PlaneElement::point_measure(const ElementGeometry& g,
+double PlaneElement::point_measure(const ElementGeometry& g, const Eigen::Ref<const Eigen::VectorXd>&,
                                    const Eigen::Ref<const Eigen::MatrixXd>& dN,
                                    Eigen::Ref<Eigen::MatrixXd> dNdx, int point) const {
   check_thickness(g, *this);

@@ -31,6 +31,9 @@ class C3D27 : public TElement {
   IntegrationRule rule(RuleKind kind) const override;
   // On a biquadratic face N_i (x,s x x,t) has degree <= 2 + 1 + 2 = 5 per direction: 3 points.
   int face_rule_order() const override { return 3; }
+  // Exported as the quadratic hexahedron of its first 20 nodes (values at the face and body
+  // centres stay in the point data).
+  VtkCell vtk_cell() const override { return vtk_first_nodes(vtk::kQuadraticHexahedron, 20); }
 
  private:
   std::vector<Vec3> nodes_;

@@ -37,7 +37,8 @@ class C3D8R : public C3D8 {
   void add_stabilisation(const ElementGeometry& g, const Matrix6d& D, const ElementOptions& options,
                          Eigen::MatrixXd& K) const override;
   // The uniform gradient B_bar as dNdx and V/8 as the measure of the single point (weight 8).
-  double point_measure(const ElementGeometry& g, const Eigen::Ref<const Eigen::MatrixXd>& dN,
+  double point_measure(const ElementGeometry& g, const Eigen::Ref<const Eigen::VectorXd>& N,
+                       const Eigen::Ref<const Eigen::MatrixXd>& dN,
                        Eigen::Ref<Eigen::MatrixXd> dNdx, int point) const override;
 
  private:
