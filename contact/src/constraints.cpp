@@ -94,7 +94,8 @@ std::map<int, SlaveNode> slave_nodes_of_faces(const Model& model, const SurfaceF
     const int* nodes = model.element_nodes(surface.faces[i].element);
     f.element->nodal_areas(f.geometry, f.face, area);
     for (int local : f.element->faces()[f.face].nodes) {
-      const Eigen::Vector3d n = outward_normal(f, f.element->natural_nodes()[local]);
+      const std::array<double, 2> pq = face_coordinates(f, f.element->natural_nodes()[local]);
+      const Eigen::Vector3d n = outward_normal(f, pq[0], pq[1]);
       if (n.isZero())
         throw InputError(where, "surface " + surface.name + ": face S" +
                                     std::to_string(f.face + 1) + " of element " +
@@ -277,9 +278,8 @@ std::vector<ContactConstraint> build_contact_constraints(const Model& model,
           continue;
         }
         const PlacedFace& f = master.faces[best];
-        const Eigen::VectorXd N = shape_values(
-            *f.element,
-            face_point(f.element->faces()[f.face], best_projection.p, best_projection.q));
+        const Eigen::VectorXd N =
+            shape_values(*f.element, face_point(f, best_projection.p, best_projection.q));
         const int* nodes = model.element_nodes(master_surface.faces[best].element);
         double sum = 0.0;
         for (int local : f.element->faces()[f.face].nodes)
