@@ -57,6 +57,7 @@ PreparedModel prepare_model(const Model& model, const ElementRegistry& registry)
   std::vector<const Material*> material_of_section(model.sections.size(), nullptr);
   // Per model node: which displacement components some element stiffens (bit d for direction d).
   std::vector<unsigned char> stiffened_bits(model.node_count(), 0);
+  std::vector<char> on_ring(model.node_count(), 0);
   for (int e = 0; e < element_count; ++e) {
     const Element& element = model.elements[e];
     const TElement* formulation = registry.find(element.type);
@@ -93,6 +94,7 @@ PreparedModel prepare_model(const Model& model, const ElementRegistry& registry)
                                             " refers to an undefined node");
       prepared.active_of_node[nodes[k]] = 0;
       stiffened_bits[nodes[k]] |= bits;
+      if (formulation->form() == ElementForm::Axisymmetric) on_ring[nodes[k]] = 1;
     }
   }
 
@@ -113,6 +115,7 @@ PreparedModel prepare_model(const Model& model, const ElementRegistry& registry)
     if (prepared.active_of_node[n] < 0) continue;
     prepared.active_of_node[n] = static_cast<int>(prepared.node_of_active.size());
     prepared.node_of_active.push_back(n);
+    prepared.ring_node.push_back(on_ring[n]);
     for (int d = 0; d < 3; ++d)
       prepared.stiffened.push_back((stiffened_bits[n] >> d) & 1 ? 1 : 0);
   }

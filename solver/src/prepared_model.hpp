@@ -21,6 +21,9 @@ struct PreparedModel {
   std::vector<int> node_of_active;           // active index -> model node index
   std::vector<int> ip_offset;                // integration points (full rule) per element, CSR
   std::vector<char> stiffened;               // per active dof: 1 if some element stiffens it
+  // Per active node: 1 if it belongs to an axisymmetric element (ElementForm::Axisymmetric). A
+  // ring cannot translate radially (x), so the rigid-motion checks count x as held there.
+  std::vector<char> ring_node;
 
   int active_nodes() const { return static_cast<int>(node_of_active.size()); }
   int active_dofs() const { return 3 * active_nodes(); }
