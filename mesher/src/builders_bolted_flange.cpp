@@ -129,7 +129,7 @@ BuildResult bolted_flange(const BuilderParams& p, const ElementRegistry& /*regis
   BuildResult r;
   Mesh& mesh = r.mesh;
   try {
-    mesh_bolted_flange(mesh, base_type(f.family), f.layout);
+    mesh_bolted_flange(mesh, base_type(registry, f.family), f.layout);
   } catch (const std::invalid_argument& e) {
     p.fail(e.what());
   }
@@ -150,8 +150,8 @@ BuildResult bolted_flange(const BuilderParams& p, const ElementRegistry& /*regis
     mesh.add_to_element_set("EALL", mesh.element_sets.at(body));
   // SPEC: C3D21/C3D28 at the gasket, C3D21 under the bolt head (a C3D28 layer under the head
   // could not close: the head's inner ring continues into the shank).
-  convert_contact_layers(mesh, f.family, {"GASKET_FACE", "FLANGE_FACE"});
-  convert_contact_layers(mesh, f.family == "C3D28" ? "C3D21" : f.family,
+  convert_contact_layers(mesh, registry, f.family, {"GASKET_FACE", "FLANGE_FACE"});
+  convert_contact_layers(mesh, registry, f.family == "C3D28" ? "C3D21" : f.family,
                          {"HEAD_FACE", "FLANGE_SEAT"});
 
   const double sector_force = 0.5 * f.preload;  // the sector holds half the bolt

@@ -108,7 +108,7 @@ std::vector<ConcentratedLoad> torque_loads(const Mesh& mesh, const std::vector<i
   return loads;
 }
 
-BuildResult shrink_fit(const BuilderParams& p, const ElementRegistry&) {
+BuildResult shrink_fit(const BuilderParams& p, const ElementRegistry& registry) {
   const std::string fam = family(p, kFamilies);
   const std::string model_name = to_upper(p.choice("model", {"A", "B"}));
   const bool full = model_name == "B";
@@ -133,14 +133,14 @@ BuildResult shrink_fit(const BuilderParams& p, const ElementRegistry&) {
 
   BuildResult r;
   Mesh& mesh = r.mesh;
-  const std::string type = base_type(fam);
+  const std::string type = base_type(registry, fam);
   for (int quarter = 0; quarter < (full ? 4 : 1); ++quarter)
     mesh_quarter(mesh, type, m, quarter * 0.5 * kPi);
   merge_coincident_nodes(mesh);
   split_bodies(mesh, "SLEEVE", "SLEEVE_BORE", "SHAFT_FIT");
   mesh.add_to_element_set("EALL", mesh.element_sets.at("SHAFT"));
   mesh.add_to_element_set("EALL", mesh.element_sets.at("SLEEVE"));
-  convert_contact_layers(mesh, fam, {"SLEEVE_BORE", "SHAFT_FIT"});
+  convert_contact_layers(mesh, registry, fam, {"SLEEVE_BORE", "SHAFT_FIT"});
 
   const double E = p.positive("young"), nu = p.number("poisson");
   const double interference = alpha * dT * kShaftRadius;
