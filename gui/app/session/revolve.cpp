@@ -6,10 +6,10 @@
 
 #include <Eigen/Geometry>
 
+#include "session/brick_types.hpp"
 #include "session/input_checks.hpp"
 #include "styk/core/vec3.hpp"
 #include "styk/mesher/block_mesh.hpp"
-#include "styk/mesher/convert.hpp"
 #include "styk/mesher/geometry_maps.hpp"
 #include "styk/mesher/hex_topology.hpp"
 #include "styk/mesher/merge.hpp"
@@ -198,11 +198,11 @@ void check_revolve(const RevolveInput& in, const Model& model, const ElementRegi
   if (count > 2000000)
     refuse("the revolve would have " + std::to_string(count) + " elements; at most 2,000,000");
   const std::string type = to_upper(in.type);
-  if (type != "C3D8" && type != "C3D20" && type != "C3D21" && type != "C3D28")
-    refuse("element type " + in.type + " cannot be meshed here; use C3D8, C3D20, C3D21 or C3D28");
-  if (!registry.find(type))
-    refuse("element type " + type + " is not available (its plug-in is not loaded)");
-  if (type == "C3D21" || type == "C3D28") {
+  const std::vector<std::string> types = brick_types(registry);
+  if (std::find(types.begin(), types.end(), type) == types.end())
+    refuse("element type " + in.type + " cannot be meshed here; use " +
+           brick_type_list(registry));
+  if (needs_layer_side(registry, type)) {
     const std::string side = to_upper(in.layer_side);
     if (std::find(kSides.begin(), kSides.end(), side) == kSides.end())
       refuse("layer side must be one of INNER, OUTER, BOTTOM, TOP, CUT0, CUT1");
@@ -222,7 +222,7 @@ Model model_with_revolve(const Model& model, const RevolveInput& in,
   const Frame f = frame_of(in);
   mesher::Mesh mesh;
   mesher::BlockSpec base;
-  base.type = type == "C3D8" ? "C3D8" : "C3D20";
+  base.type = brick_of(registry, type);
   base.elset = name;
   try {
     std::vector<mesher::Block> blocks;
@@ -240,9 +240,7 @@ Model model_with_revolve(const Model& model, const RevolveInput& in,
             if (const int s = side_of(mesh, face, in, f, tol); s >= 0) sides[s].push_back(face);
     for (int s = 0; s < 6; ++s)
       if (!sides[s].empty()) mesh.add_to_surface(name + "_" + kSides[s], sides[s]);
-    const std::string layer = name + "_" + to_upper(in.layer_side);
-    if (type == "C3D21") mesher::convert_layer_to_c3d21(mesh, layer);
-    if (type == "C3D28") mesher::convert_layer_to_c3d28(mesh, layer);
+    convert_bricks(mesh, registry, type, name + "_" + to_upper(in.layer_side));
   } catch (const std::invalid_argument& e) {
     refuse(std::string("the mesher refuses the revolve: ") + e.what());
   }

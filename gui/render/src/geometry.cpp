@@ -164,10 +164,14 @@ class LayerTessellator {
       if (discrete)
         value =
             nearest_value(shape, conn, *field, double(p % (n + 1)) / n, double(p / (n + 1)) / n);
-      V3 normal = dt.cross(ds);  // face nodes circle with the normal into the element: flip it out
+      // dt x ds points out of the element when the face lists its corners with the normal into
+      // it (hexahedra, tetrahedra); a face listed the other way round (wedge faces 2-5) is
+      // reversed, and so is its normal.
+      V3 normal = (reverse ? -1.0 : 1.0) * dt.cross(ds);
       const double len = normal.norm();
-      normal = len > 1e-12 * (ds.squaredNorm() + dt.squaredNorm()) && len > 0 ? V3(normal / len)
-                                                                              : face_normal;
+      normal = len > 1e-12 * (ds.squaredNorm() + dt.squaredNorm()) && len > 0
+                   ? V3(normal / len)
+                   : V3((reverse ? -1.0 : 1.0) * face_normal);
       const float t = field ? static_cast<float>(rq_.colors->normalized(value)) : -1.0f;
       g_.face_vertices.push_back(make_vertex(x, normal, color, t));
     }

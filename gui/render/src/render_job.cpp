@@ -89,9 +89,9 @@ DeformSpec parse_deform(const std::string& text) {
   return spec;
 }
 
-RenderJob::RenderJob(const Model& model, const ElementRegistry& registry,
+RenderJob::RenderJob(const Model& section, const ElementRegistry& registry,
                      const IncrementResult* increment, RenderOptions options)
-    : model_(model), increment_(increment), options_(std::move(options)) {
+    : model_(&section), increment_(increment), options_(std::move(options)) {
   if (options_.width < 16 || options_.height < 16 || options_.width > 16384 ||
       options_.height > 16384)
     throw InputError({}, "picture size " + std::to_string(options_.width) + "x" +
@@ -99,6 +99,8 @@ RenderJob::RenderJob(const Model& model, const ElementRegistry& registry,
   check_band_count(options_.bands);
   check_view_name(options_.view.name);
   if (!(options_.view.zoom > 0)) throw InputError({}, "zoom must be > 0");
+  std::unique_ptr<ScalarField> section_field = revolve(section, registry);
+  const Model& model = *model_;
 
   skin_ =
       std::make_unique<SkinModel>(model, registry, make_layers(model, options_), options_.filter);
@@ -111,8 +113,9 @@ RenderJob::RenderJob(const Model& model, const ElementRegistry& registry,
       throw InputError({}, "field '" + options_.field +
                                "' needs a results file; this input is a "
                                "mesh only");
-    field_ = std::make_unique<ScalarField>(
-        evaluate_field(model, *increment_, options_.field, options_.averaging));
+    field_ = section_field ? std::move(section_field)
+                           : std::make_unique<ScalarField>(evaluate_field(
+                                 model, *increment_, options_.field, options_.averaging));
     if (!field_->defined.empty()) {
       const std::vector<int> shown = skin_->visible_nodes();
       if (std::none_of(shown.begin(), shown.end(), [&](int n) { return field_->defined_at(n); }))
@@ -176,10 +179,43 @@ RenderJob::RenderJob(const Model& model, const ElementRegistry& registry,
 
 RenderJob::~RenderJob() = default;
 
+std::unique_ptr<ScalarField> RenderJob::revolve(const Model& section,
+                                                const ElementRegistry& registry) {
+  if (!(options_.revolve_degrees > 0)) return nullptr;
+  const ElementFilter all;
+  if (!options_.layers.empty() || options_.filter.id_min != all.id_min ||
+      options_.filter.id_max != all.id_max || !options_.filter.types.empty())
+    throw InputError({}, "layers and element filters name the section's elements: they cannot "
+                         "be combined with a revolved picture");
+  // The field is evaluated on the section, with its own elements' stress recovery, then carried
+  // round.
+  std::unique_ptr<ScalarField> field;
+  if (!options_.field.empty() && increment_)
+    field = std::make_unique<ScalarField>(
+        evaluate_field(section, *increment_, options_.field, options_.averaging));
+  const int segments = options_.revolve_segments > 0
+                           ? options_.revolve_segments
+                           : std::max(1, static_cast<int>(std::ceil(options_.revolve_degrees / 15.0)));
+  revolved_ = std::make_unique<RevolvedModel>(
+      revolve_axisymmetric(section, registry, increment_, options_.revolve_degrees, segments));
+  if (field) *field = revolve_field(*field, section, *revolved_);
+  if (increment_) {
+    revolved_increment_ = std::make_unique<IncrementResult>();
+    revolved_increment_->step = increment_->step;
+    revolved_increment_->increment = increment_->increment;
+    revolved_increment_->step_time = increment_->step_time;
+    revolved_increment_->total_time = increment_->total_time;
+    revolved_increment_->U = revolved_->U;
+    increment_ = revolved_increment_.get();
+  }
+  model_ = &revolved_->model;
+  return field;
+}
+
 std::vector<std::string> RenderJob::title_lines() const {
   std::vector<std::string> lines;
   const std::string name = !options_.model_name.empty() ? options_.model_name
-                           : !model_.source.empty()     ? base_name(model_.source)
+                           : !model_->source.empty()    ? base_name(model_->source)
                                                         : std::string("(unnamed model)");
   lines.push_back("Model: " + name);
   if (increment_) {
@@ -208,8 +244,8 @@ std::vector<std::string> RenderJob::title_lines() const {
                     "  Min: " + format_legend_value(colors_.min) +
                     "  Max: " + format_legend_value(colors_.max));
   } else {
-    lines.push_back("Mesh: " + std::to_string(model_.elements.size()) + " elements, " +
-                    std::to_string(model_.coords.size()) + " nodes");
+    lines.push_back("Mesh: " + std::to_string(model_->elements.size()) + " elements, " +
+                    std::to_string(model_->coords.size()) + " nodes");
   }
   if (options_.deform.kind != DeformSpec::Kind::None)
     lines.push_back("Deformation scale: " + format_legend_value(scale_) +

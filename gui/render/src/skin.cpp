@@ -70,11 +70,8 @@ int face_corner_count(const TElement& element, const FaceDef& face) {
 }
 
 bool is_planar_element(const TElement& element) {
-  const std::vector<Vec3>& xi = element.natural_nodes();
-  if (element.faces().empty() || xi.size() < 3) return false;
-  for (const FaceDef& face : element.faces())
-    if (face.nodes.size() > 3) return false;  // a solid's faces have 3 corners or more
-  return std::all_of(xi.begin(), xi.end(), [](const Vec3& p) { return p[2] == 0.0; });
+  const ElementForm form = element.form();
+  return form == ElementForm::Planar || form == ElementForm::Axisymmetric;
 }
 
 std::vector<FaceDef> drawn_faces(const TElement& element) {
@@ -86,10 +83,7 @@ std::vector<FaceDef> drawn_faces(const TElement& element) {
   return faces;
 }
 
-bool is_line_element(const TElement& element) {
-  const int nodes = element.node_count();
-  return element.faces().empty() && (nodes == 2 || nodes == 3);
-}
+bool is_line_element(const TElement& element) { return element.form() == ElementForm::Line; }
 
 std::vector<int> line_node_order(const TElement& element) {
   const std::vector<Vec3>& xi = element.natural_nodes();

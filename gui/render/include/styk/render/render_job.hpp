@@ -14,6 +14,7 @@
 #include "styk/render/frame.hpp"
 #include "styk/render/geometry.hpp"
 #include "styk/render/layers.hpp"
+#include "styk/render/revolve.hpp"
 
 namespace styk::render {
 
@@ -45,6 +46,10 @@ struct RenderOptions {
   std::vector<std::string> hidden_layers;  // among `layers`: built but not shown
   ElementFilter filter;
   std::string model_name;  // title block; empty: the model's source file name
+  // > 0: draw the axisymmetric elements as the body they stand for, swept about the y axis
+  // through this many degrees (revolve.hpp); segments 0 = one per 15 degrees.
+  double revolve_degrees = 0.0;
+  int revolve_segments = 0;
 };
 
 class RenderJob {
@@ -70,9 +75,15 @@ class RenderJob {
 
  private:
   std::vector<std::string> title_lines() const;
+  // With RenderOptions::revolve_degrees: sweeps the section into its body (model_, increment_
+  // then point at the revolved ones) and returns the field evaluated on the section and carried
+  // round (null without a field); null and nothing changed otherwise.
+  std::unique_ptr<ScalarField> revolve(const Model& section, const ElementRegistry& registry);
 
-  const Model& model_;
+  const Model* model_;  // the model drawn: the given one, or its revolved body
   const IncrementResult* increment_;
+  std::unique_ptr<RevolvedModel> revolved_;
+  std::unique_ptr<IncrementResult> revolved_increment_;
   RenderOptions options_;
   std::unique_ptr<SkinModel> skin_;
   std::unique_ptr<ScalarField> field_;
