@@ -128,8 +128,10 @@ TEST(AxisymmetricLame, ThickCylinderMatchesTheFormula) {
 // volume is short by (1 - sin(theta)/theta) ~ theta^2/6 = 5e-5 of ours (theta = 1 degree each
 // side): the formulations agree to that order, not to 1e-6. Measured: the nodal displacements of
 // INNER differ by 1.52e-4 (CAX8, CAX8R) and 2.49e-4 (CAX4) relative, three to five times that
-// chord estimate; the rest of the difference is not traced. Asserted: below 3e-4.
+// chord estimate; the rest of the difference is not traced. Asserted: those values to 2 %.
 TEST(AxisymmetricLame, CalculixOnTheSameDeck) {
+  const std::map<std::string, double> measured = {
+      {"CAX8", 1.523e-4}, {"CAX8R", 1.523e-4}, {"CAX4", 2.487e-4}};
   for (const char* type : {"CAX8", "CAX8R", "CAX4"}) {
     const std::filesystem::path dir = scratch(std::string("lame_ccx_") + type);
     { std::ofstream(dir / "job.inp") << lame_deck(type, 0.3); }
@@ -141,7 +143,7 @@ TEST(AxisymmetricLame, CalculixOnTheSameDeck) {
     double worst = 0.0;
     for (const auto& [id, u] : ours) worst = std::max(worst, std::abs(u[0] / theirs.at(id)[0] - 1));
     std::printf("%s: largest relative difference of u_r at R1 against ccx %.3e\n", type, worst);
-    EXPECT_LT(worst, 3e-4) << type;
+    EXPECT_NEAR(worst, measured.at(type), 0.02 * measured.at(type)) << type;
   }
 }
 
@@ -154,7 +156,7 @@ TEST(AxisymmetricLame, CalculixOnTheSameDeck) {
 // Lamé hand values of SPEC (111 MPa plane stress, 122 plane strain) and, the 3D quarter model of
 // spec_4_2_shrink_fit_test being the same physics, within 1 % of its 111.1; measured 110.82.
 // Both edges carry more (the peaks of SPEC §4.2). The 2D model has 378 nodes (756 unknowns): the
-// cheapest model of the scene (docs/verification.md compares it with the 3D models).
+// cheapest model of the scene (docs/verification.md, "Axisymmetric elements").
 TEST(AxisymmetricShrinkFit, ContactPressureOfTheHeatedShaft) {
   test::AxiMesh mesh("CAX8");
   mesh.rectangle("SHAFT", 0.0, 10.0, 5, 0.0, 20.0, 4, 1.0, 1.0 / 3.0);
@@ -211,8 +213,9 @@ TEST(AxisymmetricShrinkFit, ContactPressureOfTheHeatedShaft) {
   EXPECT_GT(mid, 111.0 * 0.99);
   EXPECT_LT(mid, 122.0);
   EXPECT_NEAR(mid, 111.1, 0.01 * 111.1);
-  EXPECT_GT(by_height.begin()->second, mid);   // z = 20
-  EXPECT_GT(by_height.rbegin()->second, mid);  // z = 40
+  // Both edges of the fit carry the SPEC 4.2 peaks: measured 184.04 at z = 20 and z = 40.
+  EXPECT_NEAR(by_height.begin()->second, 184.04, 0.005 * 184.04);   // z = 20
+  EXPECT_NEAR(by_height.rbegin()->second, 184.04, 0.005 * 184.04);  // z = 40
   // Measured 2.8e-7 (the 3D contact tests reach 1e-8; not traced).
   EXPECT_LT(r.contact_equilibrium.relative_residual, 1e-6);
 }
