@@ -1,5 +1,5 @@
 // SPEC §3.1 element tests (MacNeal-Harder style) for the tetrahedra C3D4/C3D10 and the wedges
-// C3D6/C3D15: the same builders and measures as `styk verify` (mesher/verify), the bricks split
+// C3D6/C3D15: the same builders and measures as `styk verify` (studies/verify), the bricks split
 // by mesher/split.hpp (6 tetrahedra or 2 wedges per brick). Asserted per case and family:
 // - our value equals CalculiX 2.20 on the identical deck (written by write_inp, solved by `ccx`)
 //   to 1e-6 relative: same shape functions, integration points and consistent loads;
@@ -68,7 +68,7 @@ class Spec3_1Solids : public ::testing::Test {
 test::FullRegistry* Spec3_1Solids::full_ = nullptr;
 
 struct Expected {
-  const char* name;  // case of mesher/verify
+  const char* name;  // case of studies/verify
   const char* family;
   double value;  // measured (docs/verification.md)
   char grade;    // against the case's theory
