@@ -124,7 +124,7 @@ Step preload_step(const std::string& family, const std::vector<int>& bolt_end, d
   return step;
 }
 
-BuildResult bolted_flange(const BuilderParams& p, const ElementRegistry& /*registry*/) {
+BuildResult bolted_flange(const BuilderParams& p, const ElementRegistry& registry) {
   const FlangeParams f = read_params(p);
   BuildResult r;
   Mesh& mesh = r.mesh;
