@@ -7,8 +7,12 @@ tip shear as consistent nodal forces on x = 10. For every size the deck is writt
 `/usr/bin/time -v`. Recorded: wall time, peak memory, mean tip deflection uz, and Styk's time
 split (read, assemble, factorise/solve, recover, write) from its progress lines.
 
+With --type C3D10 or C3D4 the bricks are split into 6 tetrahedra each (`make_tet_cantilever`,
+mesher/split.hpp) and the tip shear is the consistent load of a uniform traction on their faces.
+
 Usage: bench/run_cantilever_series.py [--sizes 36x4x4,56x8x8,...] [--ccx-max-dofs N]
        [--build build] [--out bench/out] [--solver auto|cholmod|iterative]
+       [--type C3D20|C3D10|C3D4]
 Prints a Markdown table and writes OUT/cantilever-series.csv.
 """
 import argparse
@@ -66,19 +70,22 @@ def main():
     ap.add_argument("--build", default="build")
     ap.add_argument("--out", default="bench/out")
     ap.add_argument("--solver", default="auto")
+    ap.add_argument("--type", default="C3D20", choices=["C3D20", "C3D10", "C3D4"])
     args = ap.parse_args()
 
     os.makedirs(args.out, exist_ok=True)
-    make = os.path.abspath(os.path.join(args.build, "bench", "make_cantilever"))
+    tets = args.type != "C3D20"
+    make = os.path.abspath(os.path.join(args.build, "bench",
+                                        "make_tet_cantilever" if tets else "make_cantilever"))
     styk = os.path.abspath(os.path.join(args.build, "cli", "styk"))
     rows = []
     for size in args.sizes.split(","):
         nx, ny, nz = size.split("x")
-        job = f"cantilever_{size}"
+        job = f"cantilever_{args.type}_{size}"
         work = os.path.abspath(os.path.join(args.out, job))
         os.makedirs(work, exist_ok=True)
-        gen = subprocess.run([make, nx, ny, nz, f"{job}.inp"], cwd=work, stderr=subprocess.PIPE,
-                             text=True, check=True)
+        gen = subprocess.run([make, nx, ny, nz, f"{job}.inp"] + (["--type", args.type] if tets else []),
+                             cwd=work, stderr=subprocess.PIPE, text=True, check=True)
         dofs_total = int(re.search(r"(\d+) dofs", gen.stderr).group(1))
         code, wall, peak, err = time_v([styk, "solve", f"{job}.inp", "-o", "styk",
                                         "--solver", args.solver], work)
@@ -109,7 +116,7 @@ def main():
 
     fields = sorted({k for r in rows for k in r}, key=lambda k: list(rows[-1].keys()).index(k)
                     if k in rows[-1] else 99)
-    with open(os.path.join(args.out, "cantilever-series.csv"), "w", newline="") as f:
+    with open(os.path.join(args.out, f"cantilever-series-{args.type}.csv"), "w", newline="") as f:
         w = csv.DictWriter(f, fieldnames=fields)
         w.writeheader()
         w.writerows(rows)

@@ -43,17 +43,18 @@ const IncrementResult& pick_increment(const Results& results, int step, int incr
 
 int export_command(const ExportArgs& args) {
   const std::string output = args.output.empty() ? default_output(args.input) : args.output;
+  // Every element is written as the VTK cell its formulation describes: plug-ins included.
+  PluginLibraries libraries;  // outlives the registry: plug-in code lives in it
+  const ElementRegistry registry = make_registry(libraries);
   if (ends_with(args.input, ".styk.h5")) {
     const ResultsFileContents contents = read_results_file(args.input);
     if (!contents.verified) std::cerr << unverified_notice(args.input) << "\n";
     const IncrementResult& inc =
         pick_increment(contents.results, args.step, args.increment, args.input);
-    write_vtu(output, contents.model, &inc);
+    write_vtu(output, contents.model, registry, &inc);
   } else {
-    PluginLibraries libraries;  // outlives the registry: plug-in code lives in it
-    const ElementRegistry registry = make_registry(libraries);
     const Model model = read_inp(args.input, registry);
-    write_vtu(output, model, nullptr);
+    write_vtu(output, model, registry, nullptr);
   }
   std::cout << "wrote " << output << "\n";
   return kOk;

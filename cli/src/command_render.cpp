@@ -136,6 +136,8 @@ render::RenderOptions make_options(const RenderArgs& args, bool has_results) {
   o.layers = split_list(args.layers);
   o.hidden_layers = split_list(args.hide_layers);
   o.filter = render::parse_element_filter(args.elements, args.types);
+  o.revolve_degrees = args.revolve;
+  o.revolve_segments = args.revolve_segments;
   return o;
 }
 

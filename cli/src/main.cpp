@@ -93,6 +93,8 @@ int main(int argc, char** argv) {
   render_cmd->add_option("--elements", render.elements, "Element id range FIRST-LAST");
   render_cmd->add_option("--types", render.types, "Element types, comma-separated");
   render_cmd->add_option("--size", render.size, "Picture size WIDTHxHEIGHT (default: 1600x1200)");
+  render_cmd->add_option("--revolve", render.revolve, "Draw axisymmetric elements (CAX...) as the body swept about the y axis through this many degrees (0 < angle <= 360)")->check(CLI::Range(0.0, 360.0));
+  render_cmd->add_option("--revolve-segments", render.revolve_segments, "Sectors of the --revolve sweep (default: one per 15 degrees)")->check(CLI::PositiveNumber);
   render_cmd->add_option("--animate", render.animate, "Write N frames of the deformation from 0 to the scale")->check(CLI::PositiveNumber);
 #endif
 

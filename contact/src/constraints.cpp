@@ -8,6 +8,7 @@
 #include <set>
 
 #include "styk/core/cyclic_symmetry.hpp"
+#include "styk/core/local_axes.hpp"
 #include "surface_geometry.hpp"
 
 namespace styk::contact {
@@ -94,7 +95,8 @@ std::map<int, SlaveNode> slave_nodes_of_faces(const Model& model, const SurfaceF
     const int* nodes = model.element_nodes(surface.faces[i].element);
     f.element->nodal_areas(f.geometry, f.face, area);
     for (int local : f.element->faces()[f.face].nodes) {
-      const Eigen::Vector3d n = outward_normal(f, f.element->natural_nodes()[local]);
+      const std::array<double, 2> pq = face_coordinates(f, f.element->natural_nodes()[local]);
+      const Eigen::Vector3d n = outward_normal(f, pq[0], pq[1]);
       if (n.isZero())
         throw InputError(where, "surface " + surface.name + ": face S" +
                                     std::to_string(f.face + 1) + " of element " +
@@ -181,25 +183,6 @@ double ContactConstraint::scale(int c) const {
       return c == 1 ? law.mu1 : law.mu2;
   }
   return 0.0;
-}
-
-Eigen::Matrix3d local_axes_at(const LocalAxes& axes, const Eigen::Vector3d& x) {
-  const Eigen::Vector3d a(axes.a[0], axes.a[1], axes.a[2]);
-  const Eigen::Vector3d b(axes.b[0], axes.b[1], axes.b[2]);
-  Eigen::Matrix3d E;
-  if (axes.system == CoordinateSystem::Rectangular) {
-    const Eigen::Vector3d e1 = a.normalized();
-    const Eigen::Vector3d e3 = a.cross(b).normalized();
-    E << e1, e3.cross(e1), e3;
-    return E;
-  }
-  const Eigen::Vector3d e3 = (b - a).normalized();
-  Eigen::Vector3d radial = (x - a) - (x - a).dot(e3) * e3;
-  // On the axis the radial direction is undefined: any normal to the axis will do.
-  if (radial.norm() < 1e-12 * (b - a).norm()) radial = e3.unitOrthogonal();
-  const Eigen::Vector3d e1 = radial.normalized();
-  E << e1, e3.cross(e1), e3;
-  return E;
 }
 
 void tangent_frame(const Eigen::Vector3d& n, const Eigen::Vector3d* preferred, Eigen::Vector3d& t1,
@@ -325,9 +308,8 @@ std::vector<ContactConstraint> build_contact_constraints(const Model& model,
           continue;
         }
         const PlacedFace& f = master.faces[best];
-        const Eigen::VectorXd N = shape_values(
-            *f.element,
-            face_point(f.element->faces()[f.face], best_projection.p, best_projection.q));
+        const Eigen::VectorXd N =
+            shape_values(*f.element, face_point(f, best_projection.p, best_projection.q));
         const int* nodes = model.element_nodes(master_surface.faces[best].element);
         double sum = 0.0;
         for (int local : f.element->faces()[f.face].nodes)
@@ -352,9 +334,13 @@ std::vector<ContactConstraint> build_contact_constraints(const Model& model,
            std::binary_search(adjust->nodes.begin(), adjust->nodes.end(), node)) ||
           (pair.adjust_tolerance && std::abs(c.gap0) <= *pair.adjust_tolerance))
         c.gap0 = 0.0;
-      Eigen::Vector3d preferred;
-      if (orientation != nullptr) preferred = local_axes_at(orientation->axes, xs).col(0);
-      tangent_frame(c.normal, orientation != nullptr ? &preferred : nullptr, c.t1, c.t2);
+      // The orientation's local 1 axis at the node; a node on a cylindrical orientation's axis has
+      // none and takes the default tangent.
+      Eigen::Matrix3d axes = Eigen::Matrix3d::Identity();
+      const bool oriented =
+          orientation != nullptr && local_axes_at(orientation->axes, model.coords[node], axes);
+      const Eigen::Vector3d preferred = axes.col(0);
+      tangent_frame(c.normal, oriented ? &preferred : nullptr, c.t1, c.t2);
       constrained.insert(node);
       out.push_back(std::move(c));
     }

@@ -123,7 +123,7 @@ TiedSurfaces tie_surfaces(const Model& model, const ElementRegistry& registry, c
     const PlacedFace& f = faces[best];
     const FaceDef& face = f.element->faces()[f.face];
     const Eigen::VectorXd N =
-        shape_values(*f.element, face_point(face, best_projection.p, best_projection.q));
+        shape_values(*f.element, face_point(f, best_projection.p, best_projection.q));
     const int* nodes = model.element_nodes(master.faces[best].element);
     TiedNode t;
     t.slave = node;

@@ -12,6 +12,7 @@
 #include <Eigen/Dense>
 
 #include "styk/core/element.hpp"
+#include "styk/core/face_param.hpp"
 
 #include "element_integration.hpp"
 
@@ -50,6 +51,31 @@ const FaceDef& checked_face(const ElementGeometry& g, const TElement& e, int fac
     throw InputError(g.where, element_label(g, e) + " has no face S" + std::to_string(face + 1) +
                                   " (faces S1..S" + std::to_string(faces.size()) + ")");
   return faces[face];
+}
+
+// Face quadrature of a face parametrised from its corners (FaceDef::axis = -1): the area vectors
+// point out of the element.
+void corner_face_quadrature(const TElement& e, const ElementGeometry& g, const FaceDef& face,
+                            std::vector<Vec3>& points,
+                            std::vector<Eigen::Vector3d>& weighted_normals) {
+  const FaceParam param(e, face);
+  const FaceRule rule = face_rule(param.triangle(), e.face_rule_order());
+  const int n = e.node_count();
+  Eigen::VectorXd N(n);
+  Eigen::MatrixXd dN(n, 3);
+  Eigen::Matrix3d J;
+  Eigen::Vector3d dp, dq;
+  points.clear();
+  weighted_normals.clear();
+  for (std::size_t k = 0; k < rule.weights.size(); ++k) {
+    const Vec3 xi = param.point(rule.points[k][0], rule.points[k][1]);
+    e.der(xi, N, dN);
+    param.tangents(rule.points[k][0], rule.points[k][1], dp, dq);
+    J.noalias() = dN.transpose() * g.X;  // row i = dx / dxi_i
+    const Eigen::Vector3d xp = J.transpose() * dp, xq = J.transpose() * dq;
+    points.push_back(xi);
+    weighted_normals.push_back(rule.weights[k] * param.outward() * xp.cross(xq));
+  }
 }
 
 // Visits the face integration points: calls visit(N, dA, weight-free) with the shape functions and
@@ -134,15 +160,25 @@ double TElement::jacobian(const ElementGeometry& g, const Eigen::Ref<const Eigen
   return det;
 }
 
-double TElement::point_measure(const ElementGeometry& g,
+double TElement::point_measure(const ElementGeometry& g, const Eigen::Ref<const Eigen::VectorXd>&,
                                const Eigen::Ref<const Eigen::MatrixXd>& dN,
                                Eigen::Ref<Eigen::MatrixXd> dNdx, int point) const {
   return jacobian(g, dN, dNdx, point);
 }
 
+void TElement::strain_operator(const ElementGeometry&, const Eigen::Ref<const Eigen::VectorXd>&,
+                               const Eigen::Ref<const Eigen::MatrixXd>& dNdx,
+                               Eigen::Ref<Eigen::MatrixXd> B) const {
+  bee(dNdx, B);
+}
+
 void TElement::face_quadrature(const ElementGeometry& g, const FaceDef& face,
                                std::vector<Vec3>& points,
                                std::vector<Eigen::Vector3d>& weighted_normals) const {
+  if (face.axis < 0) {
+    corner_face_quadrature(*this, g, face, points, weighted_normals);
+    return;
+  }
   std::vector<double> gauss, weights;
   gauss_legendre(face_rule_order(), gauss, weights);
   // Free natural coordinates (s, t) in cyclic order after the face axis, so that x,s x x,t
@@ -263,7 +299,7 @@ void TElement::body_load(const ElementGeometry& g, double density, RuleKind kind
   f.setZero(3 * n);
   for (int k = 0; k < r.size(); ++k) {
     der(r.points[k], N, dN);
-    const double dv = r.weights[k] * point_measure(g, dN, dNdx, k + 1);
+    const double dv = r.weights[k] * point_measure(g, N, dN, dNdx, k + 1);
     const Eigen::Vector3d x = g.X.transpose() * N;
     const Vec3 a = acceleration.at({x(0), x(1), x(2)});
     for (int p = 0; p < n; ++p)
@@ -275,7 +311,8 @@ void TElement::pressure_load(const ElementGeometry& g, int face, double p,
                              Eigen::VectorXd& f) const {
   check_geometry(g, *this);
   const FaceDef& fd = checked_face(g, *this, face);
-  const double orientation = fd.value > 0.0 ? 1.0 : -1.0;
+  // Area vectors point along +axis on a cube face, outward on any other (face_quadrature()).
+  const double orientation = fd.axis < 0 || fd.value > 0.0 ? 1.0 : -1.0;
   f.setZero(3 * node_count());
   for_each_face_point(g, *this, fd, [&](const Eigen::VectorXd& N, const Eigen::Vector3d& dA) {
     // Positive pressure pushes into the element: against the outward normal.
@@ -350,7 +387,7 @@ void TElement::point_volumes(const ElementGeometry& g, RuleKind kind, Eigen::Vec
   dv.resize(r.size());
   for (int k = 0; k < r.size(); ++k) {
     der(r.points[k], N, dN);
-    dv(k) = r.weights[k] * point_measure(g, dN, dNdx, k + 1);
+    dv(k) = r.weights[k] * point_measure(g, N, dN, dNdx, k + 1);
   }
 }
 

@@ -33,8 +33,8 @@ PointOperators::PointOperators(const TElement& element, const ElementGeometry& g
 
 double PointOperators::evaluate_plain(int k) {
   element_.der(rule_.points[k], N_, dN_);
-  const double detJ = element_.point_measure(g_, dN_, dNdx_, k + 1);
-  element_.bee(dNdx_, B_);
+  const double detJ = element_.point_measure(g_, N_, dN_, dNdx_, k + 1);
+  element_.strain_operator(g_, N_, dNdx_, B_);
   if (modes_ > 0) element_.incompatible_bee(g_, rule_.points[k], detJ, G_);
   return rule_.weights[k] * detJ;
 }

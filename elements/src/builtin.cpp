@@ -3,6 +3,7 @@
 #include <memory>
 
 #include "styk/elements/beam.hpp"
+#include "styk/elements/axisymmetric.hpp"
 #include "styk/elements/c3d20.hpp"
 #include "styk/elements/c3d20r.hpp"
 #include "styk/elements/c3d27.hpp"
@@ -11,6 +12,8 @@
 #include "styk/elements/c3d8r.hpp"
 #include "styk/elements/plane_quads.hpp"
 #include "styk/elements/t3d2.hpp"
+#include "styk/elements/tetrahedra.hpp"
+#include "styk/elements/wedges.hpp"
 
 namespace styk {
 
@@ -27,6 +30,16 @@ void register_builtin_elements(ElementRegistry& registry) {
   registry.add(std::make_unique<PlaneQuad4>(PlaneKind::Strain), source);  // CPE4
   registry.add(std::make_unique<PlaneQuad8>(PlaneKind::Stress), source);  // CPS8
   registry.add(std::make_unique<PlaneQuad8>(PlaneKind::Strain), source);  // CPE8
+  registry.add(std::make_unique<PlaneQuad8>(PlaneKind::Stress, true), source);  // CPS8R
+  registry.add(std::make_unique<PlaneQuad8>(PlaneKind::Strain, true), source);  // CPE8R
+  registry.add(std::make_unique<C3D4>(), source);
+  registry.add(std::make_unique<C3D10>(), source);
+  registry.add(std::make_unique<C3D6>(), source);
+  registry.add(std::make_unique<C3D15>(), source);
+  registry.add(std::make_unique<CAX4>(false), source);
+  registry.add(std::make_unique<CAX4>(true), source);  // CAX4R
+  registry.add(std::make_unique<CAX8>(false), source);
+  registry.add(std::make_unique<CAX8>(true), source);  // CAX8R
   registry.add(std::make_unique<T3D2>(), source);
   for (const BeamType type :
        {BeamType::B21, BeamType::B22, BeamType::B31, BeamType::B31R, BeamType::B32, BeamType::B32R})

@@ -32,7 +32,8 @@ double C3D8R::uniform_gradient(const ElementGeometry& g, Eigen::Ref<Eigen::Matri
   return volume;
 }
 
-double C3D8R::point_measure(const ElementGeometry& g, const Eigen::Ref<const Eigen::MatrixXd>&,
+double C3D8R::point_measure(const ElementGeometry& g, const Eigen::Ref<const Eigen::VectorXd>&,
+                            const Eigen::Ref<const Eigen::MatrixXd>&,
                             Eigen::Ref<Eigen::MatrixXd> dNdx, int) const {
   return uniform_gradient(g, dNdx) / 8.0;  // the 1-point rule's weight is 8
 }

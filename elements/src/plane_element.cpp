@@ -68,7 +68,7 @@ void PlaneElement::dee(const MaterialPoint& material, Matrix6d& D) const {
   }
 }
 
-double PlaneElement::point_measure(const ElementGeometry& g,
+double PlaneElement::point_measure(const ElementGeometry& g, const Eigen::Ref<const Eigen::VectorXd>&,
                                    const Eigen::Ref<const Eigen::MatrixXd>& dN,
                                    Eigen::Ref<Eigen::MatrixXd> dNdx, int point) const {
   check_thickness(g, *this);

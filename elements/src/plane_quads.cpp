@@ -20,11 +20,12 @@ IntegrationRule PlaneQuad4::rule(RuleKind kind) const {
   return quad_gauss_rule(kind == RuleKind::Reduced ? 1 : 2);
 }
 
-PlaneQuad8::PlaneQuad8(PlaneKind kind)
-    : PlaneElement(kind), nodes_(quad8_natural_nodes()), edges_(quad_edges(true)) {}
+PlaneQuad8::PlaneQuad8(PlaneKind kind, bool reduced)
+    : PlaneElement(kind), reduced_(reduced), nodes_(quad8_natural_nodes()), edges_(quad_edges(true)) {}
 
 std::string PlaneQuad8::description() const {
-  return "8-node quadratic quadrilateral, " + kind_words() + ", full integration (3x3 Gauss)";
+  return "8-node quadratic quadrilateral, " + kind_words() +
+         (reduced_ ? ", reduced integration (2x2 Gauss)" : ", full integration (3x3 Gauss)");
 }
 
 void PlaneQuad8::der(const Vec3& xi, Eigen::Ref<Eigen::VectorXd> N,
@@ -33,7 +34,7 @@ void PlaneQuad8::der(const Vec3& xi, Eigen::Ref<Eigen::VectorXd> N,
 }
 
 IntegrationRule PlaneQuad8::rule(RuleKind kind) const {
-  return quad_gauss_rule(kind == RuleKind::Reduced ? 2 : 3);
+  return quad_gauss_rule(reduced_ || kind == RuleKind::Reduced ? 2 : 3);
 }
 
 }  // namespace styk

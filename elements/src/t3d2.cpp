@@ -55,7 +55,8 @@ void T3D2::dee(const MaterialPoint& material, Matrix6d& D) const {
   D(0, 0) = material.young;  // uniaxial: no lateral stress, whatever nu
 }
 
-double T3D2::point_measure(const ElementGeometry& g, const Eigen::Ref<const Eigen::MatrixXd>& dN,
+double T3D2::point_measure(const ElementGeometry& g, const Eigen::Ref<const Eigen::VectorXd>&,
+                           const Eigen::Ref<const Eigen::MatrixXd>& dN,
                            Eigen::Ref<Eigen::MatrixXd> dNdx, int point) const {
   if (!(g.cross_section > 0.0))
     throw InputError(g.where, label(g) + ": cross-section area " + format_number(g.cross_section) +

@@ -148,6 +148,9 @@ Block mesh_block(Mesh& mesh, const BlockMap& map, const BlockSpec& spec) {
         elements.push_back(mesh.add_element(spec.type, std::move(conn)));
       }
   if (!spec.elset.empty()) mesh.add_to_element_set(spec.elset, elements);
+  std::vector<std::vector<int>>& faces = mesh.faces_of_type[spec.type];
+  faces.clear();
+  for (int f = 0; f < 6; ++f) faces.push_back(face_local_nodes(spec.type, f));
   return Block(step, d, std::move(node_index), std::move(elements));
 }
 

@@ -7,6 +7,7 @@
 #include <Eigen/Core>
 
 #include "styk/mesher/convert.hpp"
+#include "styk/mesher/split.hpp"
 
 namespace styk::mesher::detail {
 
@@ -28,26 +29,48 @@ std::string family(const BuilderParams& params, const std::vector<std::string>& 
 const std::vector<std::string> kAllHexFamilies = {"C3D8",  "C3D20", "C3D14",  "C3D21", "C3D28",
                                                   "C3D8R", "C3D8I", "C3D20R", "C3D27"};
 
-std::string base_type(const std::string& family) {
-  return family == "C3D8" || family == "C3D8R" || family == "C3D8I" || family == "C3D14" ? "C3D8"
-                                                                                         : "C3D20";
+namespace {
+
+const TElement& family_element(const ElementRegistry& registry, const std::string& family) {
+  const TElement* element = registry.find(family);
+  if (!element)
+    throw InputError({"styk mesh", 0}, "element type " + family +
+                                           " is not registered (are the plug-ins loaded?)");
+  return *element;
 }
 
-void apply_family(Mesh& mesh, const std::string& family, const std::string& contact_surface) {
-  if (family == "C3D8R" || family == "C3D8I") {
-    for (MeshElement& e : mesh.elements)
-      if (e.type == "C3D8") e.type = family;  // the same nodes, another formulation
-  } else if (family == "C3D20R") {
-    convert_to_c3d20r(mesh);
-  } else if (family == "C3D27") {
-    convert_to_c3d27(mesh);
-  } else if (family == "C3D14") {
-    convert_to_c3d14(mesh);
-  } else if (family == "C3D21") {
-    convert_layer_to_c3d21(mesh, contact_surface);
-  } else if (family == "C3D28") {
-    convert_layer_to_c3d28(mesh, contact_surface);
+// Tetrahedra (4 corners) and wedges (6) are made by splitting bricks (mesher/split.hpp).
+int split_corners(const TElement& element) {
+  if (element.form() != ElementForm::Solid || element.conversion()) return 0;
+  const std::size_t corners = corner_nodes(element).size();
+  return corners == 4 || corners == 6 ? static_cast<int>(corners) : 0;
+}
+
+}  // namespace
+
+std::string base_type(const ElementRegistry& registry, const std::string& family) {
+  const TElement& element = family_element(registry, family);
+  if (const std::optional<ElementConversion> how = element.conversion()) return to_upper(how->base);
+  if (const int corners = split_corners(element))
+    return element.node_count() > corners ? "C3D20" : "C3D8";
+  return to_upper(family);
+}
+
+bool splits_bricks(const ElementRegistry& registry, const std::string& family) {
+  return split_corners(family_element(registry, family)) != 0;
+}
+
+void apply_family(Mesh& mesh, const ElementRegistry& registry, const std::string& family,
+                  const std::string& contact_surface) {
+  const TElement& element = family_element(registry, family);
+  if (element.conversion()) {
+    convert_elements(mesh, registry, family,
+                     converts_a_layer(registry, family) ? contact_surface : std::string());
+    return;
   }
+  const int corners = split_corners(element);
+  if (corners == 4) split_to_tetrahedra(mesh, registry, family);
+  if (corners == 6) split_to_wedges(mesh, registry, family);
 }
 
 BlockMap box_map(const Vec3& origin, const Vec3& size) {

@@ -23,12 +23,18 @@ std::string family(const BuilderParams& params, const std::vector<std::string>& 
 // Every hexahedron family a builder can mesh with: the thesis' five, then the other built-in
 // formulations (the studies' refinement series use them; builders opt in one by one).
 extern const std::vector<std::string> kAllHexFamilies;
-// What to mesh blocks with: C3D8 for the 8-node families (C3D8, C3D8R, C3D8I, C3D14), C3D20
-// otherwise.
-std::string base_type(const std::string& family);
-// Converts a base mesh to the family: C3D14, C3D8R, C3D8I, C3D20R and C3D27 everywhere;
-// C3D21/C3D28 on the layer of `contact_surface` (its faces become S1).
-void apply_family(Mesh& mesh, const std::string& family, const std::string& contact_surface);
+// What to mesh blocks with: the type the family converts from (TElement::conversion(): C3D8 for
+// C3D14, C3D20 for C3D21/C3D28), the brick a tetrahedral or wedge family is split from (C3D8 for
+// C3D4/C3D6, C3D20 for C3D10/C3D15), or the family itself.
+std::string base_type(const ElementRegistry& registry, const std::string& family);
+// Whether the family is made by splitting bricks (tetrahedra, wedges: mesher/split.hpp).
+bool splits_bricks(const ElementRegistry& registry, const std::string& family);
+// Converts a base mesh to the family as its element describes (mesher::convert_elements): every
+// element (C3D14), or the layer of `contact_surface`, whose faces become the contact face
+// (C3D21/C3D28); splits the bricks of a tetrahedral or wedge family (mesher/split.hpp); nothing
+// for the bricks themselves.
+void apply_family(Mesh& mesh, const ElementRegistry& registry, const std::string& family,
+                  const std::string& contact_surface);
 
 // An axis-aligned box as a block map.
 BlockMap box_map(const Vec3& origin, const Vec3& size);

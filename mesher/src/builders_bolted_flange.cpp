@@ -167,9 +167,10 @@ void add_pressure_penetration(Model& model, const Mesh& mesh, double p, Step& pr
 // neck top as load surfaces, the bodies split at their interfaces and the contact layers
 // converted (SPEC: C3D21/C3D28 at the gasket, C3D21 under the bolt head: a C3D28 layer under the
 // head could not close, the head's inner ring continuing into the shank).
-void mesh_flange(Mesh& mesh, const FlangeParams& f, const BuilderParams& p) {
+void mesh_flange(Mesh& mesh, const ElementRegistry& registry, const FlangeParams& f,
+                 const BuilderParams& p) {
   try {
-    mesh_bolted_flange(mesh, base_type(f.family), f.layout);
+    mesh_bolted_flange(mesh, base_type(registry, f.family), f.layout);
   } catch (const std::invalid_argument& e) {
     p.fail(e.what());
   }
@@ -193,8 +194,8 @@ void mesh_flange(Mesh& mesh, const FlangeParams& f, const BuilderParams& p) {
   split_bodies(mesh, "BOLT", "HEAD_FACE", "FLANGE_SEAT");
   for (const char* body : {"FLANGE", "GASKET", "BOLT"})
     mesh.add_to_element_set("EALL", mesh.element_sets.at(body));
-  convert_contact_layers(mesh, f.family, {"GASKET_FACE", "FLANGE_FACE"});
-  convert_contact_layers(mesh, f.family == "C3D28" ? "C3D21" : f.family,
+  convert_contact_layers(mesh, registry, f.family, {"GASKET_FACE", "FLANGE_FACE"});
+  convert_contact_layers(mesh, registry, f.family == "C3D28" ? "C3D21" : f.family,
                          {"HEAD_FACE", "FLANGE_SEAT"});
 }
 
@@ -280,11 +281,11 @@ Step pressure_step(Model& model, const Mesh& mesh, const FlangeParams& f) {
   return pressure;
 }
 
-BuildResult bolted_flange(const BuilderParams& p, const ElementRegistry& /*registry*/) {
+BuildResult bolted_flange(const BuilderParams& p, const ElementRegistry& registry) {
   const FlangeParams f = read_params(p);
   BuildResult r;
   Mesh& mesh = r.mesh;
-  mesh_flange(mesh, f, p);
+  mesh_flange(mesh, registry, f, p);
   // The 1/32 model holds half the bolt; the cyclic sector a whole one.
   const double bolt_force = f.cyclic ? f.preload : 0.5 * f.preload;
   r.model = contact_model(

@@ -20,7 +20,7 @@ constexpr double kEngagement = 30, kPinLength = 40, kSleeveRadius = 20;
 
 double pin_radius(double z) { return kBottomRadius + kTaper * z; }
 
-BuildResult conical_fit(const BuilderParams& p, const ElementRegistry&) {
+BuildResult conical_fit(const BuilderParams& p, const ElementRegistry& registry) {
   const std::string fam = family(p, kFamilies);
   const int around = p.count("around", 2);
   if (around % 2 != 0) p.fail("--around must be even (two O-grid blocks per quarter)");
@@ -28,7 +28,7 @@ BuildResult conical_fit(const BuilderParams& p, const ElementRegistry&) {
   const int rows = p.count("fit-rows"), top_rows = p.count("top-rows");
   BuildResult r;
   Mesh& mesh = r.mesh;
-  const std::string type = base_type(fam);
+  const std::string type = base_type(registry, fam);
   const std::vector<SectionPatch> o_grid = quarter_o_grid(0.5);
   const double z[3] = {0, kEngagement, kPinLength};
   const int layers[2] = {rows, top_rows};
@@ -49,7 +49,7 @@ BuildResult conical_fit(const BuilderParams& p, const ElementRegistry&) {
   split_bodies(mesh, "SLEEVE", "SLEEVE_BORE", "PIN_CONE");
   mesh.add_to_element_set("EALL", mesh.element_sets.at("PIN"));
   mesh.add_to_element_set("EALL", mesh.element_sets.at("SLEEVE"));
-  convert_contact_layers(mesh, fam, {"SLEEVE_BORE", "PIN_CONE"});
+  convert_contact_layers(mesh, registry, fam, {"SLEEVE_BORE", "PIN_CONE"});
 
   const double E = p.positive("young"), nu = p.number("poisson"), q = p.number("pressure");
   r.model = contact_model(

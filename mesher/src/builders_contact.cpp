@@ -27,13 +27,13 @@ Block box(Mesh& mesh, const std::string& type, const Vec3& lo, const Vec3& hi,
 
 // §3.2.1 --------------------------------------------------------------------------------------
 
-BuildResult punch_on_foundation(const BuilderParams& p, const ElementRegistry&) {
+BuildResult punch_on_foundation(const BuilderParams& p, const ElementRegistry& registry) {
   const std::string fam = family(p, kFamilies);
   const int n = p.count("n"), rows = p.count("punch-rows"), outer = p.count("outer");
   const int depth_rows = p.count("depth-rows");
   const double grading = p.positive("grading"), width = p.positive("width");
   const double a = 1.0, h = 1.0, b = 2.0, depth = 2.0;  // SPEC stand-in (half model)
-  const std::string type = base_type(fam);
+  const std::string type = base_type(registry, fam);
   // Contact elements shrink towards the punch edge x = a (first / last = grading); the
   // foundation continues from the smallest one outwards and from the mean one downwards.
   const std::vector<double> t = graded_parameters(n, 1.0 / grading);
@@ -53,7 +53,7 @@ BuildResult punch_on_foundation(const BuilderParams& p, const ElementRegistry&) 
   split_bodies(mesh, "PUNCH", "PUNCH_BOTTOM", "FOUNDATION_TOP");
   mesh.add_to_element_set("EALL", mesh.element_sets.at("PUNCH"));
   mesh.add_to_element_set("EALL", mesh.element_sets.at("FOUNDATION"));
-  convert_contact_layers(mesh, fam, {"PUNCH_BOTTOM", "FOUNDATION_TOP"});
+  convert_contact_layers(mesh, registry, fam, {"PUNCH_BOTTOM", "FOUNDATION_TOP"});
 
   const double E = p.positive("young"), nu = p.number("poisson");
   r.model = contact_model(
@@ -107,7 +107,7 @@ double lame_displacement(double r, double a, double b, double pa, double pb, dou
   return (1 + nu) / E * ((1 - 2 * nu) * c1 * r + c2 / r);
 }
 
-BuildResult concentric_cylinders(const BuilderParams& p, const ElementRegistry&) {
+BuildResult concentric_cylinders(const BuilderParams& p, const ElementRegistry& registry) {
   const std::string fam = family(p, kAllHexFamilies);
   const int nr = p.count("nr"), ntheta = p.count("ntheta");
   const double r1 = 1, r2 = 2, r3 = 3, length = 1;
@@ -115,7 +115,7 @@ BuildResult concentric_cylinders(const BuilderParams& p, const ElementRegistry&)
   const double E1 = 10, nu1 = 0.3, E2 = 20, nu2 = 0.2;  // SPEC §3.2.2
   BuildResult r;
   Mesh& mesh = r.mesh;
-  const std::string type = base_type(fam);
+  const std::string type = base_type(registry, fam);
   const Block inner = quarter_ring(mesh, type, r1, r2, length, {nr, ntheta, 1}, "INNER");
   const Block outer = quarter_ring(mesh, type, r2, r3, length, {nr, ntheta, 1}, "OUTER");
   mesh.add_to_surface("BORE", inner.side_faces(0, -1));
@@ -124,7 +124,7 @@ BuildResult concentric_cylinders(const BuilderParams& p, const ElementRegistry&)
   split_bodies(mesh, "INNER", "INNER_CONTACT", "OUTER_CONTACT");
   mesh.add_to_element_set("EALL", mesh.element_sets.at("INNER"));
   mesh.add_to_element_set("EALL", mesh.element_sets.at("OUTER"));
-  convert_contact_layers(mesh, fam, {"INNER_CONTACT", "OUTER_CONTACT"});
+  convert_contact_layers(mesh, registry, fam, {"INNER_CONTACT", "OUTER_CONTACT"});
 
   // Analytic contact pressure: the interface displacement is affine in the pressure.
   auto mismatch = [&](double q) {
@@ -158,13 +158,13 @@ BuildResult concentric_cylinders(const BuilderParams& p, const ElementRegistry&)
 
 // §3.2.3 --------------------------------------------------------------------------------------
 
-BuildResult two_cantilevers(const BuilderParams& p, const ElementRegistry&) {
+BuildResult two_cantilevers(const BuilderParams& p, const ElementRegistry& registry) {
   const std::string fam = family(p, kFamilies);
   const int n = p.count("n"), rows = p.count("rows");
   const double L = 1.0, h = 0.1, width = p.positive("width");  // SPEC §3.2.3
   BuildResult r;
   Mesh& mesh = r.mesh;
-  const std::string type = base_type(fam);
+  const std::string type = base_type(registry, fam);
   box(mesh, type, {0, 0, 0}, {L, width, h}, {n, 1, rows}, {1, 1, 1}, "LOWER");
   const Block upper =
       box(mesh, type, {0, 0, h}, {L, width, 2 * h}, {n, 1, rows}, {1, 1, 1}, "UPPER");
@@ -173,7 +173,7 @@ BuildResult two_cantilevers(const BuilderParams& p, const ElementRegistry&) {
   split_bodies(mesh, "UPPER", "UPPER_BOTTOM", "LOWER_TOP");
   mesh.add_to_element_set("EALL", mesh.element_sets.at("UPPER"));
   mesh.add_to_element_set("EALL", mesh.element_sets.at("LOWER"));
-  convert_contact_layers(mesh, fam, {"UPPER_BOTTOM", "LOWER_TOP"});
+  convert_contact_layers(mesh, registry, fam, {"UPPER_BOTTOM", "LOWER_TOP"});
 
   const double E = p.positive("young"), q = p.number("pressure");
   const std::optional<Friction> friction = friction_parameter(p, "mu");
@@ -207,7 +207,7 @@ BuildResult two_cantilevers(const BuilderParams& p, const ElementRegistry&) {
 
 // §3.2.4 --------------------------------------------------------------------------------------
 
-BuildResult punch_on_half_space(const BuilderParams& p, const ElementRegistry&) {
+BuildResult punch_on_half_space(const BuilderParams& p, const ElementRegistry& registry) {
   const std::string fam = family(p, kFamilies);
   const int n = to_upper(p.text("n")) == "AUTO" ? (fam == "C3D28" ? 3 : 4) : p.count("n");
   const int outer = p.count("outer"), depth_rows = p.count("depth-rows");
@@ -215,7 +215,7 @@ BuildResult punch_on_half_space(const BuilderParams& p, const ElementRegistry&) 
   const double grading = p.positive("grading"), depth_grading = p.positive("depth-grading");
   BuildResult r;
   Mesh& mesh = r.mesh;
-  const std::string type = base_type(fam);
+  const std::string type = base_type(registry, fam);
   const double spans[2][2] = {{0, a}, {a, b}};
   for (int i = 0; i < 2; ++i)
     for (int j = 0; j < 2; ++j)
@@ -227,7 +227,7 @@ BuildResult punch_on_half_space(const BuilderParams& p, const ElementRegistry&) 
   split_bodies(mesh, "PUNCH", "PUNCH_BOTTOM", "HALFSPACE_TOP");
   mesh.add_to_element_set("EALL", mesh.element_sets.at("PUNCH"));
   mesh.add_to_element_set("EALL", mesh.element_sets.at("HALFSPACE"));
-  convert_contact_layers(mesh, fam, {"PUNCH_BOTTOM", "HALFSPACE_TOP"});
+  convert_contact_layers(mesh, registry, fam, {"PUNCH_BOTTOM", "HALFSPACE_TOP"});
 
   const double E = p.positive("young"), nu = p.number("poisson"), P = p.number("force");
   std::optional<Friction> friction = friction_parameter(p, "mu");

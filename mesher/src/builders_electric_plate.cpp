@@ -58,7 +58,7 @@ void to_plane_quads(Mesh& mesh) {
   mesh.remove_unused_nodes();
 }
 
-BuildResult electric_plate(const BuilderParams& p, const ElementRegistry&) {
+BuildResult electric_plate(const BuilderParams& p, const ElementRegistry& registry) {
   const std::string fam = family(p, kPlateFamilies);
   const bool slit = p.choice("slit", {"no", "yes"}) == "yes";
   const double size = p.positive("size");
@@ -90,7 +90,7 @@ BuildResult electric_plate(const BuilderParams& p, const ElementRegistry&) {
     to_plane_quads(r.mesh);
   } else {
     r.mesh.add_to_surface("EDGES", edges);
-    apply_family(r.mesh, fam, "EDGES");  // C3D28 along the two electrode edges
+    apply_family(r.mesh, registry, fam, "EDGES");  // C3D28 along the two electrode edges
   }
 
   // Electrodes: every node on the through-thickness line of A (0, 7) and B (14, 7).

@@ -90,7 +90,7 @@ BuildResult p3g_joint(const BuilderParams& p, const ElementRegistry& registry) {
 
   BuildResult r;
   Mesh& mesh = r.mesh;
-  const std::string type = base_type(fam);
+  const std::string type = base_type(registry, fam);
   const int n = m.around / 6;
   const double row = (kFlangeStart - kHubStart) / m.arm_rows;
   const AxialSegment round{0, kHubStart, m.shaft_rows,
@@ -136,14 +136,14 @@ BuildResult p3g_joint(const BuilderParams& p, const ElementRegistry& registry) {
   mesh.add_to_element_set("EALL", mesh.element_sets.at("SHAFT"));
   mesh.add_to_element_set("EALL", mesh.element_sets.at("HUB"));
   if (fam == "C3D28") {
-    convert_contact_layers(mesh, fam, {"HUB_BORE"});
+    convert_contact_layers(mesh, registry, fam, {"HUB_BORE"});
     const std::string work = "__SHAFT_LAYER";
     mesh.surfaces[work] = mesh.surfaces.at("SHAFT_POLYGON");
     mesh.add_to_surface(work, mesh.surfaces.at(round_polygon));
-    convert_layer_to_c3d28(mesh, work);
+    convert_elements(mesh, registry, fam, work);
     mesh.surfaces.erase(work);
   } else {
-    convert_contact_layers(mesh, fam, {"HUB_BORE", "SHAFT_POLYGON"});
+    convert_contact_layers(mesh, registry, fam, {"HUB_BORE", "SHAFT_POLYGON"});
   }
   mesh.surfaces.erase(round_polygon);
 

@@ -145,6 +145,7 @@ constexpr int kFitSectors = 4;
 // The builder's parameters, checked.
 struct FitCase {
   std::string family, model_name, load_case, fit, mu_text;
+  std::string base;     // the brick type the family is meshed from (C3D8 or C3D20)
   bool full = false;    // model B
   bool sector = false;  // model B as a 90 deg sector with cyclic symmetry (--sector yes)
   bool thin = false;    // model C: a thin sector between two symmetry planes
@@ -155,9 +156,10 @@ struct FitCase {
   std::optional<Friction> friction;
 };
 
-FitCase read_fit_case(const BuilderParams& p) {
+FitCase read_fit_case(const BuilderParams& p, const ElementRegistry& registry) {
   FitCase c;
   c.family = family(p, kAllHexFamilies);
+  c.base = base_type(registry, c.family);
   c.model_name = to_upper(p.choice("model", {"A", "B", "C"}));
   c.full = c.model_name == "B";
   c.thin = c.model_name == "C";
@@ -279,7 +281,7 @@ Step heating_step(Model& model, const Mesh& mesh, const FitCase& c) {
 void add_load_steps(Model& model, const Mesh& mesh, const FitCase& c, const BuilderParams& p,
                     const std::vector<int>& rim, const std::vector<OutputRequest>& outputs,
                     const SectorBoundary* boundary) {
-  const bool quadratic = base_type(c.family) == "C3D20";
+  const bool quadratic = c.base == "C3D20";
   const int parts = boundary != nullptr ? kFitSectors : 1;  // 1/parts of the joint's torque
   int index = 1;
   if (c.load_case == "fit") return;
@@ -342,19 +344,19 @@ std::string fit_heading(const FitCase& c, double young, double poisson, double i
          ". Tab 4.1 shaft end (thermal): elongation 0.1268 (C3D21), diametral growth 0.0401";
 }
 
-BuildResult shrink_fit(const BuilderParams& p, const ElementRegistry&) {
-  const FitCase c = read_fit_case(p);
+BuildResult shrink_fit(const BuilderParams& p, const ElementRegistry& registry) {
+  const FitCase c = read_fit_case(p, registry);
   BuildResult r;
   Mesh& mesh = r.mesh;
   for (int quarter = 0; quarter < (c.full ? 4 : 1); ++quarter)
-    mesh_sector(mesh, base_type(c.family), c.mesh, quarter * 0.5 * kPi, c.sweep,
+    mesh_sector(mesh, c.base, c.mesh, quarter * 0.5 * kPi, c.sweep,
                 c.thin ? c.thin_around : c.mesh.around);
   merge_coincident_nodes(mesh);
   if (c.sector) cut_sector(mesh, kFitSectors, 0.0);
   split_bodies(mesh, "SLEEVE", "SLEEVE_BORE", "SHAFT_FIT");
   mesh.add_to_element_set("EALL", mesh.element_sets.at("SHAFT"));
   mesh.add_to_element_set("EALL", mesh.element_sets.at("SLEEVE"));
-  convert_contact_layers(mesh, c.family, {"SLEEVE_BORE", "SHAFT_FIT"});
+  convert_contact_layers(mesh, registry, c.family, {"SLEEVE_BORE", "SHAFT_FIT"});
 
   const double E = p.positive("young"), nu = p.number("poisson");
   const double interference = c.alpha * c.dT * kShaftRadius;

@@ -12,17 +12,21 @@ namespace styk::mesher::detail {
 namespace {
 
 const std::vector<std::string> kFamilies = {"C3D8", "C3D20", "C3D14", "C3D21", "C3D28"};
+// The brick families and the tetrahedra and wedges split from bricks (mesher/split.hpp).
+const std::vector<std::string> kAllFamilies = {
+    "C3D8", "C3D20", "C3D14",  "C3D21", "C3D28", "C3D8R", "C3D8I",
+    "C3D20R", "C3D27", "C3D4", "C3D10", "C3D6",  "C3D15"};
 
 bool near(double a, double b, double tol) { return std::abs(a - b) < tol; }
 
-BuildResult single_element(const BuilderParams& p, const ElementRegistry&) {
+BuildResult single_element(const BuilderParams& p, const ElementRegistry& registry) {
   const std::string fam = family(p, kFamilies);
   const std::string loads = p.choice("loads", {"thesis", "consistent"});
   BuildResult r;
   const Block b = mesh_block(r.mesh, box_map({-1, -1, -1}, {2, 2, 2}),
-                             {base_type(fam), {1, 1, 1}, {1, 1, 1}, "EALL"});
+                             {base_type(registry, fam), {1, 1, 1}, {1, 1, 1}, "EALL"});
   r.mesh.add_to_surface("CONTACT", b.side_faces(2, -1));
-  apply_family(r.mesh, fam, "CONTACT");
+  apply_family(r.mesh, registry, fam, "CONTACT");
   r.model = finish_model(r.mesh,
                          "SPEC 2.4 single " + fam +
                              " on the reference cube [-1,1]^3, top "
@@ -60,16 +64,16 @@ BuildResult single_element(const BuilderParams& p, const ElementRegistry&) {
   return r;
 }
 
-BuildResult thick_plate(const BuilderParams& p, const ElementRegistry&) {
-  const std::string fam = family(p, kFamilies);
+BuildResult thick_plate(const BuilderParams& p, const ElementRegistry& registry) {
+  const std::string fam = family(p, kAllFamilies);
   const int n = p.count("n"), nz = p.count("nz");
   if (n % 2 != 0) p.fail("--n must be even: the load sits on the plate's centre node");
   const double a = 400, t = 40;
   BuildResult r;
   const Block b = mesh_block(r.mesh, box_map({0, 0, 0}, {a, a, t}),
-                             {base_type(fam), {n, n, nz}, {1, 1, 1}, "EALL"});
+                             {base_type(registry, fam), {n, n, nz}, {1, 1, 1}, "EALL"});
   r.mesh.add_to_surface("CONTACT", b.side_faces(2, -1));
-  apply_family(r.mesh, fam, "CONTACT");
+  apply_family(r.mesh, registry, fam, "CONTACT");
   const double tol = 1e-6 * r.mesh.size();
   r.model = finish_model(r.mesh,
                          "SPEC 3.1.5 thick plate 400 x 400 x 40 (full), " + fam + " " +
@@ -98,8 +102,8 @@ BuildResult thick_plate(const BuilderParams& p, const ElementRegistry&) {
   return r;
 }
 
-BuildResult hemisphere(const BuilderParams& p, const ElementRegistry&) {
-  const std::string fam = family(p, kFamilies);
+BuildResult hemisphere(const BuilderParams& p, const ElementRegistry& registry) {
+  const std::string fam = family(p, kAllFamilies);
   const int n = p.count("n");
   const double R = 10, t = 0.04, hole = 18.0 * kPi / 180;
   // xi: radius, eta: azimuth 0..90 deg, zeta: latitude 0..72 deg -> (e_r, e_theta, e_phi)
@@ -112,9 +116,9 @@ BuildResult hemisphere(const BuilderParams& p, const ElementRegistry&) {
   };
   BuildResult r;
   const Block b =
-      mesh_block(r.mesh, map, {base_type(fam), {p.count("nt"), n, n}, {1, 1, 1}, "EALL"});
+      mesh_block(r.mesh, map, {base_type(registry, fam), {p.count("nt"), n, n}, {1, 1, 1}, "EALL"});
   r.mesh.add_to_surface("CONTACT", b.side_faces(0, -1));  // inner surface
-  apply_family(r.mesh, fam, "CONTACT");
+  apply_family(r.mesh, registry, fam, "CONTACT");
   const double tol = 1e-7 * R;
   r.model = finish_model(r.mesh,
                          "SPEC 3.1.6 stand-in: MacNeal-Harder hemisphere R = 10, t = 0.04, "
@@ -168,15 +172,15 @@ std::vector<FaceRef> layer_faces(const BuilderParams& p, const Block& b) {
                                                            : b.side_faces(2, -1);
 }
 
-BuildResult thick_cylinder(const BuilderParams& p, const ElementRegistry&) {
-  const std::string fam = family(p, kAllHexFamilies);
+BuildResult thick_cylinder(const BuilderParams& p, const ElementRegistry& registry) {
+  const std::string fam = family(p, kAllFamilies);
   const double r1 = 3, r2 = 9, nu = p.number("poisson"), E = p.positive("young");
   BuildResult r;
-  const Block b = ring(r.mesh, base_type(fam), r1, r2, 0.5 * kPi, 1.0,
+  const Block b = ring(r.mesh, base_type(registry, fam), r1, r2, 0.5 * kPi, 1.0,
                        {p.count("nr"), p.count("ntheta"), 1}, p.positive("grading"));
   r.mesh.add_to_surface("INNERFACE", b.side_faces(0, -1));
   r.mesh.add_to_surface("LAYER", layer_faces(p, b));
-  apply_family(r.mesh, fam, "LAYER");
+  apply_family(r.mesh, registry, fam, "LAYER");
   const double u =
       (1 + nu) * r1 * r1 / (E * (r2 * r2 - r1 * r1)) * (r2 * r2 / r1 + (1 - 2 * nu) * r1);
   char theory[64];
@@ -203,8 +207,8 @@ BuildResult thick_cylinder(const BuilderParams& p, const ElementRegistry&) {
   return r;
 }
 
-BuildResult patch_test(const BuilderParams& p, const ElementRegistry&) {
-  const std::string fam = family(p, kFamilies);
+BuildResult patch_test(const BuilderParams& p, const ElementRegistry& registry) {
+  const std::string fam = family(p, kAllFamilies);
   const std::vector<Vec3> cube = {{0, 0, 0}, {1, 0, 0}, {1, 1, 0}, {0, 1, 0},
                                   {0, 0, 1}, {1, 0, 1}, {1, 1, 1}, {0, 1, 1}};
   // SPEC §3.1.8 interior nodes (MacNeal-Harder), in the C3D8 corner order of the cube.
@@ -212,7 +216,16 @@ BuildResult patch_test(const BuilderParams& p, const ElementRegistry&) {
       {0.249, 0.342, 0.192}, {0.826, 0.288, 0.288}, {0.850, 0.649, 0.263}, {0.273, 0.750, 0.230},
       {0.320, 0.186, 0.643}, {0.677, 0.305, 0.683}, {0.788, 0.693, 0.644}, {0.165, 0.745, 0.702}};
   BuildResult r;
-  const std::string type = base_type(fam);
+  // The six outer bricks point their axes at different cube faces, so no choice of wedge axis cuts
+  // every shared face alike on both sides: a wedge patch would not conform.
+  if (splits_bricks(registry, fam) && corner_nodes(*registry.find(fam)).size() == 6)
+    throw InputError({"styk mesh", 0},
+                     "patch-test: --element " + fam +
+                         ": wedges cannot be split conformingly from the 7 bricks of the "
+                         "MacNeal-Harder patch (their axes point in different directions)");
+  // Tetrahedra and wedges are split from C3D8 bricks, which keeps their edges straight: curved
+  // quadratic pieces do not reproduce constant strain under CalculiX's rules (split.hpp).
+  const std::string type = splits_bricks(registry, fam) ? "C3D8" : base_type(registry, fam);
   std::vector<FaceRef> outer_faces;
   mesh_block(r.mesh, hex_map(inner), {type, {1, 1, 1}, {1, 1, 1}, "EALL"});
   // One element between each cube face and the matching face of the inner hexahedron: its own
@@ -238,7 +251,7 @@ BuildResult patch_test(const BuilderParams& p, const ElementRegistry&) {
   }
   merge_coincident_nodes(r.mesh);
   r.mesh.add_to_surface("CONTACT", outer_faces);
-  apply_family(r.mesh, fam, "CONTACT");
+  apply_family(r.mesh, registry, fam, "CONTACT");
   r.model = finish_model(r.mesh,
                          "SPEC 3.1.8 patch test, unit cube of 7 elements (" + fam +
                              "), boundary displacements of constant strain 1e-3: "
@@ -263,18 +276,18 @@ BuildResult patch_test(const BuilderParams& p, const ElementRegistry&) {
   return r;
 }
 
-BuildResult cylinder_wall(const BuilderParams& p, const ElementRegistry&) {
-  const std::string fam = family(p, kAllHexFamilies);
+BuildResult cylinder_wall(const BuilderParams& p, const ElementRegistry& registry) {
+  const std::string fam = family(p, kAllFamilies);
   const double r1 = 2, r2 = 3, length = p.positive("length");
   const double t1 = p.number("t1"), t2 = p.number("t2"), k = p.positive("conductivity");
   BuildResult r;
-  const Block b = ring(r.mesh, base_type(fam), r1, r2, 2 * kPi, length,
+  const Block b = ring(r.mesh, base_type(registry, fam), r1, r2, 2 * kPi, length,
                        {p.count("nr"), p.count("ntheta"), p.count("nz")}, 1.0);
   r.mesh.add_to_surface("INNERFACE", b.side_faces(0, -1));
   r.mesh.add_to_surface("OUTERFACE", b.side_faces(0, +1));
   r.mesh.add_to_surface("LAYER", layer_faces(p, b));
   merge_coincident_nodes(r.mesh);  // close the ring at 0 / 360 deg
-  apply_family(r.mesh, fam, "LAYER");
+  apply_family(r.mesh, registry, fam, "LAYER");
   char theory[160];
   std::snprintf(theory, sizeof theory,
                 "T(r) = %g - (%g - %g) ln(r/2)/ln(3/2); heat flow per unit length 2 pi k "
@@ -328,7 +341,7 @@ void add_solid_builders(std::vector<BuilderInfo>& all) {
   all.push_back({"thick-plate",
                  "§3.1.5",
                  "Thick square plate 400 x 400 x 40, clamped edges, centre load",
-                 {family_param("C3D21", kFamilies),
+                 {family_param("C3D21", kAllFamilies),
                   {"n", "6", "elements per side (6, 10; even)"},
                   {"nz", "1", "elements through the thickness"},
                   {"force", "16", "centre load P"},
@@ -339,7 +352,7 @@ void add_solid_builders(std::vector<BuilderInfo>& all) {
       {"hemisphere",
        "§3.1.6",
        "Hemisphere stand-in: MacNeal-Harder R 10, t 0.04, 18° hole, quarter",
-       {family_param("C3D21", kFamilies),
+       {family_param("C3D21", kAllFamilies),
         {"n", "9", "elements per direction on the surface (n x n)"},
         {"nt", "1", "elements through the thickness"},
         {"force", "2", "load F of the full hemisphere (half on each symmetry-plane point)"},
@@ -349,7 +362,7 @@ void add_solid_builders(std::vector<BuilderInfo>& all) {
   all.push_back({"thick-cylinder",
                  "§3.1.7",
                  "Thick-walled cylinder R 3-9, plane strain, 4:1 radial grading",
-                 {family_param("C3D21", kAllHexFamilies),
+                 {family_param("C3D21", kAllFamilies),
                   {"nr", "5", "elements through the wall"},
                   {"ntheta", "9", "elements around the quarter (10° each, as the thesis' sector)"},
                   {"grading", "4", "outer / inner element length"},
@@ -361,14 +374,14 @@ void add_solid_builders(std::vector<BuilderInfo>& all) {
   all.push_back({"patch-test",
                  "§3.1.8",
                  "Patch test: unit cube of 7 irregular elements",
-                 {family_param("C3D21", kFamilies),
+                 {family_param("C3D21", kAllFamilies),
                   {"young", "1e6", "Young's modulus E"},
                   {"poisson", "0.25", "Poisson's ratio"}},
                  patch_test});
   all.push_back({"cylinder-wall",
                  "§6.2",
                  "Steady heat through a cylinder wall r 2-3, T 100 inside, 25 outside",
-                 {family_param("C3D28", kAllHexFamilies),
+                 {family_param("C3D28", kAllFamilies),
                   {"nr", "1", "elements through the wall"},
                   {"ntheta", "40", "elements around"},
                   {"nz", "5", "elements along the axis"},

@@ -221,7 +221,7 @@ BuildResult spline_joint(const BuilderParams& p, const ElementRegistry& registry
 
   BuildResult r;
   Mesh& mesh = r.mesh;
-  const std::string type = base_type(fam);
+  const std::string type = base_type(registry, fam);
   const int around = m.tooth + m.groove;
   // The shaft outside the hub continues the hub's axial element length towards the fixed end.
   const double row = (kFlangeStart - kHubStart) / m.arm_rows;
@@ -248,15 +248,15 @@ BuildResult spline_joint(const BuilderParams& p, const ElementRegistry& registry
   if (c3d28) {
     // The shaft's layer closes by itself (flanks, root strips, groove bottoms); the hub's through
     // the sector lines, converted on both sides with the shared face as S1.
-    convert_contact_layers(mesh, fam, {"SHAFT_FLANKS"});
+    convert_contact_layers(mesh, registry, fam, {"SHAFT_FLANKS"});
     const std::string work = "__HUB_LAYER";
     mesh.surfaces[work] = mesh.surfaces.at("HUB_FLANKS");
     mesh.add_to_surface(work, mesh.surfaces.at(kHubSectors));
     mesh.surfaces.erase(kHubSectors);
-    convert_layer_to_c3d28(mesh, work);
+    convert_elements(mesh, registry, fam, work);
     mesh.surfaces.erase(work);
   } else {
-    convert_contact_layers(mesh, fam, {"HUB_FLANKS", "SHAFT_FLANKS"});
+    convert_contact_layers(mesh, registry, fam, {"HUB_FLANKS", "SHAFT_FLANKS"});
   }
 
   const double E = p.positive("young"), nu = p.number("poisson");

@@ -20,17 +20,17 @@ const std::vector<std::string> kFamilies = {"C3D14", "C3D21", "C3D28", "C3D20", 
 
 bool near(double a, double b) { return std::abs(a - b) < 1e-9; }
 
-BuildResult stacked_elements(const BuilderParams& p, const ElementRegistry&) {
+BuildResult stacked_elements(const BuilderParams& p, const ElementRegistry& registry) {
   const std::string fam = family(p, kFamilies);
   BuildResult r;
   Mesh& mesh = r.mesh;
   mesh_block(mesh, box_map({-1, -1, -1}, {2, 2, 2}),
-             {base_type(fam), {1, 1, 1}, {1, 1, 1}, "LOWER"});
+             {base_type(registry, fam), {1, 1, 1}, {1, 1, 1}, "LOWER"});
   mesh_block(mesh, box_map({-1, -1, 1}, {2, 2, 2}),
-             {base_type(fam), {1, 1, 1}, {1, 1, 1}, "UPPER"});
+             {base_type(registry, fam), {1, 1, 1}, {1, 1, 1}, "UPPER"});
   merge_coincident_nodes(mesh);
   split_bodies(mesh, "LOWER", "LOWER_TOP", "UPPER_BOTTOM");
-  convert_contact_layers(mesh, fam, {"UPPER_BOTTOM", "LOWER_TOP"});
+  convert_contact_layers(mesh, registry, fam, {"UPPER_BOTTOM", "LOWER_TOP"});
   const double E = p.positive("young"), nu = p.number("poisson");
   const bool c3d14 = fam == "C3D14", c3d8 = fam == "C3D8";
   r.model = contact_model(

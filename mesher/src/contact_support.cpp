@@ -43,10 +43,12 @@ Model contact_model(const Mesh& mesh, const std::string& heading,
   return model;
 }
 
-void convert_contact_layers(Mesh& mesh, const std::string& family,
+void convert_contact_layers(Mesh& mesh, const ElementRegistry& registry, const std::string& family,
                             const std::vector<std::string>& contact_surfaces) {
-  if (family != "C3D21" && family != "C3D28") {
-    apply_family(mesh, family, "");  // every element: C3D14, C3D8R, C3D8I, C3D20R, C3D27
+  const TElement* element = registry.find(family);
+  if (!element || !element->conversion()) return;
+  if (!converts_a_layer(registry, family)) {
+    convert_elements(mesh, registry, family);
     return;
   }
   // The conversion rewrites the surface it converts (a closed C3D28 layer may be larger than the
@@ -55,10 +57,7 @@ void convert_contact_layers(Mesh& mesh, const std::string& family,
   const std::string work = "__LAYER";
   for (const std::string& name : contact_surfaces) {
     mesh.surfaces[work] = mesh.surfaces.at(to_upper(name));
-    if (family == "C3D21")
-      convert_layer_to_c3d21(mesh, work);
-    else
-      convert_layer_to_c3d28(mesh, work);
+    convert_elements(mesh, registry, family, work);
     mesh.surfaces.erase(work);
   }
 }

@@ -29,10 +29,11 @@ struct BodyMaterial {
 Model contact_model(const Mesh& mesh, const std::string& heading,
                     const std::vector<BodyMaterial>& bodies);
 
-// Converts the mesh to the element family with the contact faces of `contact_surfaces` as S1:
-// C3D14 everywhere, C3D21/C3D28 on each surface's layer (a C3D28 layer may grow to close itself,
-// docs/mesher.md; the named surfaces keep exactly their faces), nothing for C3D8/C3D20.
-void convert_contact_layers(Mesh& mesh, const std::string& family,
+// Converts the mesh to the element family as its element describes (mesher::convert_elements):
+// a layer type (C3D21, C3D28) on each surface's layer with the contact faces as its contact face
+// (a C3D28 layer may grow to close itself, docs/mesher.md; the named surfaces keep exactly their
+// faces), a whole-element type (C3D14) everywhere, nothing for a family without a conversion.
+void convert_contact_layers(Mesh& mesh, const ElementRegistry& registry, const std::string& family,
                             const std::vector<std::string>& contact_surfaces);
 
 // Writes mesh surfaces into the model as element-face *SURFACEs (S1 = face 0).

@@ -1,38 +1,85 @@
 #include "styk/mesher/convert.hpp"
 
 #include <algorithm>
-#include <array>
-#include <cmath>
 #include <deque>
-#include <iterator>
 #include <map>
+#include <memory>
 #include <stdexcept>
 
-#include "styk/mesher/hex_topology.hpp"
+#include "reference_shape.hpp"
 
 namespace styk::mesher {
 namespace {
 
-using CornerKey = std::array<int, 4>;
+using detail::natural_point;
+using detail::ReferenceShape;
+using CornerKey = std::vector<int>;  // sorted mesh node indices of a face's corners
 
 std::string element_name(int e) { return "element " + std::to_string(e + 1); }
 
-CornerKey corner_key(const MeshElement& element, int face) {
-  CornerKey key{};
-  const std::vector<int> local = face_corner_nodes(face);
-  for (int i = 0; i < 4; ++i) key[i] = element.nodes[local[i]];
-  std::sort(key.begin(), key.end());
-  return key;
+// What converting to one type means, worked out once from the two TElements.
+struct Plan {
+  std::string type;
+  ElementConversion how;
+  std::unique_ptr<ReferenceShape> target, base;
+  std::vector<int> base_node;  // per target node: the base node at its natural point, or -1
+  std::vector<char> conforms;  // per target face: the same natural nodes as the base type's face
+};
+
+const TElement& registered(const ElementRegistry& registry, const std::string& type) {
+  const TElement* element = registry.find(type);
+  if (!element)
+    throw std::invalid_argument("element conversion: element type " + type +
+                                " is not registered (are the plug-ins loaded?)");
+  return *element;
 }
 
-std::vector<int> all_of_type(const Mesh& mesh, const std::vector<int>& elements,
-                             const std::string& type) {
-  if (!elements.empty()) return elements;
-  std::vector<int> out;
-  for (int e = 0; e < static_cast<int>(mesh.elements.size()); ++e)
-    if (mesh.elements[e].type == type) out.push_back(e);
+// Natural points of the nodes of `shape` on face f.
+std::vector<Eigen::Vector3d> face_points(const ReferenceShape& shape, int f) {
+  std::vector<Eigen::Vector3d> out;
+  for (const Vec3& xi : shape.natural())
+    if (shape.on_face(f, natural_point(xi))) out.push_back(natural_point(xi));
   return out;
 }
+
+bool same_points(std::vector<Eigen::Vector3d> a, std::vector<Eigen::Vector3d> b, double tol) {
+  if (a.size() != b.size()) return false;
+  for (const Eigen::Vector3d& p : a) {
+    const auto hit = std::find_if(b.begin(), b.end(),
+                                  [&](const Eigen::Vector3d& q) { return (p - q).norm() < tol; });
+    if (hit == b.end()) return false;
+    b.erase(hit);
+  }
+  return true;
+}
+
+Plan make_plan(const ElementRegistry& registry, const std::string& type) {
+  Plan plan;
+  plan.type = to_upper(type);
+  const TElement& target = registered(registry, plan.type);
+  const std::optional<ElementConversion> how = target.conversion();
+  if (!how)
+    throw std::invalid_argument("element conversion: element type " + plan.type +
+                                " does not describe a conversion (TElement::conversion())");
+  plan.how = *how;
+  plan.target = std::make_unique<ReferenceShape>(target);
+  plan.base = std::make_unique<ReferenceShape>(registered(registry, plan.how.base));
+  for (const Vec3& xi : target.natural_nodes())
+    plan.base_node.push_back(plan.base->node_at(natural_point(xi)));
+  if (plan.how.contact_face >= plan.target->face_count())
+    throw std::invalid_argument("element conversion: " + plan.type + " names contact face S" +
+                                std::to_string(plan.how.contact_face + 1) + ", which it lacks");
+  for (int f = 0; f < plan.target->face_count(); ++f)
+    plan.conforms.push_back(f < plan.base->face_count() &&
+                            same_points(face_points(*plan.target, f),
+                                        face_points(*plan.base, f), 1e-9));
+  return plan;
+}
+
+// One element as it will be converted: old = R new (identity when it converts as it is).
+struct Orientation {
+  CubeRotation R{{{1, 0, 0}, {0, 1, 0}, {0, 0, 1}}};
+};
 
 std::vector<Vec3> coords_of(const Mesh& mesh, const MeshElement& element) {
   std::vector<Vec3> x;
@@ -40,37 +87,53 @@ std::vector<Vec3> coords_of(const Mesh& mesh, const MeshElement& element) {
   return x;
 }
 
-// Renumbers C3D20 element e so that its face `face` becomes S1, and updates the face numbers of
-// every surface that names e.
-void reorient_to_bottom(Mesh& mesh, int e, int face) {
-  if (face == 0) return;
-  const CubeRotation R = rotation_to_bottom(face);
-  MeshElement& element = mesh.elements[e];
-  const std::vector<int> perm = rotated_numbering(element.type, R);
-  std::vector<int> nodes(perm.size());
-  for (std::size_t k = 0; k < perm.size(); ++k) nodes[k] = element.nodes[perm[k]];
-  element.nodes = std::move(nodes);
-  for (auto& [name, faces] : mesh.surfaces) {
-    bool touched = false;
-    for (FaceRef& f : faces)
-      if (f.element == e) {
-        f.face = rotated_face(R, f.face);
-        touched = true;
-      }
-    if (touched) std::sort(faces.begin(), faces.end());
-  }
+// Where target node k of element e lands when e converts with orientation o.
+Eigen::Vector3d target_position(const Mesh& mesh, const Plan& plan, int e, const Orientation& o,
+                                int k) {
+  const Eigen::Vector3d xi = detail::turn(o.R, natural_point(plan.target->natural()[k]));
+  return plan.base->place(coords_of(mesh, mesh.elements[e]), xi);
 }
 
-// The surface's faces by element, checking one face per element and the element type.
-std::map<int, int> layer_faces(const Mesh& mesh, const std::string& surface) {
+// Positions of the target nodes on old face `old_face` of e converted with orientation o.
+std::vector<Eigen::Vector3d> converted_face(const Mesh& mesh, const Plan& plan, int e,
+                                            const Orientation& o, int old_face) {
+  std::vector<Eigen::Vector3d> out;
+  for (std::size_t k = 0; k < plan.target->natural().size(); ++k) {
+    const Eigen::Vector3d xi = detail::turn(o.R, natural_point(plan.target->natural()[k]));
+    if (plan.base->on_face(old_face, xi))
+      out.push_back(target_position(mesh, plan, e, o, static_cast<int>(k)));
+  }
+  return out;
+}
+
+CornerKey corner_key(const MeshElement& element, const ReferenceShape& shape, int face) {
+  CornerKey key;
+  for (int local : shape.face_corners(face)) key.push_back(element.nodes[local]);
+  std::sort(key.begin(), key.end());
+  return key;
+}
+
+// The orientation that turns old face `face` into the contact face.
+Orientation orientation_to(const Plan& plan, int e, int face) {
+  Orientation o;
+  if (!plan.base->rotation_between(plan.how.contact_face, face, o.R))
+    throw std::invalid_argument("element conversion: " + element_name(e) + " (" + plan.how.base +
+                                ") cannot be turned so that its face S" +
+                                std::to_string(face + 1) + " becomes the contact face of " +
+                                plan.type);
+  return o;
+}
+
+// The layer's elements and faces from the surface, one face per element, all of the base type.
+std::map<int, int> layer_of(const Mesh& mesh, const Plan& plan, const std::string& surface) {
   const auto it = mesh.surfaces.find(to_upper(surface));
   if (it == mesh.surfaces.end() || it->second.empty())
     throw std::invalid_argument("element conversion: no surface named " + to_upper(surface));
   std::map<int, int> layer;
   for (const FaceRef& f : it->second) {
-    if (mesh.elements[f.element].type != "C3D20")
+    if (mesh.elements[f.element].type != plan.how.base)
       throw std::invalid_argument("element conversion: " + element_name(f.element) + " is " +
-                                  mesh.elements[f.element].type + ", not C3D20");
+                                  mesh.elements[f.element].type + ", not " + plan.how.base);
     if (!layer.emplace(f.element, f.face).second)
       throw std::invalid_argument("element conversion: " + element_name(f.element) +
                                   " has two faces on surface " + to_upper(surface));
@@ -78,202 +141,185 @@ std::map<int, int> layer_faces(const Mesh& mesh, const std::string& surface) {
   return layer;
 }
 
-void set_surface_to_bottom(Mesh& mesh, const std::string& surface,
-                           const std::map<int, int>& layer) {
-  std::vector<FaceRef> faces;
-  for (const auto& [e, f] : layer) faces.push_back({e, 0});
-  mesh.surfaces[to_upper(surface)] = faces;
-}
-
-}  // namespace
-
-void convert_to_c3d14(Mesh& mesh, const std::vector<int>& elements) {
-  // Face-centre node order of C3D14: 9 S1, 10 S2, 11 S3, 12 S5, 13 S6, 14 S4.
-  static constexpr int kFaceOrder[6] = {0, 1, 2, 4, 5, 3};
-  std::map<CornerKey, int> centre;
-  for (int e : all_of_type(mesh, elements, "C3D8")) {
-    MeshElement& element = mesh.elements[e];
-    if (element.type != "C3D8")
-      throw std::invalid_argument("convert_to_c3d14: " + element_name(e) + " is " + element.type);
-    for (int face : kFaceOrder) {
-      const CornerKey key = corner_key(element, face);
-      auto found = centre.find(key);
-      if (found == centre.end()) {
-        Vec3 x{0, 0, 0};
-        for (int n : key)
-          for (int d = 0; d < 3; ++d) x[d] += 0.25 * mesh.nodes[n][d];
-        found = centre.emplace(key, mesh.add_node(x)).first;
-      }
-      element.nodes.push_back(found->second);
-    }
-    element.type = "C3D14";
-  }
-}
-
-void convert_to_c3d20r(Mesh& mesh, const std::vector<int>& elements) {
-  for (int e : all_of_type(mesh, elements, "C3D20")) {
-    if (mesh.elements[e].type != "C3D20")
-      throw std::invalid_argument("convert_to_c3d20r: " + element_name(e) + " is " +
-                                  mesh.elements[e].type);
-    mesh.elements[e].type = "C3D20R";
-  }
-}
-
-void convert_to_c3d27(Mesh& mesh, const std::vector<int>& elements) {
-  // Natural coordinates of the face centres S1..S6 (C3D27 nodes 21-26), then the centre (27).
-  static const Vec3 kCentres[7] = {{0, 0, -1}, {0, 0, 1},  {0, -1, 0}, {1, 0, 0},
-                                   {0, 1, 0},  {-1, 0, 0}, {0, 0, 0}};
-  std::map<CornerKey, int> centre;
-  for (int e : all_of_type(mesh, elements, "C3D20")) {
-    if (mesh.elements[e].type != "C3D20")
-      throw std::invalid_argument("convert_to_c3d27: " + element_name(e) + " is " +
-                                  mesh.elements[e].type);
-    const std::vector<Vec3> x = coords_of(mesh, mesh.elements[e]);
-    std::vector<int> added;
-    for (int face = 0; face < 6; ++face) {
-      const CornerKey key = corner_key(mesh.elements[e], face);
-      auto found = centre.find(key);
-      if (found == centre.end())
-        found = centre.emplace(key, mesh.add_node(map_point("C3D20", x, kCentres[face]))).first;
-      added.push_back(found->second);
-    }
-    added.push_back(mesh.add_node(map_point("C3D20", x, kCentres[6])));
-    MeshElement& element = mesh.elements[e];
-    element.nodes.insert(element.nodes.end(), added.begin(), added.end());
-    element.type = "C3D27";
-  }
-}
-
-void convert_layer_to_c3d21(Mesh& mesh, const std::string& surface) {
-  const std::map<int, int> layer = layer_faces(mesh, surface);
-  std::map<CornerKey, int> centre;  // a face between two layers gets one node
-  for (const auto& [e, face] : layer) {
-    reorient_to_bottom(mesh, e, face);
-    MeshElement& element = mesh.elements[e];
-    const CornerKey key = corner_key(element, 0);
-    auto found = centre.find(key);
-    if (found == centre.end())
-      found =
-          centre
-              .emplace(key, mesh.add_node(map_point("C3D20", coords_of(mesh, element), {0, 0, -1})))
-              .first;
-    element.nodes.push_back(found->second);
-    element.type = "C3D21";
-  }
-  set_surface_to_bottom(mesh, surface, layer);
-}
-
-std::vector<int> convert_layer_to_c3d28(Mesh& mesh, const std::string& surface) {
-  std::map<int, int> layer = layer_faces(mesh, surface);
-
-  // Face adjacency of the C3D20 part by corner sets.
-  std::map<CornerKey, std::vector<FaceRef>> by_corners;
+// Faces of the base type's elements by their corner nodes.
+std::map<CornerKey, std::vector<FaceRef>> faces_by_corners(const Mesh& mesh, const Plan& plan) {
+  std::map<CornerKey, std::vector<FaceRef>> out;
   for (int e = 0; e < static_cast<int>(mesh.elements.size()); ++e)
-    if (mesh.elements[e].type == "C3D20")
-      for (int f = 0; f < 6; ++f) by_corners[corner_key(mesh.elements[e], f)].push_back({e, f});
+    if (mesh.elements[e].type == plan.how.base)
+      for (int f = 0; f < plan.base->face_count(); ++f)
+        out[corner_key(mesh.elements[e], *plan.base, f)].push_back({e, f});
+  return out;
+}
 
-  // Closure: walk the side faces of the layer.
+// Closure: a target face other than the contact face that differs from the base type's face
+// (C3D28's side faces) conforms only with the same face of another converted element, so every
+// base element across it joins the layer, through the free face that makes its converted nodes
+// meet ours.
+void close_layer(const Mesh& mesh, const Plan& plan, std::map<int, int>& layer,
+                 const std::string& surface, double tol) {
+  const auto by_corners = faces_by_corners(mesh, plan);
   std::deque<int> queue;
-  for (const auto& kv : layer) queue.push_back(kv.first);
+  for (const auto& entry : layer) queue.push_back(entry.first);
   while (!queue.empty()) {
     const int e = queue.front();
     queue.pop_front();
-    const int bottom = layer.at(e);
-    const CornerKey bottom_key = corner_key(mesh.elements[e], bottom);
-    for (int g = 0; g < 6; ++g) {
-      if (face_axis(g).axis == face_axis(bottom).axis) continue;  // bottom or top
-      const CornerKey side = corner_key(mesh.elements[e], g);
-      const auto& sharing = by_corners[side];
-      for (const FaceRef& other : sharing) {
+    const Orientation o = orientation_to(plan, e, layer.at(e));
+    for (int j = 0; j < plan.target->face_count(); ++j) {
+      if (j == plan.how.contact_face || plan.conforms[j]) continue;
+      const int old_face = plan.base->face_at(detail::turn(o.R, plan.target->face_centre(j)));
+      const std::vector<Eigen::Vector3d> ours = converted_face(mesh, plan, e, o, old_face);
+      const auto sharing = by_corners.find(corner_key(mesh.elements[e], *plan.base, old_face));
+      if (sharing == by_corners.end()) continue;
+      for (const FaceRef& other : sharing->second) {
         if (other.element == e) continue;
-        // The bottom edge: the two corners common to the side face and the bottom face.
-        std::vector<int> edge;
-        std::set_intersection(side.begin(), side.end(), bottom_key.begin(), bottom_key.end(),
-                              std::back_inserter(edge));
         const auto in_layer = layer.find(other.element);
         if (in_layer != layer.end()) {
-          const CornerKey ob = corner_key(mesh.elements[other.element], in_layer->second);
-          if (!std::includes(ob.begin(), ob.end(), edge.begin(), edge.end()))
-            throw std::invalid_argument("convert_layer_to_c3d28: " + element_name(e) + " and " +
+          const Orientation oo = orientation_to(plan, other.element, in_layer->second);
+          if (!same_points(ours, converted_face(mesh, plan, other.element, oo, other.face), tol))
+            throw std::invalid_argument("element conversion: " + element_name(e) + " and " +
                                         element_name(other.element) +
-                                        " share a side face with their contact faces not aligned");
+                                        " share a face with their contact faces not aligned");
           continue;
         }
-        // Join the neighbour through its free face along the shared bottom edge.
         int join = -1;
-        for (int h = 0; h < 6; ++h) {
+        for (int h = 0; h < plan.base->face_count() && join < 0; ++h) {
           if (h == other.face) continue;
-          const CornerKey hk = corner_key(mesh.elements[other.element], h);
-          if (!std::includes(hk.begin(), hk.end(), edge.begin(), edge.end())) continue;
-          if (by_corners[hk].size() == 1) join = h;
+          const CornerKey free = corner_key(mesh.elements[other.element], *plan.base, h);
+          if (by_corners.at(free).size() != 1) continue;  // shared: not a free face
+          Orientation candidate;
+          if (!plan.base->rotation_between(plan.how.contact_face, h, candidate.R)) continue;
+          if (same_points(ours,
+                          converted_face(mesh, plan, other.element, candidate, other.face), tol))
+            join = h;
         }
         if (join < 0)
           throw std::invalid_argument(
-              "convert_layer_to_c3d28: the C3D28 layer on surface " + to_upper(surface) +
-              " cannot be closed: " + element_name(other.element) + " borders " + element_name(e) +
-              " through a side face but has no free face along its bottom edge");
+              "element conversion: the " + plan.type + " layer on surface " + to_upper(surface) +
+              " cannot be closed: " + element_name(other.element) + " borders " +
+              element_name(e) + " through a face that only another " + plan.type +
+              " conforms with, but has no free face to turn into its contact face");
         layer.emplace(other.element, join);
         queue.push_back(other.element);
       }
     }
   }
+}
 
-  const std::vector<Vec3>& nat28 = natural_nodes("C3D28");
-  std::map<std::pair<int, int>, int> edge_nodes;     // (nearest corner, other corner)
-  std::map<std::array<int, 5>, int> interior_nodes;  // (sorted face corners, nearest corner)
-  std::vector<int> converted;
-  for (const auto& [e, face] : layer) {
-    reorient_to_bottom(mesh, e, face);
-    MeshElement& element = mesh.elements[e];
-    const std::vector<Vec3> x = coords_of(mesh, element);
-    std::vector<int> nodes(28);
-    for (int i = 0; i < 8; ++i) nodes[i] = element.nodes[i];
-    for (int i = 0; i < 4; ++i) nodes[8 + i] = element.nodes[16 + i];   // vertical mid-edges
-    for (int i = 0; i < 4; ++i) nodes[12 + i] = element.nodes[12 + i];  // top mid-edges
-    const CornerKey face_key = corner_key(element, 0);
-    for (int k = 16; k < 28; ++k) {
-      const Vec3& p = nat28[k];
-      // Nearest bottom corner (nodes 0-3) and, for an edge node, the other end of its edge.
-      int nearest = 0;
-      double best = 1e9;
-      for (int c = 0; c < 4; ++c) {
-        const Vec3& q = nat28[c];
-        const double d = std::abs(q[0] - p[0]) + std::abs(q[1] - p[1]);
-        if (d < best) {
-          best = d;
-          nearest = c;
-        }
-      }
-      const bool on_edge =
-          std::abs(std::abs(p[0]) - 1) < 1e-12 || std::abs(std::abs(p[1]) - 1) < 1e-12;
-      int* slot = nullptr;
-      if (on_edge) {
-        // The edge partner differs from `nearest` in the coordinate that is not +-1.
-        const int free_axis = std::abs(std::abs(p[0]) - 1) < 1e-12 ? 1 : 0;
-        int other = -1;
-        for (int c = 0; c < 4; ++c)
-          if (c != nearest && nat28[c][1 - free_axis] == nat28[nearest][1 - free_axis]) other = c;
-        const auto key = std::make_pair(element.nodes[nearest], element.nodes[other]);
-        auto it = edge_nodes.find(key);
-        if (it == edge_nodes.end()) it = edge_nodes.emplace(key, -1).first;
-        slot = &it->second;
-      } else {
-        const std::array<int, 5> key{face_key[0], face_key[1], face_key[2], face_key[3],
-                                     element.nodes[nearest]};
-        auto it = interior_nodes.find(key);
-        if (it == interior_nodes.end()) it = interior_nodes.emplace(key, -1).first;
-        slot = &it->second;
-      }
-      if (*slot < 0) *slot = mesh.add_node(map_point("C3D20", x, p));
-      nodes[k] = *slot;
-    }
-    element.nodes = std::move(nodes);
-    element.type = "C3D28";
-    converted.push_back(e);
+// New nodes of converted elements, shared by the elements that reach the same point through the
+// same edge or face of their base elements (identified by its corner nodes), never across a
+// split interface.
+class NewNodes {
+ public:
+  NewNodes(Mesh& mesh, double tol) : mesh_(mesh), tol_(tol) {}
+  int at(const CornerKey& carrier, const Eigen::Vector3d& x) {
+    std::vector<int>& bucket = by_carrier_[carrier];
+    for (int n : bucket)
+      if ((natural_point(mesh_.nodes[n]) - x).norm() < tol_) return n;
+    bucket.push_back(mesh_.add_node({x[0], x[1], x[2]}));
+    return bucket.back();
   }
-  set_surface_to_bottom(mesh, surface, layer);
+
+ private:
+  Mesh& mesh_;
+  double tol_;
+  std::map<CornerKey, std::vector<int>> by_carrier_;
+};
+
+// Converts element e with orientation o: renumbers it, updates the surfaces naming it, adds the
+// target nodes.
+void convert_one(Mesh& mesh, const Plan& plan, int e, const Orientation& o, NewNodes& added) {
+  const std::vector<int> old_of_new = plan.base->renumbering(o.R);
+  MeshElement& element = mesh.elements[e];
+  std::vector<int> rotated(old_of_new.size());
+  for (std::size_t k = 0; k < old_of_new.size(); ++k) rotated[k] = element.nodes[old_of_new[k]];
+  for (auto& [name, faces] : mesh.surfaces) {
+    bool touched = false;
+    for (FaceRef& f : faces)
+      if (f.element == e) {
+        f.face = plan.base->rotated_face(o.R, f.face);
+        touched = true;
+      }
+    if (touched) std::sort(faces.begin(), faces.end());
+  }
+  std::vector<int> nodes(plan.base_node.size());
+  for (std::size_t k = 0; k < nodes.size(); ++k) {
+    if (plan.base_node[k] >= 0) {
+      nodes[k] = rotated[plan.base_node[k]];
+      continue;
+    }
+    const Eigen::Vector3d xi = natural_point(plan.target->natural()[k]);
+    CornerKey carrier;
+    for (int local : plan.base->carrier_corners(xi)) carrier.push_back(rotated[local]);
+    std::sort(carrier.begin(), carrier.end());
+    if (carrier.empty()) carrier = {-1 - e};  // inside the element: its own
+    nodes[k] = added.at(carrier, target_position(mesh, plan, e, o, static_cast<int>(k)));
+  }
+  element.nodes = std::move(nodes);
+  element.type = plan.type;
+}
+
+void record_faces(Mesh& mesh, const Plan& plan) {
+  std::vector<std::vector<int>>& faces = mesh.faces_of_type[plan.type];
+  faces.clear();
+  for (const FaceDef& f : plan.target->element().faces()) faces.push_back(f.nodes);
+}
+
+}  // namespace
+
+std::vector<int> convert_elements(Mesh& mesh, const ElementRegistry& registry,
+                                  const std::string& type, const std::string& surface,
+                                  const std::vector<int>& elements) {
+  const Plan plan = make_plan(registry, type);
+  const double tol = 1e-9 * std::max(mesh.size(), 1e-300);
+  NewNodes added(mesh, tol);
+  std::vector<int> converted;
+  if (plan.how.contact_face < 0) {
+    std::vector<int> chosen = elements;
+    if (chosen.empty())
+      for (int e = 0; e < static_cast<int>(mesh.elements.size()); ++e)
+        if (mesh.elements[e].type == plan.how.base) chosen.push_back(e);
+    for (int e : chosen) {
+      if (e < 0 || e >= static_cast<int>(mesh.elements.size()) ||
+          mesh.elements[e].type != plan.how.base)
+        throw std::invalid_argument(
+            "element conversion to " + plan.type + ": " + element_name(e) + " is " +
+            (e >= 0 && e < static_cast<int>(mesh.elements.size()) ? mesh.elements[e].type
+                                                                  : std::string("no element")) +
+            ", not " + plan.how.base);
+      convert_one(mesh, plan, e, Orientation{}, added);
+      converted.push_back(e);
+    }
+  } else {
+    std::map<int, int> layer = layer_of(mesh, plan, surface);
+    close_layer(mesh, plan, layer, surface, tol);
+    std::vector<FaceRef> contact_faces;
+    for (const auto& [e, face] : layer) {
+      convert_one(mesh, plan, e, orientation_to(plan, e, face), added);
+      converted.push_back(e);
+      contact_faces.push_back({e, plan.how.contact_face});
+    }
+    mesh.surfaces[to_upper(surface)] = contact_faces;
+  }
+  record_faces(mesh, plan);
   mesh.remove_unused_nodes();
   return converted;
+}
+
+std::vector<std::string> conversions_from(const ElementRegistry& registry,
+                                          const std::string& base) {
+  std::vector<std::string> out;
+  for (const std::string& name : registry.names()) {
+    const std::optional<ElementConversion> how = registry.find(name)->conversion();
+    if (how && to_upper(how->base) == to_upper(base)) out.push_back(name);
+  }
+  return out;
+}
+
+bool converts_a_layer(const ElementRegistry& registry, const std::string& type) {
+  const TElement* element = registry.find(type);
+  if (!element) return false;
+  const std::optional<ElementConversion> how = element->conversion();
+  return how && how->contact_face >= 0;
 }
 
 }  // namespace styk::mesher

@@ -4,6 +4,9 @@
 #include <cmath>
 #include <stdexcept>
 
+#include <Eigen/Geometry>
+
+#include "styk/core/vec3.hpp"
 #include "styk/mesher/hex_topology.hpp"
 
 namespace styk::mesher {
@@ -11,17 +14,12 @@ namespace {
 
 constexpr double kPi = 3.14159265358979323846;
 
-Vec3 add(const Vec3& a, const Vec3& b) { return {a[0] + b[0], a[1] + b[1], a[2] + b[2]}; }
-Vec3 sub(const Vec3& a, const Vec3& b) { return {a[0] - b[0], a[1] - b[1], a[2] - b[2]}; }
-Vec3 scale(const Vec3& a, double s) { return {a[0] * s, a[1] * s, a[2] * s}; }
-double dot(const Vec3& a, const Vec3& b) { return a[0] * b[0] + a[1] * b[1] + a[2] * b[2]; }
-Vec3 cross(const Vec3& a, const Vec3& b) {
-  return {a[1] * b[2] - a[2] * b[1], a[2] * b[0] - a[0] * b[2], a[0] * b[1] - a[1] * b[0]};
-}
-Vec3 normalized(const Vec3& a) {
-  const double n = std::sqrt(dot(a, a));
+using V3 = Eigen::Vector3d;
+
+V3 unit(const V3& a) {
+  const double n = a.norm();
   if (n == 0.0) throw std::invalid_argument("mesher: zero-length direction");
-  return scale(a, 1.0 / n);
+  return a / n;
 }
 
 // 1D quadratic Lagrange polynomials at -1, 0, +1.
@@ -51,7 +49,8 @@ std::vector<double> graded_parameters(int n, double ratio) {
 
 std::vector<Vec3> mesh_line(const Vec3& a, const Vec3& b, int n, double ratio) {
   std::vector<Vec3> out;
-  for (double t : graded_parameters(n, ratio)) out.push_back(add(a, scale(sub(b, a), t)));
+  for (double t : graded_parameters(n, ratio))
+    out.push_back(to_vec3(as_eigen(a) + t * (as_eigen(b) - as_eigen(a))));
   return out;
 }
 
@@ -79,9 +78,9 @@ PatchMap quad_map(const std::vector<Vec3>& control) {
       for (int i = 0; i < 4; ++i) N[4 + i] = Lu[kM[i][0] + 1] * Lv[kM[i][1] + 1];
       N[8] = Lu[1] * Lv[1];
     }
-    Vec3 x{0, 0, 0};
-    for (std::size_t i = 0; i < n; ++i) x = add(x, scale(control[i], N[i]));
-    return x;
+    V3 x = V3::Zero();
+    for (std::size_t i = 0; i < n; ++i) x += N[i] * as_eigen(control[i]);
+    return to_vec3(x);
   };
 }
 
@@ -109,22 +108,21 @@ BlockMap hex_map(const std::vector<Vec3>& control) {
         N[i] = L[0][static_cast<int>(nat[i][0]) + 1] * L[1][static_cast<int>(nat[i][1]) + 1] *
                L[2][static_cast<int>(nat[i][2]) + 1];
     }
-    Vec3 x{0, 0, 0};
-    for (std::size_t i = 0; i < n; ++i) x = add(x, scale(control[i], N[i]));
-    return x;
+    V3 x = V3::Zero();
+    for (std::size_t i = 0; i < n; ++i) x += N[i] * as_eigen(control[i]);
+    return to_vec3(x);
   };
 }
 
 BlockMap revolve(const PatchMap& profile, const Vec3& origin, const Vec3& axis, double angle0,
                  double angle1) {
-  const Vec3 k = normalized(axis);
+  const V3 k = unit(as_eigen(axis));
   return [profile, origin, k, angle0, angle1](const Vec3& xi) {
     const double angle = angle0 + 0.5 * (xi[2] + 1) * (angle1 - angle0);
-    const Vec3 p = sub(profile(xi[0], xi[1]), origin);
+    const V3 p = as_eigen(profile(xi[0], xi[1])) - as_eigen(origin);
     // Rodrigues' rotation of p about k.
     const double c = std::cos(angle), s = std::sin(angle);
-    const Vec3 r = add(add(scale(p, c), scale(cross(k, p), s)), scale(k, dot(k, p) * (1 - c)));
-    return add(origin, r);
+    return to_vec3(as_eigen(origin) + c * p + s * k.cross(p) + (k.dot(p) * (1 - c)) * k);
   };
 }
 
@@ -133,23 +131,24 @@ BlockMap sweep(const PatchMap& section, const PathMap& path, const Vec3& up,
   return [section, path, up, twist](const Vec3& xi) {
     const double t = 0.5 * (xi[2] + 1);
     const double h = 1e-6;
-    const Vec3 tangent = normalized(sub(path(std::min(1.0, t + h)), path(std::max(0.0, t - h))));
-    Vec3 ex = normalized(sub(up, scale(tangent, dot(up, tangent))));
-    Vec3 ey = cross(tangent, ex);
+    const V3 tangent =
+        unit(as_eigen(path(std::min(1.0, t + h))) - as_eigen(path(std::max(0.0, t - h))));
+    V3 ex = unit(as_eigen(up) - as_eigen(up).dot(tangent) * tangent);
+    V3 ey = tangent.cross(ex);
     if (twist) {
       const double a = twist(t), c = std::cos(a), s = std::sin(a);
-      const Vec3 rx = add(scale(ex, c), scale(ey, s));
-      ey = add(scale(ex, -s), scale(ey, c));
+      const V3 rx = c * ex + s * ey;
+      ey = -s * ex + c * ey;
       ex = rx;
     }
     const Vec3 local = section(xi[0], xi[1]);
-    return add(path(t), add(scale(ex, local[0]), scale(ey, local[1])));
+    return to_vec3(as_eigen(path(t)) + local[0] * ex + local[1] * ey);
   };
 }
 
 BlockMap extrude(const PatchMap& patch, const Vec3& direction) {
   return [patch, direction](const Vec3& xi) {
-    return add(patch(xi[0], xi[1]), scale(direction, 0.5 * (xi[2] + 1)));
+    return to_vec3(as_eigen(patch(xi[0], xi[1])) + 0.5 * (xi[2] + 1) * as_eigen(direction));
   };
 }
 

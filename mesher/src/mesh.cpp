@@ -3,8 +3,8 @@
 #include <algorithm>
 #include <cmath>
 #include <limits>
+#include <stdexcept>
 
-#include "styk/mesher/hex_topology.hpp"
 
 namespace styk::mesher {
 namespace {
@@ -36,7 +36,14 @@ std::vector<int> Mesh::surface_nodes(const std::string& name) const {
   if (it == surfaces.end()) return out;
   for (const FaceRef& f : it->second) {
     const MeshElement& e = elements[f.element];
-    for (int local : face_local_nodes(e.type, f.face)) out.push_back(e.nodes[local]);
+    const auto layout = faces_of_type.find(e.type);
+    if (layout == faces_of_type.end() || f.face < 0 ||
+        f.face >= static_cast<int>(layout->second.size()))
+      throw std::logic_error("mesh: surface " + to_upper(name) + " names face S" +
+                             std::to_string(f.face + 1) + " of element " +
+                             std::to_string(f.element + 1) + " (" + e.type +
+                             "), whose faces the mesh was not told");
+    for (int local : layout->second[f.face]) out.push_back(e.nodes[local]);
   }
   std::sort(out.begin(), out.end());
   out.erase(std::unique(out.begin(), out.end()), out.end());

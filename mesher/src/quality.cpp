@@ -1,5 +1,9 @@
 #include "styk/mesher/quality.hpp"
 
+#include <array>
+#include <map>
+#include <set>
+
 #include <algorithm>
 #include <cmath>
 
@@ -10,10 +14,29 @@ namespace styk::mesher {
 namespace {
 
 constexpr double kPi = 3.14159265358979323846;
-constexpr int kEdges[12][2] = {{0, 1}, {1, 2}, {2, 3}, {3, 0}, {4, 5}, {5, 6},
-                               {6, 7}, {7, 4}, {0, 4}, {1, 5}, {2, 6}, {3, 7}};
-constexpr int kFaces[6][4] = {{0, 1, 2, 3}, {4, 5, 6, 7}, {0, 1, 5, 4},
-                              {1, 2, 6, 5}, {2, 3, 7, 6}, {3, 0, 4, 7}};
+
+// The corner nodes of every face of a type, going round the face (from its own faces(): any
+// shape, plug-ins included), and the corner edges they bound.
+struct CornerTopology {
+  std::vector<std::vector<int>> faces;
+  std::vector<std::array<int, 2>> edges;
+};
+
+CornerTopology corner_topology(const TElement& element) {
+  CornerTopology out;
+  const std::vector<int> corners = corner_nodes(element);
+  std::set<std::array<int, 2>> edges;
+  for (const FaceDef& face : element.faces()) {
+    std::vector<int> c;
+    for (int k : face.nodes)
+      if (std::binary_search(corners.begin(), corners.end(), k)) c.push_back(k);
+    for (std::size_t i = 0; i < c.size() && c.size() > 1; ++i)
+      edges.insert({std::min(c[i], c[(i + 1) % c.size()]), std::max(c[i], c[(i + 1) % c.size()])});
+    out.faces.push_back(std::move(c));
+  }
+  out.edges.assign(edges.begin(), edges.end());
+  return out;
+}
 
 Eigen::Vector3d row(const Eigen::MatrixXd& X, int i) { return X.row(i).transpose(); }
 
@@ -27,6 +50,7 @@ double angle_between(const Eigen::Vector3d& a, const Eigen::Vector3d& b) {
 QualityReport assess_quality(const Model& model, const ElementRegistry& registry) {
   QualityReport report;
   report.min_jacobian_ratio = 1.0;
+  std::map<const TElement*, CornerTopology> topology;
   for (int e = 0; e < model.element_count(); ++e) {
     const Element& element = model.elements[e];
     const TElement* formulation = registry.find(element.type);
@@ -65,14 +89,19 @@ QualityReport assess_quality(const Model& model, const ElementRegistry& registry
     ElementQuality q;
     q.element = e;
     q.jacobian_ratio = lo / hi;
+    auto known = topology.find(formulation);
+    if (known == topology.end())
+      known = topology.emplace(formulation, corner_topology(*formulation)).first;
+    const CornerTopology& corners = known->second;
     double shortest = 1e300, longest = 0.0;
-    for (const auto& edge : kEdges) {
+    for (const auto& edge : corners.edges) {
       const double length = (row(g.X, edge[0]) - row(g.X, edge[1])).norm();
       shortest = std::min(shortest, length);
       longest = std::max(longest, length);
     }
     q.aspect_ratio = longest / shortest;
-    for (const auto& f : kFaces) {
+    for (const std::vector<int>& f : corners.faces) {
+      if (f.size() != 4) continue;  // a triangle cannot warp
       const Eigen::Vector3d a = row(g.X, f[0]), b = row(g.X, f[1]), c = row(g.X, f[2]),
                             d = row(g.X, f[3]);
       const double w1 = angle_between((b - a).cross(c - a), (c - a).cross(d - a));

@@ -36,6 +36,10 @@ class C3D14 : public TElement {
   // A face trace has degree <= 2 per direction; with a curved (C3D14-shaped) face the pressure
   // integrand N_i (x,s x x,t) reaches degree 5, which 3 Gauss points integrate exactly.
   int face_rule_order() const override { return 3; }
+  // Made from C3D8 meshes: every brick gains its six face centres (shared between neighbours).
+  std::optional<ElementConversion> conversion() const override {
+    return ElementConversion{"C3D8", -1};
+  }
 
  private:
   std::vector<Vec3> nodes_;

@@ -33,6 +33,12 @@ class C3D21 : public TElement {
   // Face traces have degree <= 2 per direction: as for C3D20, 3 points integrate the pressure
   // integrand N_i (x,s x x,t) exactly on any such face.
   int face_rule_order() const override { return 3; }
+  // Exported as the quadratic hexahedron of its C3D20 nodes (the S1 centre stays in the point
+  // data); made from a C3D20 layer whose contact face becomes S1.
+  VtkCell vtk_cell() const override { return vtk_first_nodes(vtk::kQuadraticHexahedron, 20); }
+  std::optional<ElementConversion> conversion() const override {
+    return ElementConversion{"C3D20", 0};
+  }
 
  private:
   std::vector<Vec3> nodes_;

@@ -41,6 +41,11 @@ class C3D28 : public TElement {
   // integrate the pressure integrand on such (possibly curved) faces to high accuracy and exactly
   // on flat ones.
   int face_rule_order() const override { return 4; }
+  // Made from a C3D20 layer whose contact face becomes S1 (its side faces conform only with
+  // another C3D28, so the mesher closes the layer; elements-ref section 4).
+  std::optional<ElementConversion> conversion() const override {
+    return ElementConversion{"C3D20", 0};
+  }
 
  private:
   std::vector<Vec3> nodes_;

@@ -6,6 +6,8 @@
 #include <memory>
 #include <optional>
 
+#include <Eigen/Geometry>
+
 #include "assembly.hpp"
 #include "body_loads.hpp"
 #include "contact_operator.hpp"
@@ -26,6 +28,7 @@
 #include "stress_averaging.hpp"
 #include "styk/contact/active_set.hpp"
 #include "styk/contact/contact_results.hpp"
+#include "styk/core/vec3.hpp"
 #include "thermal_load.hpp"
 
 namespace styk::solver_detail {
@@ -60,8 +63,6 @@ Vec3 dof_sum(const PreparedModel& prepared, const std::vector<double>& f) {
   return sum;
 }
 
-double norm(const Vec3& v) { return std::sqrt(v[0] * v[0] + v[1] * v[1] + v[2] * v[2]); }
-
 std::string node_ids(const Model& model, const std::vector<contact::ContactConstraint>& constraints,
                      const std::vector<int>& which) {
   std::string list;
@@ -95,15 +96,16 @@ void check_equilibrium(const PreparedModel& prepared, const std::vector<double>&
   // Relative to the forces involved, not only to their sums: in a self-balanced model (a full
   // shrink fit under heat) every sum is round-off and a ratio of sums would be meaningless.
   double magnitude = 0.0;
-  for (const Vec3& rf : increment.RF) magnitude += norm(rf);
+  for (const Vec3& rf : increment.RF) magnitude += as_eigen(rf).norm();
   for (std::size_t j = 0; j < constraints.size(); ++j)
     magnitude += contact::slave_force(constraints[j], state.nodes[j]).norm();
   for (double f : applied) magnitude += std::abs(f);
-  const double scale = std::max({norm(out.applied), norm(out.reactions), norm(out.contact_slave),
+  const double scale = std::max({as_eigen(out.applied).norm(), as_eigen(out.reactions).norm(),
+                                 as_eigen(out.contact_slave).norm(),
                                  magnitude / static_cast<double>(std::max<std::size_t>(
                                                  1, constraints.size() + increment.RF.size())),
                                  1e-300});
-  out.relative_residual = norm(imbalance) / scale;
+  out.relative_residual = as_eigen(imbalance).norm() / scale;
 }
 
 // The loads of one step end (or start): mechanical forces on the nodal dofs (what reactions are
@@ -162,14 +164,10 @@ std::string full_slip_report(const Model& model, const IncrementResult& incremen
       format("(%.6g, %.6g, %.6g), ", r.force[0], r.force[1], r.force[2]) +
       format("moment (%.6g, %.6g, %.6g) about the origin", r.moment[0], r.moment[1], r.moment[2]);
   for (const CyclicSymmetry& c : model.cyclic_symmetries) {
-    const Vec3 d{c.b[0] - c.a[0], c.b[1] - c.a[1], c.b[2] - c.a[2]};
-    const double length = norm(d);
+    const Eigen::Vector3d axis = (as_eigen(c.b) - as_eigen(c.a)).normalized();
     // Moment about the axis through a: (M_origin - a x F) . axis.
-    const Vec3 axF{c.a[1] * r.force[2] - c.a[2] * r.force[1],
-                   c.a[2] * r.force[0] - c.a[0] * r.force[2],
-                   c.a[0] * r.force[1] - c.a[1] * r.force[0]};
-    double m = 0.0;
-    for (int k = 0; k < 3; ++k) m += (r.moment[k] - axF[k]) * d[k] / length;
+    const double m =
+        (as_eigen(r.moment) - as_eigen(c.a).cross(as_eigen(r.force))).dot(axis);
     text += format("; about the axis of cyclic symmetry %.6g per sector, %.6g on the whole", m,
                    m * c.sectors) +
             format(" structure (%.0f sectors)", c.sectors);

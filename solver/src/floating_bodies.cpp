@@ -34,10 +34,11 @@ std::string text(const char* pattern, double a, double b = 0.0, double c = 0.0) 
 
 FloatingBodies find_floating_bodies(const Model& model, const PreparedModel& prepared,
                                     const NodeGraph& graph,
-                                    const std::vector<Restraint>& restraints,
+                                    const std::vector<Restraint>& given,
                                     const std::vector<int>& prescribed,
                                     const std::vector<int>& known, const NodeRotations& rotations,
                                     const std::vector<char>& touches_contact) {
+  const std::vector<Restraint> restraints = with_ring_restraints(prepared, given);
   std::vector<char> is_prescribed(prepared.active_dofs(), 0), is_known(prepared.active_dofs(), 0);
   for (int dof : prescribed) is_prescribed[dof] = 1;
   for (int dof : known) is_known[dof] = 1;

@@ -121,9 +121,17 @@ void check_rigid_body_modes(const Model& model, const PreparedModel& prepared,
   check_rigid_body_modes(model, prepared, graph, restraints);
 }
 
+std::vector<Restraint> with_ring_restraints(const PreparedModel& prepared,
+                                            std::vector<Restraint> restraints) {
+  for (int a = 0; a < prepared.active_nodes(); ++a)
+    if (prepared.ring_node[a]) restraints.push_back(Restraint{{{a, Eigen::Vector3d::UnitX()}}});
+  return restraints;
+}
+
 void check_rigid_body_modes(const Model& model, const PreparedModel& prepared,
-                            const NodeGraph& graph, const std::vector<Restraint>& restraints) {
+                            const NodeGraph& graph, const std::vector<Restraint>& given) {
   static const char* const kAxis[] = {"x", "y", "z"};
+  const std::vector<Restraint> restraints = with_ring_restraints(prepared, given);
   const SourceLoc whole_model{model.source, 0};
   const std::vector<std::vector<int>> parts = connected_parts(graph);
   std::vector<int> part_of(graph.nodes(), -1);

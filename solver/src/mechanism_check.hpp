@@ -36,6 +36,11 @@ struct Restraint {
   std::vector<RestraintTerm> terms;
 };
 
+// `restraints` and, for every node of an axisymmetric element, its radial direction (x): a ring
+// cannot translate radially, its only rigid motion is the axial translation.
+std::vector<Restraint> with_ring_restraints(const PreparedModel& prepared,
+                                            std::vector<Restraint> restraints);
+
 // The same check for general restraints. A part is a connected component of `graph` (which links
 // the nodes of an equation), and a rigid motion of a part must violate some restraint. Parts
 // linked by equations are checked as one body: a hinge between them is left to the

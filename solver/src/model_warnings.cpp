@@ -6,7 +6,9 @@
 #include <map>
 #include <utility>
 
-#include <Eigen/Eigenvalues>
+#include <Eigen/LU>
+
+#include "zero_energy_modes.hpp"
 
 #include "beam_warnings.hpp"
 
@@ -45,20 +47,16 @@ std::string format(const char* pattern, double value) {
   return buffer;
 }
 
-bool is_cube_solid(const TElement& element) {
-  const DofSet active = element.active_dofs();
-  if (element.node_dofs() != 3 || !(active[0] && active[1] && active[2]) ||
-      element.section_measure() != SectionMeasure::None)
-    return false;
-  for (const Vec3& xi : element.natural_nodes())
-    for (double c : xi)
-      if (std::abs(c) > 1.0 + 1e-12) return false;
-  return true;
+// A linear tetrahedron (C3D4): a solid whose nodes are its 4 corners, integrated at one point.
+// Its strain is constant: it is stiff in bending and, one volume constraint per element and about
+// six elements per node, it locks volumetrically despite its single point.
+bool linear_tetrahedron(const TElement& element) {
+  return element.form() == ElementForm::Solid && element.node_count() == 4 &&
+         corner_nodes(element).size() == 4 && element.rule(RuleKind::Full).size() == 1;
 }
 
 bool bulk_dominated(const TElement& element, const Material& material) {
-  if (element.section_measure() == SectionMeasure::Area) return false;  // trusses
-  if (element.section_measure() == SectionMeasure::Beam) return false;  // uniaxial fibres
+  if (element.form() == ElementForm::Line) return false;  // trusses and beams: uniaxial fibres
   const MaterialPoint point = material_point(material);
   if (!point.isotropic) return false;  // the bulk-dominance rule is stated for isotropic laws
   Matrix6d D;
@@ -67,10 +65,11 @@ bool bulk_dominated(const TElement& element, const Material& material) {
 }
 
 // Whether `element` locks volumetrically by construction: fully integrated (more points in its
-// full rule than in its reduced one), no incompatible modes.
+// full rule than in its reduced one) without incompatible modes, or a linear tetrahedron.
 bool locks(const TElement& element) {
   if (element.incompatible_mode_count() > 0) return false;
-  return element.rule(RuleKind::Full).size() > element.rule(RuleKind::Reduced).size();
+  return element.rule(RuleKind::Full).size() > element.rule(RuleKind::Reduced).size() ||
+         linear_tetrahedron(element);
 }
 
 // The Poisson's ratio from which `element` locks (above 0.5: never).
@@ -100,7 +99,7 @@ double measure_ratio(const Model& model, const TElement& element, const Integrat
   try {
     for (int k = 0; k < rule.size(); ++k) {
       element.der(rule.points[k], N, dN);
-      const double measure = element.point_measure(g, dN, dNdx, k + 1);
+      const double measure = element.point_measure(g, N, dN, dNdx, k + 1);
       lo = std::min(lo, measure);
       hi = std::max(hi, measure);
     }
@@ -110,52 +109,30 @@ double measure_ratio(const Model& model, const TElement& element, const Integrat
   return hi > 0.0 ? lo / hi : 1.0;
 }
 
-}  // namespace
-
-int spurious_zero_energy_modes(const TElement& element) {
-  if (!is_cube_solid(element)) return 0;
-  // A 2 x 2 x 2 patch of the reference cube, nodes merged by position.
-  const std::vector<Vec3>& xi = element.natural_nodes();
-  const int n = element.node_count();
-  std::map<std::array<long long, 3>, int> index;
-  std::vector<std::vector<int>> patch_nodes;
-  for (int cell = 0; cell < 8; ++cell) {
-    std::vector<int> ids;
-    for (const Vec3& p : xi) {
-      std::array<long long, 3> key{};
-      for (int d = 0; d < 3; ++d) key[d] = std::llround((p[d] + 2.0 * ((cell >> d) & 1)) * 1e6);
-      const auto it = index.emplace(key, static_cast<int>(index.size())).first;
-      ids.push_back(it->second);
-    }
-    patch_nodes.push_back(std::move(ids));
+// The smallest extent of the bounding box of a set of elements' nodes.
+double thinnest_extent(const Model& model, const std::vector<int>& elements) {
+  Vec3 lo{1e300, 1e300, 1e300}, hi{-1e300, -1e300, -1e300};
+  for (int e : elements) {
+    const int* nodes = model.element_nodes(e);
+    for (int a = 0; a < model.elements[e].node_count; ++a)
+      for (int d = 0; d < 3; ++d) {
+        lo[d] = std::min(lo[d], model.coords[nodes[a]][d]);
+        hi[d] = std::max(hi[d], model.coords[nodes[a]][d]);
+      }
   }
-  Material unit;
-  unit.young = 1.0;
-  unit.poisson = 0.3;
-  const int dofs = 3 * static_cast<int>(index.size());
-  Eigen::MatrixXd K = Eigen::MatrixXd::Zero(dofs, dofs);
-  ElementGeometry g;
-  g.X.resize(n, 3);
-  for (int cell = 0; cell < 8; ++cell) {
-    for (int a = 0; a < n; ++a)
-      for (int d = 0; d < 3; ++d) g.X(a, d) = xi[a][d] + 2.0 * ((cell >> d) & 1);
-    Eigen::MatrixXd Ke;
-    element.stiffness(g, unit, RuleKind::Full, Ke);
-    const std::vector<int>& ids = patch_nodes[cell];
-    for (int a = 0; a < n; ++a)
-      for (int b = 0; b < n; ++b)
-        K.block<3, 3>(3 * ids[a], 3 * ids[b]) += Ke.block<3, 3>(3 * a, 3 * b);
-  }
-  const Eigen::SelfAdjointEigenSolver<Eigen::MatrixXd> eigen(K, Eigen::EigenvaluesOnly);
-  const Eigen::VectorXd& values = eigen.eigenvalues();
-  const double largest = values.cwiseAbs().maxCoeff();
-  int zero = 0;
-  for (Eigen::Index k = 0; k < values.size(); ++k) zero += std::abs(values[k]) < 1e-9 * largest;
-  return std::max(0, zero - 6);
+  return std::min({hi[0] - lo[0], hi[1] - lo[1], hi[2] - lo[2]});
 }
 
-std::vector<std::string> model_warnings(const Model& model, const PreparedModel& prepared) {
-  std::vector<std::string> warnings;
+// The volume of a linear tetrahedron from its corners.
+double tetrahedron_volume(const Model& model, int e) {
+  const int* n = model.element_nodes(e);
+  Eigen::Matrix3d edges;
+  for (int k = 0; k < 3; ++k)
+    for (int d = 0; d < 3; ++d) edges(k, d) = model.coords[n[k + 1]][d] - model.coords[n[0]][d];
+  return std::abs(edges.determinant()) / 6.0;
+}
+
+void hourglass_warnings(const PreparedModel& prepared, std::vector<std::string>& warnings) {
   // Per type: zero-energy modes (computed once per type) and the element count.
   std::map<const TElement*, int> count_of_type;
   for (const TElement* f : prepared.formulation) ++count_of_type[f];
@@ -164,12 +141,15 @@ std::vector<std::string> model_warnings(const Model& model, const PreparedModel&
     if (modes > 0)
       warnings.push_back(std::to_string(count) + " elements of type " + f->name() + " have " +
                          std::to_string(modes) +
-                         " zero-energy (hourglass) modes in a 2 x 2 x 2 patch beyond the rigid "
-                         "motions: their displacements and stresses can be garbage; use a type "
-                         "with hourglass control (C3D8R) or full integration (C3D8I, C3D20)");
+                         " zero-energy (hourglass) modes in a patch of its elements beyond the "
+                         "rigid motions: their displacements and stresses can be garbage; use a "
+                         "type with hourglass control (C3D8R, CAX4R) or full integration");
   }
+}
 
-  // Locking, per section and type.
+void locking_warnings(const Model& model, const PreparedModel& prepared,
+                      std::vector<std::string>& warnings) {
+  // Per section and type.
   std::map<std::pair<int, const TElement*>, std::pair<int, const Material*>> locking;
   for (int e = 0; e < model.element_count(); ++e) {
     const int s = model.elements[e].section;
@@ -178,57 +158,98 @@ std::vector<std::string> model_warnings(const Model& model, const PreparedModel&
     const TElement& f = *prepared.formulation[e];
     if (*material->poisson < locking_onset(f)) continue;
     // Mean dilatation cures locking of a rule with more than one point; a one-point rule has
-    // nothing to average (C3D8R's locking comes from its hourglass control).
+    // nothing to average (C3D8R's locking comes from its hourglass control, C3D4's from its one
+    // volume constraint per element).
     if (model.sections[s].selective_volumetric && f.rule(RuleKind::Full).size() > 1) continue;
     if (!bulk_dominated(f, *material)) continue;
-    auto& entry = locking[{s, prepared.formulation[e]}];
+    auto& entry = locking[{s, &f}];
     ++entry.first;
     entry.second = material;
   }
   for (const auto& [key, entry] : locking) {
     const Section& section = model.sections[key.first];
-    const int count = entry.first;
     const Material& material = *entry.second;
     const TElement& f = *key.second;
-    const std::string cure = f.rule(RuleKind::Full).size() > 1
-                                 ? "add TECHNIQUE=SELECTIVE to the *SOLID SECTION"
-                                 : "use C3D8I or C3D20R (TECHNIQUE=SELECTIVE cannot help a "
-                                   "one-point rule)";
+    const std::string cure =
+        linear_tetrahedron(f) ? "use quadratic tetrahedra (C3D10) or bricks with "
+                                "TECHNIQUE=SELECTIVE"
+        : f.rule(RuleKind::Full).size() > 1 ? "add TECHNIQUE=SELECTIVE to the *SOLID SECTION"
+                                            : "use C3D8I or C3D20R (TECHNIQUE=SELECTIVE cannot help "
+                                              "a one-point rule)";
     warnings.push_back(section.where.file + ":" + std::to_string(section.where.line) + ": " +
-                       std::to_string(count) + " " + f.name() + " elements of element set " +
-                       section.elset + " lock volumetrically: " + "material " + material.name +
+                       std::to_string(entry.first) + " " + f.name() + " elements of element set " +
+                       section.elset + " lock volumetrically: material " + material.name +
                        " has Poisson's ratio " + format("%g", *material.poisson) + " (" + f.name() +
                        " locks from " + format("%g", locking_onset(f)) + "); " + cure);
   }
+}
 
-  // Beams: shear locking of fully integrated slender beams, spurious modes (beam_warnings.hpp).
-  for (std::string& warning : beam_warnings(model, prepared))
-    warnings.push_back(std::move(warning));
+// Linear tetrahedra where it matters: a section whose elements span fewer than
+// kTetrahedraAcross element sizes through its thinnest extent bends with too few constant-strain
+// elements across it (docs/elements.md: the SPEC §3.1.1 1b cantilever split into C3D4).
+constexpr double kTetrahedraAcross = 4.0;
+void tetrahedron_bending_warnings(const Model& model, const PreparedModel& prepared,
+                                  std::vector<std::string>& warnings) {
+  std::map<int, std::vector<int>> by_section;
+  for (int e = 0; e < model.element_count(); ++e)
+    if (model.elements[e].section >= 0 && linear_tetrahedron(*prepared.formulation[e]))
+      by_section[model.elements[e].section].push_back(e);
+  for (const auto& [s, elements] : by_section) {
+    double volume = 0.0;
+    for (int e : elements) volume += tetrahedron_volume(model, e);
+    // The edge of a regular tetrahedron of the mean volume: V = a^3 / (6 sqrt 2).
+    const double size = std::cbrt(6.0 * std::sqrt(2.0) * volume / elements.size());
+    const double across = thinnest_extent(model, elements) / size;
+    if (!(across < kTetrahedraAcross)) continue;
+    const Section& section = model.sections[s];
+    warnings.push_back(section.where.file + ":" + std::to_string(section.where.line) + ": " +
+                       std::to_string(elements.size()) + " linear tetrahedra (" +
+                       prepared.formulation[elements.front()]->name() + ") of element set " +
+                       section.elset + " have only " + format("%.2g", across) +
+                       " element sizes through the thinnest extent of the part: constant-strain "
+                       "tetrahedra are far too stiff in bending there; use C3D10 or refine "
+                       "across the thickness");
+  }
+}
 
-  // Distortion: the worst element and how many are beyond the ratio.
+void distortion_warnings(const Model& model, const PreparedModel& prepared,
+                         std::vector<std::string>& warnings) {
+  // The worst element and how many are beyond the ratio.
   std::map<const TElement*, IntegrationRule> rules;
   int distorted = 0, worst = -1;
   double worst_ratio = 1.0;
   for (int e = 0; e < model.element_count(); ++e) {
     const TElement& f = *prepared.formulation[e];
-    if (f.section_measure() == SectionMeasure::Area) continue;  // a truss has no shape to lose
-    auto rule = rules.find(&f);  // one rule per type, not one per element
+    if (f.form() == ElementForm::Line) continue;  // a truss has no shape to lose
+    auto rule = rules.find(&f);                   // one rule per type, not one per element
     if (rule == rules.end()) rule = rules.emplace(&f, f.rule(RuleKind::Full)).first;
     const double ratio = measure_ratio(model, f, rule->second, e, cross_section_of(model, e));
     if (ratio >= kDistortedRatio) continue;
     ++distorted;
     if (ratio < worst_ratio) worst_ratio = ratio, worst = e;
   }
-  if (distorted > 0) {
-    const Element& w = model.elements[worst];
-    warnings.push_back(
-        std::to_string(distorted) + (distorted == 1 ? " element is" : " elements are") +
-        " strongly distorted (det J varies more than 10 times inside the element); worst: "
-        "element " +
-        std::to_string(w.id) + " (" + w.type + ", line " + std::to_string(w.where.line) +
-        "), min/max det J " + format("%.3g", worst_ratio) +
-        ": accuracy drops there (constant stress is still exact); reshape or refine");
-  }
+  if (distorted == 0) return;
+  const Element& w = model.elements[worst];
+  warnings.push_back(
+      std::to_string(distorted) + (distorted == 1 ? " element is" : " elements are") +
+      " strongly distorted (det J varies more than 10 times inside the element); worst: "
+      "element " +
+      std::to_string(w.id) + " (" + w.type + ", line " + std::to_string(w.where.line) +
+      "), min/max det J " + format("%.3g", worst_ratio) +
+      ": accuracy drops there (constant stress is still exact); reshape or refine");
+}
+
+}  // namespace
+
+std::vector<std::string> model_warnings(const Model& model, const PreparedModel& prepared) {
+  std::vector<std::string> warnings;
+  hourglass_warnings(prepared, warnings);
+  locking_warnings(model, prepared, warnings);
+  tetrahedron_bending_warnings(model, prepared, warnings);
+  // Beams: shear locking of fully integrated slender beams, spurious modes (beam_warnings.hpp).
+  for (std::string& warning : beam_warnings(model, prepared))
+    warnings.push_back(std::move(warning));
+  distortion_warnings(model, prepared, warnings);
   return warnings;
 }
 

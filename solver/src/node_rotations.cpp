@@ -22,13 +22,15 @@ NodeRotations NodeRotations::from_transforms(const Model& model, const PreparedM
       const int a = prepared.active_of_node[node];
       if (a < 0) continue;
       Eigen::Matrix3d R;
-      if (!local_axes_at(transform.axes, model.coords[node], R))
+      if (!local_axes_at(transform.axes, model.coords[node], R)) {
+        const std::string defect = axes_defect(transform.axes);
         throw InputError(transform.where,
                          "*TRANSFORM: the local system is undefined at node " +
-                             std::to_string(model.node_ids[node]) +
-                             (transform.axes.system == CoordinateSystem::Cylindrical
-                                  ? " (it lies on the cylinder axis, which has no radial direction)"
-                                  : ""));
+                             std::to_string(model.node_ids[node]) + ": " +
+                             (defect.empty() ? "it " + axes_defect_at(transform.axes,
+                                                                      model.coords[node])
+                                             : defect));
+      }
       if (out.rotation_of_node_[a] >= 0)
         throw InputError(transform.where,
                          "*TRANSFORM: node " + std::to_string(model.node_ids[node]) +

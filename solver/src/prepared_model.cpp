@@ -92,6 +92,7 @@ PreparedModel prepare_model(const Model& model, const ElementRegistry& registry)
   // its elements carry per node.
   std::vector<unsigned char> stiffened_bits(model.node_count(), 0);
   std::vector<unsigned char> dofs_of_node(model.node_count(), 0);
+  std::vector<char> on_ring(model.node_count(), 0);
   for (int e = 0; e < element_count; ++e) {
     const Element& element = model.elements[e];
     const TElement* formulation = registry.find(element.type);
@@ -138,6 +139,7 @@ PreparedModel prepare_model(const Model& model, const ElementRegistry& registry)
       stiffened_bits[nodes[k]] |= bits;
       dofs_of_node[nodes[k]] =
           std::max(dofs_of_node[nodes[k]], static_cast<unsigned char>(node_dofs));
+      if (formulation->form() == ElementForm::Axisymmetric) on_ring[nodes[k]] = 1;
     }
   }
 
@@ -179,6 +181,7 @@ PreparedModel prepare_model(const Model& model, const ElementRegistry& registry)
     const int a = static_cast<int>(prepared.node_of_active.size());
     prepared.active_of_node[n] = a;
     prepared.node_of_active.push_back(n);
+    prepared.ring_node.push_back(on_ring[n]);
     for (int d = 0; d < dofs_of_node[n]; ++d) {
       prepared.stiffened.push_back((stiffened_bits[n] >> d) & 1 ? 1 : 0);
       prepared.node_of_dof.push_back(a);

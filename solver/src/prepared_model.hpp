@@ -28,6 +28,9 @@ struct PreparedModel {
   std::vector<char> stiffened;               // per active dof: 1 if some element stiffens it
   std::vector<int> dof_offset;               // per active node + 1: first dof (CSR)
   std::vector<int> node_of_dof;              // per active dof: its active node
+  // Per active node: 1 if it belongs to an axisymmetric element (ElementForm::Axisymmetric). A
+  // ring cannot translate radially (x), so the rigid-motion checks count x as held there.
+  std::vector<char> ring_node;
 
   int active_nodes() const { return static_cast<int>(node_of_active.size()); }
   int active_dofs() const { return dof_offset.empty() ? 0 : dof_offset.back(); }

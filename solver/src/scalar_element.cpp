@@ -12,7 +12,7 @@ void scalar_conductance(const TElement& element, const ElementGeometry& g,
   K.setZero(n, n);
   for (int p = 0; p < rule.size(); ++p) {
     element.der(rule.points[p], N, dN);
-    const double measure = element.point_measure(g, dN, dNdx, p + 1);
+    const double measure = element.point_measure(g, N, dN, dNdx, p + 1);
     const Eigen::MatrixXd kdNdx = dNdx * k.asDiagonal();
     K.noalias() += (rule.weights[p] * measure) * kdNdx * dNdx.transpose();
   }
@@ -27,7 +27,7 @@ void scalar_gradients(const TElement& element, const ElementGeometry& g,
   gradients.resize(rule.size(), 3);
   for (int p = 0; p < rule.size(); ++p) {
     element.der(rule.points[p], N, dN);
-    element.point_measure(g, dN, dNdx, p + 1);
+    element.point_measure(g, N, dN, dNdx, p + 1);
     gradients.row(p).noalias() = phi.transpose() * dNdx;
   }
 }

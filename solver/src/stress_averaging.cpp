@@ -101,7 +101,7 @@ Extrapolation make_extrapolation(const TElement& element, const IntegrationRule&
         svd.matrixV() * sigma.cwiseInverse().asDiagonal() * svd.matrixU().transpose();
     Extrapolation out;
     out.to_nodes = evaluate_at(space, element, element.natural_nodes()) * pseudo_inverse;
-    out.to_centroid = evaluate_at(space, element, {Vec3{0.0, 0.0, 0.0}}) * pseudo_inverse;
+    out.to_centroid = evaluate_at(space, element, {natural_centroid(element)}) * pseudo_inverse;
     out.space = space_name(space);
     return out;
   }

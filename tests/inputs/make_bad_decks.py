@@ -303,7 +303,7 @@ DECKS = [
      1, "depend on each other in a cycle"),
     ("solver_transform_on_axis", "a cylindrical transform whose axis passes through set nodes",
      base(BOUNDARY=">>*TRANSFORM, NSET=FIXED, TYPE=C\n0., 0., 0., 0., 0., 1.\n" + BOUNDARY), 1,
-     "lies on the cylinder axis"),
+     "lies on the axis: it has no radial direction"),
     ("solver_temperature_no_expansion", "a step temperature on a material without *EXPANSION",
      base(MATERIAL=">>" + MATERIAL,
           STEP="*STEP\n*STATIC\n*CLOAD\nTIP, 3, -1.\n*TEMPERATURE\nTIP, 100.\n*END STEP\n"),

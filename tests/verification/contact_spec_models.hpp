@@ -8,6 +8,7 @@
 #include <vector>
 
 #include "contact_model_kit.hpp"
+#include "hex_model_builder.hpp"
 #include "styk/mesher/convert.hpp"
 #include "styk/mesher/merge.hpp"
 
@@ -28,8 +29,8 @@ inline Model two_cantilevers_model(std::optional<Friction> friction) {
   mesh.add_to_surface("LOWER_TOP", lower.side_faces(2, 1));
   mesh.add_to_surface("UPPER_BOTTOM", upper.side_faces(2, -1));
   mesh.add_to_surface("LOAD", upper.side_faces(2, 1));
-  mesher::convert_layer_to_c3d21(mesh, "UPPER_BOTTOM");
-  mesher::convert_layer_to_c3d21(mesh, "LOWER_TOP");
+  mesher::convert_elements(mesh, test::shared_registry(), "C3D21", "UPPER_BOTTOM");
+  mesher::convert_elements(mesh, test::shared_registry(), "C3D21", "LOWER_TOP");
   Model model = contact_model(mesh, {{"LOWER", 2e11, 0.0}, {"UPPER", 2e11, 0.0}});
   add_contact_pair(model, "UPPER_BOTTOM", "LOWER_TOP", "BEAMS", friction);
   add_pressure(model, "LOAD", 2e6);
@@ -56,8 +57,8 @@ inline Model punch_model(const Friction& friction) {
   mesher::merge_coincident_nodes(mesh);
   const mesher::Block p = add_box(mesh, {0, 0, 0}, {10, 10, 10}, {4, 4, 4}, "C3D20", "PUNCH");
   mesh.add_to_surface("PUNCH_BOTTOM", p.side_faces(2, -1));
-  mesher::convert_layer_to_c3d21(mesh, "PUNCH_BOTTOM");
-  mesher::convert_layer_to_c3d21(mesh, "HS_TOP");
+  mesher::convert_elements(mesh, test::shared_registry(), "C3D21", "PUNCH_BOTTOM");
+  mesher::convert_elements(mesh, test::shared_registry(), "C3D21", "HS_TOP");
   Model model = contact_model(mesh, {{"HALFSPACE", 2e5, 0.3}, {"PUNCH", 2e5, 0.3}});
   add_contact_pair(model, "PUNCH_BOTTOM", "HS_TOP", "PAD", friction);
   if (friction.kind == Friction::Kind::Anisotropic) {
@@ -104,8 +105,8 @@ inline Model shrink_fit_model(double push) {
   mesh.add_to_surface("SHAFT_FIT", fit.side_faces(1, 1));
   mesh.add_to_surface("SLEEVE_BORE", sleeve.side_faces(1, -1));
   mesh.add_to_surface("SLEEVE_TOP", sleeve.side_faces(0, 1));
-  mesher::convert_layer_to_c3d21(mesh, "SHAFT_FIT");
-  mesher::convert_layer_to_c3d21(mesh, "SLEEVE_BORE");
+  mesher::convert_elements(mesh, test::shared_registry(), "C3D21", "SHAFT_FIT");
+  mesher::convert_elements(mesh, test::shared_registry(), "C3D21", "SLEEVE_BORE");
   Model model = contact_model(mesh, {{"SHAFT", 2e5, 0.3}, {"SLEEVE", 2e5, 0.3}});
   Friction f;
   f.mu = 0.2;

@@ -34,6 +34,13 @@ inline std::unique_ptr<FullRegistry> registry_with_plugins() {
   return out;
 }
 
+// One registry with the plug-ins for the whole test program, for the model builders that
+// convert meshes (mesher::convert_elements reads the target types' descriptions from it).
+inline const ElementRegistry& shared_registry() {
+  static const std::unique_ptr<FullRegistry> full = registry_with_plugins();
+  return full->registry;
+}
+
 // Corners in Abaqus order: 1-4 counter-clockwise seen from the top (nodes 5-8), 5-8 above them.
 using HexCorners = std::array<Vec3, 8>;
 

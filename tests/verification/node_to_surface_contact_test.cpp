@@ -20,6 +20,7 @@
 #include "contact_spec_models.hpp"
 #include "hex_model_builder.hpp"
 #include "styk/mesher/convert.hpp"
+#include "styk/mesher/split.hpp"
 #include "styk/solver/analysis.hpp"
 
 namespace styk {
@@ -29,13 +30,20 @@ constexpr double kPi = 3.14159265358979323846;
 
 // One side of the interface: element type of its contact layer and divisions along x and y.
 struct Side {
-  std::string type;  // C3D8, C3D20, or C3D21 (a C3D20 block whose contact layer is converted)
+  // C3D8, C3D20, C3D21 (a C3D20 block whose contact layer is converted), or a tetrahedron or
+  // wedge type (the body's bricks split: mesher/split.hpp; wedges along z, triangles in contact)
+  std::string type;
   int divisions = 1;
 };
 
+bool tetrahedra(const std::string& type) { return type == "C3D4" || type == "C3D10"; }
+bool wedges(const std::string& type) { return type == "C3D6" || type == "C3D15"; }
+
 Model flat_patch(const Side& slave, const Side& master, double master_young) {
   mesher::Mesh mesh;
-  auto block_type = [](const std::string& t) { return t == "C3D8" ? "C3D8" : "C3D20"; };
+  auto block_type = [](const std::string& t) {
+    return t == "C3D8" || t == "C3D4" || t == "C3D6" ? "C3D8" : "C3D20";
+  };
   const mesher::Block lower =
       test::add_box(mesh, {0, 0, 0}, {1, 1, 1}, {master.divisions, master.divisions, 2},
                     block_type(master.type), "LOWER");
@@ -45,8 +53,17 @@ Model flat_patch(const Side& slave, const Side& master, double master_young) {
   mesh.add_to_surface("LOWER_TOP", lower.side_faces(2, 1));
   mesh.add_to_surface("UPPER_BOTTOM", upper.side_faces(2, -1));
   mesh.add_to_surface("LOAD", upper.side_faces(2, 1));
-  if (slave.type == "C3D21") mesher::convert_layer_to_c3d21(mesh, "UPPER_BOTTOM");
-  if (master.type == "C3D21") mesher::convert_layer_to_c3d21(mesh, "LOWER_TOP");
+  if (slave.type == "C3D21")
+    mesher::convert_elements(mesh, test::shared_registry(), "C3D21", "UPPER_BOTTOM");
+  if (master.type == "C3D21")
+    mesher::convert_elements(mesh, test::shared_registry(), "C3D21", "LOWER_TOP");
+  for (const auto& [side, body] : {std::make_pair(slave, "UPPER"), std::make_pair(master, "LOWER")}) {
+    const std::vector<int> bricks = mesh.element_sets.at(body);
+    if (tetrahedra(side.type))
+      mesher::split_to_tetrahedra(mesh, test::shared_registry(), side.type, bricks);
+    if (wedges(side.type))
+      mesher::split_to_wedges(mesh, test::shared_registry(), side.type, 2, bricks);
+  }
   Model model = test::contact_model(mesh, {{"LOWER", master_young, 0.3}, {"UPPER", 1.0, 0.3}});
   test::add_contact_pair(model, "UPPER_BOTTOM", "LOWER_TOP", "SMOOTH", std::nullopt);
   test::add_pressure(model, "LOAD", 1.0);
@@ -110,10 +127,15 @@ PatchResult solve_patch(const ElementRegistry& registry, const Side& slave, cons
 // to the master's compliance: from stiffness ratio 1e3 to 1e6 by 1000 (asserted 900-1100; measured
 // 5.245e-4 -> 5.245e-7). Over a rigid master the pairing, normals and areas are exact.
 TEST_F(NodeToSurfaceContact, FlatPatchOverAStiffMasterIsUniform) {
+  // Also on the faces of tetrahedra and wedges (triangles; the linear ones as slaves, whose corner
+  // areas are A/3 > 0; the quadratic ones as masters, projected on exactly).
   const std::pair<Side, Side> cases[] = {{{"C3D8", 3}, {"C3D8", 4}},
                                          {{"C3D8", 4}, {"C3D8", 3}},
                                          {{"C3D21", 3}, {"C3D20", 4}},
-                                         {{"C3D21", 4}, {"C3D20", 3}}};
+                                         {{"C3D21", 4}, {"C3D20", 3}},
+                                         {{"C3D4", 3}, {"C3D4", 4}},
+                                         {{"C3D6", 3}, {"C3D15", 4}},
+                                         {{"C3D8", 3}, {"C3D10", 4}}};
   for (const auto& [slave, master] : cases) {
     SCOPED_TRACE(slave.type + " " + std::to_string(slave.divisions) + " on " + master.type + " " +
                  std::to_string(master.divisions));
@@ -187,7 +209,7 @@ Model cylinders(int inner_around, int outer_around) {
   mesh.add_to_surface("OUTER_IN", outer.side_faces(1, -1));
   mesh.add_to_surface("P_IN", inner.side_faces(1, -1));
   mesh.add_to_surface("P_OUT", outer.side_faces(1, 1));
-  mesher::convert_layer_to_c3d21(mesh, "OUTER_IN");
+  mesher::convert_elements(mesh, test::shared_registry(), "C3D21", "OUTER_IN");
   Model model = test::contact_model(mesh, {{"INNER", 10.0, 0.3}, {"OUTER", 20.0, 0.2}});
   test::add_contact_pair(model, "OUTER_IN", "INNER_OUT", "SMOOTH", std::nullopt);
   test::add_pressure(model, "P_IN", 5.0);

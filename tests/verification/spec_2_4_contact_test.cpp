@@ -39,14 +39,14 @@ Stack solve_stack(const ElementRegistry& registry, const std::string& type) {
   test::add_box(mesh, {-1, -1, -1}, {1, 1, 1}, {1, 1, 1}, base, "LOWER");
   test::add_box(mesh, {-1, -1, 1}, {1, 1, 3}, {1, 1, 1}, base, "UPPER");
   mesher::merge_coincident_nodes(mesh);
-  if (type == "C3D14") mesher::convert_to_c3d14(mesh);
+  if (type == "C3D14") mesher::convert_elements(mesh, registry, "C3D14");
   mesher::split_interface(mesh, "LOWER", "IF");
   if (type == "C3D21") {
-    mesher::convert_layer_to_c3d21(mesh, "IF_B");
-    mesher::convert_layer_to_c3d21(mesh, "IF_A");
+    mesher::convert_elements(mesh, registry, "C3D21", "IF_B");
+    mesher::convert_elements(mesh, registry, "C3D21", "IF_A");
   } else if (type == "C3D28") {
-    mesher::convert_layer_to_c3d28(mesh, "IF_B");
-    mesher::convert_layer_to_c3d28(mesh, "IF_A");
+    mesher::convert_elements(mesh, registry, "C3D28", "IF_B");
+    mesher::convert_elements(mesh, registry, "C3D28", "IF_A");
   }
   Stack out;
   Model& model = out.model;

@@ -43,8 +43,8 @@ Model sector_cylinders(Symmetry symmetry) {
   mesh.add_to_surface("OUTER_IN", outer.side_faces(1, -1));
   mesh.add_to_surface("P_IN", inner.side_faces(1, -1));
   mesh.add_to_surface("P_OUT", outer.side_faces(1, 1));
-  mesher::convert_layer_to_c3d21(mesh, "INNER_OUT");
-  mesher::convert_layer_to_c3d21(mesh, "OUTER_IN");
+  mesher::convert_elements(mesh, test::shared_registry(), "C3D21", "INNER_OUT");
+  mesher::convert_elements(mesh, test::shared_registry(), "C3D21", "OUTER_IN");
   Model model = test::contact_model(mesh, {{"INNER", 10.0, 0.3}, {"OUTER", 20.0, 0.2}});
   test::add_contact_pair(model, "OUTER_IN", "INNER_OUT", "SMOOTH", std::nullopt);
   test::add_pressure(model, "P_IN", 5.0);

@@ -34,8 +34,8 @@ class ContactSpec32 : public ::testing::Test {
 test::FullRegistry* ContactSpec32::full_ = nullptr;
 
 void convert_layer(mesher::Mesh& mesh, const std::string& type, const std::string& surface) {
-  if (type == "C3D21") mesher::convert_layer_to_c3d21(mesh, surface);
-  if (type == "C3D28") mesher::convert_layer_to_c3d28(mesh, surface);
+  if (type == "C3D21") mesher::convert_elements(mesh, test::shared_registry(), "C3D21", surface);
+  if (type == "C3D28") mesher::convert_elements(mesh, test::shared_registry(), "C3D28", surface);
 }
 
 // ---------------------------------------------------------------------------------------------

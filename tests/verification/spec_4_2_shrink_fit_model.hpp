@@ -12,6 +12,7 @@
 #include <string>
 
 #include "contact_model_kit.hpp"
+#include "hex_model_builder.hpp"
 #include "styk/mesher/convert.hpp"
 #include "styk/mesher/merge.hpp"
 
@@ -87,9 +88,9 @@ inline Model shrink_fit_thermal_model(const ShrinkFitMesh& spec) {
   mesh.add_to_surface("SLEEVE_TOP", sleeve.side_faces(0, 1));
   for (const char* surface : {"SHAFT_FIT", "SLEEVE_BORE"}) {
     if (spec.contact_type == "C3D28")
-      mesher::convert_layer_to_c3d28(mesh, surface);
+      mesher::convert_elements(mesh, test::shared_registry(), "C3D28", surface);
     else
-      mesher::convert_layer_to_c3d21(mesh, surface);
+      mesher::convert_elements(mesh, test::shared_registry(), "C3D21", surface);
   }
   Model model = contact_model(mesh, {{"SHAFT", 2e5, 0.3}, {"SLEEVE", 2e5, 0.3}});
   for (Material& m : model.materials) m.expansion = 2e-5;

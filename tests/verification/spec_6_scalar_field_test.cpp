@@ -187,7 +187,7 @@ TEST_F(ScalarFieldTest, HeatResultsRoundTripThroughTheFiles) {
             std::string::npos);
 
   const std::string vtu = ::testing::TempDir() + "styk_scalar.vtu";
-  write_vtu(vtu, built.model, &results.increments.front());
+  write_vtu(vtu, built.model, registry(), &results.increments.front());
   std::ifstream in(vtu);
   const std::string text((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
   std::remove(vtu.c_str());

@@ -1,20 +1,14 @@
 // *ORIENTATION and *TRANSFORM (local coordinate systems given by two points) and *EQUATION
 // (linear multi-point constraints).
 #include <algorithm>
-#include <cmath>
 
 #include "deck_reader.hpp"
 #include "numbers.hpp"
+#include "styk/core/local_axes.hpp"
 
 namespace styk::inp {
 
 namespace {
-
-double norm(const Vec3& v) { return std::sqrt(v[0] * v[0] + v[1] * v[1] + v[2] * v[2]); }
-
-Vec3 cross(const Vec3& x, const Vec3& y) {
-  return {x[1] * y[2] - x[2] * y[1], x[2] * y[0] - x[0] * y[2], x[0] * y[1] - x[1] * y[0]};
-}
 
 CoordinateSystem system_value(const Parameter* p, const SourceLoc& where, const std::string& what) {
   if (!p) return CoordinateSystem::Rectangular;
@@ -25,9 +19,8 @@ CoordinateSystem system_value(const Parameter* p, const SourceLoc& where, const 
                               " is not supported; expected RECTANGULAR (R) or CYLINDRICAL (C)");
 }
 
-// The data line a1, a2, a3, b1, b2, b3, checked to define a system: for a rectangular one a must
-// not be zero and b not parallel to a; for a cylindrical one the two axis points must differ.
-// Degeneracy is judged relative to the size of the points, so units do not matter.
+// The data line a1, a2, a3, b1, b2, b3, checked to define a system (axes_defect(): the rule
+// every module shares).
 LocalAxes axes_from(const DataLine& line, CoordinateSystem system) {
   LocalAxes axes;
   axes.system = system;
@@ -36,20 +29,8 @@ LocalAxes axes_from(const DataLine& line, CoordinateSystem system) {
     axes.a[i] = real_field(line, i, std::string("coordinate ") + names[i]);
     axes.b[i] = real_field(line, i + 3, std::string("coordinate ") + names[i + 3]);
   }
-  const double scale = std::max(norm(axes.a), norm(axes.b));
-  constexpr double kRelative = 1e-12;
-  if (system == CoordinateSystem::Rectangular) {
-    if (norm(axes.a) == 0.0)
-      throw InputError(line.where, "point a is the origin: it cannot give the local x direction");
-    if (norm(cross(axes.a, axes.b)) <= kRelative * scale * scale)
-      throw InputError(line.where,
-                       "points a and b lie on one line through the origin: they do "
-                       "not define a local x-y plane");
-  } else {
-    const Vec3 axis{axes.b[0] - axes.a[0], axes.b[1] - axes.a[1], axes.b[2] - axes.a[2]};
-    if (norm(axis) <= kRelative * scale)
-      throw InputError(line.where, "points a and b coincide: they do not define a cylinder axis");
-  }
+  if (const std::string defect = axes_defect(axes); !defect.empty())
+    throw InputError(line.where, defect);
   return axes;
 }
 

@@ -2,11 +2,13 @@
 // array is written inline as format="binary": base64 of [byte count as UInt64][raw little-endian
 // values], header and values encoded as one stream, which is what VTK expects for uncompressed
 // inline data.
+#include <algorithm>
 #include <cmath>
 #include <cstdint>
 #include <cstring>
 #include <fstream>
 #include <limits>
+#include <map>
 #include <stdexcept>
 #include <string>
 #include <utility>
@@ -15,7 +17,6 @@
 #include "base64.hpp"
 #include "styk/io/vtu_export.hpp"
 #include "temp_file.hpp"
-#include "vtk_cell_map.hpp"
 
 namespace styk {
 
@@ -165,26 +166,53 @@ void write_contact_arrays(VtuWriter& writer, const Model& model, const Increment
   writer.array("CSTATUS", 1, status);
 }
 
+// The VTK cell of every element type of the model, checked: a type the registry does not know,
+// or one without a cell, is refused at the first element of that type.
+std::map<std::string, VtkCell> cells_of_types(const Model& model, const ElementRegistry& registry) {
+  std::map<std::string, VtkCell> cells;
+  for (const Element& element : model.elements) {
+    if (cells.count(element.type)) continue;
+    const TElement* formulation = registry.find(element.type);
+    if (formulation == nullptr) {
+      std::string message = "element " + std::to_string(element.id) + " has type " +
+                            element.type + ", which no loaded formulation describes";
+      if (!registry.searched_paths.empty())
+        message += " (plug-ins searched in " + registry.searched_paths + ")";
+      throw InputError(element.where, message + ": it cannot be exported");
+    }
+    VtkCell cell = formulation->vtk_cell();
+    const bool valid =
+        cell.type > 0 && !cell.nodes.empty() &&
+        std::all_of(cell.nodes.begin(), cell.nodes.end(), [&](int k) {
+          return k >= 0 && k < formulation->node_count() && k < element.node_count;
+        });
+    if (!valid)
+      throw InputError(element.where, "element " + std::to_string(element.id) + " (" +
+                                          element.type +
+                                          ") describes no VTK cell (TElement::vtk_cell()): it "
+                                          "cannot be exported");
+    cells.emplace(element.type, std::move(cell));
+  }
+  return cells;
+}
+
 }  // namespace
 
 VtuExportSummary write_vtu(const std::string& path, const Model& model,
-                           const IncrementResult* inc) {
+                           const ElementRegistry& registry, const IncrementResult* inc) {
   if (inc != nullptr) check_sizes(model, *inc);
+  const std::map<std::string, VtkCell> cells = cells_of_types(model, registry);
   VtuExportSummary summary;
   std::vector<std::int64_t> connectivity, offsets, element_ids;
   std::vector<std::uint8_t> types;
   std::vector<int> exported;  // element index of each cell
   for (int e = 0; e < model.element_count(); ++e) {
     const Element& element = model.elements[e];
-    const io::VtkCellMapping* cell = io::vtk_cell_mapping(element.type);
-    if (cell == nullptr || element.node_count < static_cast<int>(cell->node_order.size())) {
-      ++summary.skipped_by_type[element.type];
-      continue;
-    }
+    const VtkCell& cell = cells.at(element.type);
     const int* nodes = model.element_nodes(e);
-    for (const int k : cell->node_order) connectivity.push_back(nodes[k]);
+    for (const int k : cell.nodes) connectivity.push_back(nodes[k]);
     offsets.push_back(static_cast<std::int64_t>(connectivity.size()));
-    types.push_back(static_cast<std::uint8_t>(cell->vtk_type));
+    types.push_back(static_cast<std::uint8_t>(cell.type));
     element_ids.push_back(element.id);
     exported.push_back(e);
   }

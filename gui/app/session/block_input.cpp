@@ -4,9 +4,9 @@
 #include <cmath>
 #include <stdexcept>
 
+#include "session/brick_types.hpp"
 #include "session/input_checks.hpp"
 #include "styk/mesher/block_mesh.hpp"
-#include "styk/mesher/convert.hpp"
 #include "styk/mesher/geometry_maps.hpp"
 #include "styk/mesher/quality.hpp"
 
@@ -133,11 +133,11 @@ void check_block(const BlockInput& in, const Model& model, const ElementRegistry
   if (count > 2000000)
     refuse("the block would have " + std::to_string(count) + " elements; at most 2,000,000");
   const std::string type = to_upper(in.type);
-  if (type != "C3D8" && type != "C3D20" && type != "C3D21" && type != "C3D28")
-    refuse("element type " + in.type + " cannot be meshed here; use C3D8, C3D20, C3D21 or C3D28");
-  if (!registry.find(type))
-    refuse("element type " + type + " is not available (its plug-in is not loaded)");
-  if ((type == "C3D21" || type == "C3D28") &&
+  const std::vector<std::string> types = brick_types(registry);
+  if (std::find(types.begin(), types.end(), type) == types.end())
+    refuse("element type " + in.type + " cannot be meshed here; use " +
+           brick_type_list(registry));
+  if (needs_layer_side(registry, type) &&
       std::find(kSides.begin(), kSides.end(), to_upper(in.layer_side)) == kSides.end())
     refuse("layer side must be one of XMIN, XMAX, YMIN, YMAX, ZMIN, ZMAX");
   if (!in.material.empty() && model.material_index(to_upper(in.material)) < 0)
@@ -153,7 +153,7 @@ Model model_with_block(const Model& model, const BlockInput& in, const ElementRe
   control.insert(control.end(), in.mid_edges.begin(), in.mid_edges.end());
   mesher::Mesh mesh;
   mesher::BlockSpec spec;
-  spec.type = type == "C3D8" ? "C3D8" : "C3D20";
+  spec.type = brick_of(registry, type);
   spec.divisions = in.divisions;
   spec.grading = in.grading;
   spec.elset = name;
@@ -162,8 +162,7 @@ Model model_with_block(const Model& model, const BlockInput& in, const ElementRe
     if (!in.mid_edges.empty()) check_not_folded(mesh, registry);
     for (int s = 0; s < 6; ++s)
       mesh.add_to_surface(name + "_" + kSides[s], block.side_faces(s / 2, s % 2 == 0 ? -1 : 1));
-    if (type == "C3D21") mesher::convert_layer_to_c3d21(mesh, name + "_" + to_upper(in.layer_side));
-    if (type == "C3D28") mesher::convert_layer_to_c3d28(mesh, name + "_" + to_upper(in.layer_side));
+    convert_bricks(mesh, registry, type, name + "_" + to_upper(in.layer_side));
   } catch (const std::invalid_argument& e) {
     refuse(std::string("the mesher refuses the block: ") + e.what());
   }

@@ -7,9 +7,9 @@
 #include <sstream>
 
 #include "session/input_checks.hpp"
-#include "session/vec3_ops.hpp"
 #include "session/orientation_input.hpp"
 #include "session/validation.hpp"
+#include "styk/core/local_axes.hpp"
 
 namespace styk::gui {
 namespace {
@@ -90,16 +90,9 @@ std::unique_ptr<Command> equation_command(const Model& model,
 Transform checked_transform(const Model& model, const TransformInput& in, int replacing) {
   const NodeSet& set = existing_nset(model, in.nset);
   const LocalAxes axes = local_axes(in.cylindrical, in.a, in.b);  // shared with *ORIENTATION
-  if (in.cylindrical) {
-    const double scale = std::max({norm(in.a), norm(in.b), 1e-300});
-    const Vec3 axis = minus(in.b, in.a);
-    for (int n : set.nodes) {
-      const double distance = norm(cross(minus(model.coords[n], in.a), axis)) / norm(axis);
-      if (distance < 1e-9 * std::max(scale, 1.0))
-        refuse("node " + std::to_string(model.node_ids[n]) +
-               " lies on the axis: it has no radial direction");
-    }
-  }
+  for (int n : set.nodes)
+    if (const std::string defect = axes_defect_at(axes, model.coords[n]); !defect.empty())
+      refuse("node " + std::to_string(model.node_ids[n]) + " " + defect);
   for (int i = 0; i < static_cast<int>(model.transforms.size()); ++i) {
     if (i == replacing) continue;
     const Transform& t = model.transforms[i];

@@ -4,7 +4,7 @@
 #include <cmath>
 
 #include "session/input_checks.hpp"
-#include "session/vec3_ops.hpp"
+#include "styk/core/local_axes.hpp"
 
 namespace styk::gui {
 namespace {
@@ -23,19 +23,11 @@ LocalAxes local_axes(bool cylindrical, const Vec3& a, const Vec3& b) {
     check_finite(a[k], "point a");
     check_finite(b[k], "point b");
   }
-  // Degeneracy relative to the size of the points, so units do not matter.
-  const double scale = std::max({norm(a), norm(b), 1e-300});
-  if (!cylindrical) {
-    if (norm(a) < 1e-12 * scale) refuse("point a must not be the origin (it gives local x)");
-    if (norm(cross(a, b)) < 1e-9 * norm(a) * norm(b) || norm(b) == 0.0)
-      refuse("point b must not lie on the line of a (it gives the local x-y plane)");
-  } else if (norm(minus(b, a)) < 1e-12 * scale) {
-    refuse("the two axis points a and b must differ");
-  }
   LocalAxes axes;
   axes.system = cylindrical ? CoordinateSystem::Cylindrical : CoordinateSystem::Rectangular;
   axes.a = a;
   axes.b = b;
+  if (const std::string defect = axes_defect(axes); !defect.empty()) refuse(defect);
   return axes;
 }
 

@@ -4,9 +4,12 @@
 #include <cmath>
 #include <stdexcept>
 
+#include <Eigen/Geometry>
+
+#include "session/brick_types.hpp"
 #include "session/input_checks.hpp"
+#include "styk/core/vec3.hpp"
 #include "styk/mesher/block_mesh.hpp"
-#include "styk/mesher/convert.hpp"
 #include "styk/mesher/geometry_maps.hpp"
 #include "styk/mesher/hex_topology.hpp"
 #include "styk/mesher/merge.hpp"
@@ -17,13 +20,7 @@ namespace {
 constexpr double kPi = 3.14159265358979323846;
 const std::array<std::string, 6> kSides{"INNER", "OUTER", "BOTTOM", "TOP", "CUT0", "CUT1"};
 
-Vec3 plus(const Vec3& a, const Vec3& b) { return {a[0] + b[0], a[1] + b[1], a[2] + b[2]}; }
-Vec3 times(const Vec3& a, double s) { return {a[0] * s, a[1] * s, a[2] * s}; }
-double dot(const Vec3& a, const Vec3& b) { return a[0] * b[0] + a[1] * b[1] + a[2] * b[2]; }
-Vec3 cross(const Vec3& a, const Vec3& b) {
-  return {a[1] * b[2] - a[2] * b[1], a[2] * b[0] - a[0] * b[2], a[0] * b[1] - a[1] * b[0]};
-}
-Vec3 unit(const Vec3& a) { return times(a, 1.0 / std::sqrt(dot(a, a))); }
+using V3 = Eigen::Vector3d;
 
 bool solid(const RevolveInput& in) { return in.r_inner == 0.0; }
 bool closed(const RevolveInput& in) { return std::abs(in.angle - 360.0) < 1e-9; }
@@ -31,15 +28,14 @@ int quarters(const RevolveInput& in) { return static_cast<int>(std::lround(in.an
 
 // The cylindrical frame of the revolve: axis a, angle 0 along e1, 90 degrees along e2 = a x e1.
 struct Frame {
-  Vec3 origin, a, e1, e2;
+  V3 origin, a, e1, e2;
   Vec3 point(double r, double theta, double z) const {
-    return plus(plus(origin, times(a, z)),
-                plus(times(e1, r * std::cos(theta)), times(e2, r * std::sin(theta))));
+    return to_vec3(origin + z * a + r * std::cos(theta) * e1 + r * std::sin(theta) * e2);
   }
   // (r, theta in [0, 2 pi), z) of x
   Vec3 polar(const Vec3& x) const {
-    const Vec3 d = plus(x, times(origin, -1));
-    const double z = dot(d, a), u = dot(d, e1), v = dot(d, e2);
+    const V3 d = as_eigen(x) - origin;
+    const double z = d.dot(a), u = d.dot(e1), v = d.dot(e2);
     double theta = std::atan2(v, u);
     if (theta < 0) theta += 2 * kPi;
     return {std::hypot(u, v), theta, z};
@@ -48,10 +44,10 @@ struct Frame {
 
 Frame frame_of(const RevolveInput& in) {
   Frame f;
-  f.origin = in.origin;
-  f.a = unit(in.axis);
-  f.e1 = revolve_reference_direction(in.axis);
-  f.e2 = cross(f.a, f.e1);
+  f.origin = as_eigen(in.origin);
+  f.a = as_eigen(in.axis).normalized();
+  f.e1 = as_eigen(revolve_reference_direction(in.axis));
+  f.e2 = f.a.cross(f.e1);
   return f;
 }
 
@@ -65,11 +61,11 @@ std::vector<mesher::Block> mesh_solid(mesher::Mesh& mesh, const RevolveInput& in
   std::vector<mesher::Block> blocks;
   for (int k = 0; k < quarters(in); ++k) {
     const double phi = 0.5 * kPi * k;
-    const Vec3 u = plus(times(f.e1, std::cos(phi)), times(f.e2, std::sin(phi)));
-    const Vec3 v = cross(f.a, u);
+    const V3 u = std::cos(phi) * f.e1 + std::sin(phi) * f.e2;
+    const V3 v = f.a.cross(u);
     const auto at = [&](double x, double y, double zeta) {
       const double z = in.z0 + (in.z1 - in.z0) * 0.5 * (zeta + 1);
-      return plus(plus(f.origin, times(f.a, z)), plus(times(u, x), times(v, y)));
+      return to_vec3(f.origin + z * f.a + x * u + y * v);
     };
     const auto blend = [](double x0, double y0, double x1, double y1, double s) {
       return std::array<double, 2>{x0 + s * (x1 - x0), y0 + s * (y1 - y0)};
@@ -109,7 +105,8 @@ mesher::Block mesh_ring(mesher::Mesh& mesh, const RevolveInput& in, const Frame&
   spec.divisions = {in.axial, in.radial, in.around};
   spec.grading = {in.axial_grading, in.radial_grading, 1.0};
   return mesher::mesh_block(
-      mesh, mesher::revolve(profile, f.origin, f.a, 0.0, in.angle * kPi / 180), spec);
+      mesh, mesher::revolve(profile, to_vec3(f.origin), to_vec3(f.a), 0.0, in.angle * kPi / 180),
+      spec);
 }
 
 // Which side (index into kSides) the face lies on, -1 for none: every corner on it.
@@ -142,7 +139,7 @@ int side_of(const mesher::Mesh& mesh, const mesher::FaceRef& face, const Revolve
 }  // namespace
 
 Vec3 revolve_reference_direction(const Vec3& axis) {
-  const Vec3 a = unit(axis);
+  const V3 a = as_eigen(axis).normalized();
   // Along a global axis: the next one (z -> x, x -> y, y -> z); otherwise the global axis least
   // aligned with a, made perpendicular to it.
   int pick = 0;
@@ -152,9 +149,8 @@ Vec3 revolve_reference_direction(const Vec3& axis) {
       std::abs(std::abs(a[2]) - 1.0) >= 1e-12)
     for (int k = 1; k < 3; ++k)
       if (std::abs(a[k]) < std::abs(a[pick])) pick = k;
-  Vec3 g{0, 0, 0};
-  g[pick] = 1;
-  return unit(plus(g, times(a, -dot(g, a))));
+  const V3 g = V3::Unit(pick);
+  return to_vec3((g - g.dot(a) * a).normalized());
 }
 
 void check_revolve(const RevolveInput& in, const Model& model, const ElementRegistry& registry) {
@@ -167,7 +163,7 @@ void check_revolve(const RevolveInput& in, const Model& model, const ElementRegi
     check_finite(in.origin[k], "axis point");
     check_finite(in.axis[k], "axis direction");
   }
-  if (dot(in.axis, in.axis) < 1e-24) refuse("the axis direction must not be zero");
+  if (as_eigen(in.axis).squaredNorm() < 1e-24) refuse("the axis direction must not be zero");
   for (double v :
        {in.r_inner, in.r_outer, in.z0, in.z1, in.angle, in.radial_grading, in.axial_grading})
     check_finite(v, "every number");
@@ -202,11 +198,11 @@ void check_revolve(const RevolveInput& in, const Model& model, const ElementRegi
   if (count > 2000000)
     refuse("the revolve would have " + std::to_string(count) + " elements; at most 2,000,000");
   const std::string type = to_upper(in.type);
-  if (type != "C3D8" && type != "C3D20" && type != "C3D21" && type != "C3D28")
-    refuse("element type " + in.type + " cannot be meshed here; use C3D8, C3D20, C3D21 or C3D28");
-  if (!registry.find(type))
-    refuse("element type " + type + " is not available (its plug-in is not loaded)");
-  if (type == "C3D21" || type == "C3D28") {
+  const std::vector<std::string> types = brick_types(registry);
+  if (std::find(types.begin(), types.end(), type) == types.end())
+    refuse("element type " + in.type + " cannot be meshed here; use " +
+           brick_type_list(registry));
+  if (needs_layer_side(registry, type)) {
     const std::string side = to_upper(in.layer_side);
     if (std::find(kSides.begin(), kSides.end(), side) == kSides.end())
       refuse("layer side must be one of INNER, OUTER, BOTTOM, TOP, CUT0, CUT1");
@@ -226,7 +222,7 @@ Model model_with_revolve(const Model& model, const RevolveInput& in,
   const Frame f = frame_of(in);
   mesher::Mesh mesh;
   mesher::BlockSpec base;
-  base.type = type == "C3D8" ? "C3D8" : "C3D20";
+  base.type = brick_of(registry, type);
   base.elset = name;
   try {
     std::vector<mesher::Block> blocks;
@@ -244,9 +240,7 @@ Model model_with_revolve(const Model& model, const RevolveInput& in,
             if (const int s = side_of(mesh, face, in, f, tol); s >= 0) sides[s].push_back(face);
     for (int s = 0; s < 6; ++s)
       if (!sides[s].empty()) mesh.add_to_surface(name + "_" + kSides[s], sides[s]);
-    const std::string layer = name + "_" + to_upper(in.layer_side);
-    if (type == "C3D21") mesher::convert_layer_to_c3d21(mesh, layer);
-    if (type == "C3D28") mesher::convert_layer_to_c3d28(mesh, layer);
+    convert_bricks(mesh, registry, type, name + "_" + to_upper(in.layer_side));
   } catch (const std::invalid_argument& e) {
     refuse(std::string("the mesher refuses the revolve: ") + e.what());
   }

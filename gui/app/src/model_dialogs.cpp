@@ -12,6 +12,7 @@
 
 #include "child_process_solve.hpp"
 #include "dialog_fields.hpp"
+#include "session/brick_types.hpp"
 #include "session/entry_edits.hpp"
 #include "session/input_checks.hpp"
 #include "session/validation.hpp"
@@ -109,8 +110,10 @@ FormDialog* make_block_dialog(Document& doc, QWidget* parent) {
   add_fill_midpoints_button(*d);
   d->add_text("divisions", "Divisions x y z", "10 2 2");
   d->add_text("grading", "Grading x y z (last/first)", "1 1 1");
-  d->add_choice("type", "Element type", {"C3D20", "C3D8", "C3D21", "C3D28"});
-  d->add_choice("layer_side", "C3D21/C3D28 layer on side",
+  QStringList types;
+  for (const std::string& type : brick_types(doc.registry())) types << QString::fromStdString(type);
+  d->add_choice("type", "Element type", types);
+  d->add_choice("layer_side", "Contact layer (C3D21, C3D28, ...) on side",
                 {"ZMAX", "ZMIN", "XMIN", "XMAX", "YMIN", "YMAX"});
   d->add_choice("material", "Section material", QStringList{"(none)"} + materials(doc.model()));
   d->set_accept([&doc](const FormDialog& f) {

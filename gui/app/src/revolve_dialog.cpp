@@ -1,6 +1,7 @@
 #include "revolve_dialog.hpp"
 
 #include "dialog_fields.hpp"
+#include "session/brick_types.hpp"
 #include "session/revolve.hpp"
 
 namespace styk::gui {
@@ -23,8 +24,10 @@ FormDialog* make_revolve_dialog(Document& doc, QWidget* parent) {
   d->add_text("angle", "Angle (degrees)", "90");
   d->add_text("divisions", "Divisions radial, axial, around", "2 12 6");
   d->add_text("grading", "Grading radial, axial (last/first)", "1 1");
-  d->add_choice("type", "Element type", {"C3D20", "C3D8", "C3D21", "C3D28"});
-  d->add_choice("layer_side", "C3D21/C3D28 layer on side",
+  QStringList types;
+  for (const std::string& type : brick_types(doc.registry())) types << QString::fromStdString(type);
+  d->add_choice("type", "Element type", types);
+  d->add_choice("layer_side", "Contact layer (C3D21, C3D28, ...) on side",
                 {"OUTER", "INNER", "BOTTOM", "TOP", "CUT0", "CUT1"});
   d->add_choice("material", "Section material",
                 QStringList{"(none)"} + material_names(doc.model()));

@@ -5,6 +5,8 @@
 #include <cmath>
 #include <map>
 
+#include <Eigen/Geometry>
+
 #include "styk/core/diagnostics.hpp"
 
 namespace styk::render {
@@ -12,25 +14,17 @@ namespace {
 
 constexpr double kPi = 3.14159265358979323846;
 
-struct D3 {
-  double x = 0, y = 0, z = 0;
-};
-D3 operator+(D3 a, D3 b) { return {a.x + b.x, a.y + b.y, a.z + b.z}; }
-D3 operator-(D3 a, D3 b) { return {a.x - b.x, a.y - b.y, a.z - b.z}; }
-D3 operator*(double s, D3 a) { return {s * a.x, s * a.y, s * a.z}; }
-double dot(D3 a, D3 b) { return a.x * b.x + a.y * b.y + a.z * b.z; }
-D3 cross(D3 a, D3 b) {
-  return {a.y * b.z - a.z * b.y, a.z * b.x - a.x * b.z, a.x * b.y - a.y * b.x};
-}
-D3 unit(D3 a) {
-  const double l = std::sqrt(dot(a, a));
-  return l > 0 ? (1.0 / l) * a : a;
+using D3 = Eigen::Vector3d;
+
+D3 unit(const D3& a) {
+  const double l = a.norm();
+  return l > 0 ? D3(a / l) : a;
 }
 
 // Rodrigues: v turned by angle (radians) about the unit axis k.
-D3 rotate(D3 v, D3 k, double angle) {
+D3 rotate(const D3& v, const D3& k, double angle) {
   const double c = std::cos(angle), s = std::sin(angle);
-  return c * v + s * cross(k, v) + (dot(k, v) * (1 - c)) * k;
+  return c * v + s * k.cross(v) + (k.dot(v) * (1 - c)) * k;
 }
 
 struct NamedView {
@@ -54,13 +48,12 @@ std::string canonical(std::string name) {
   return name;
 }
 
-Mat4 look_at(D3 eye, D3 centre, D3 right, D3 up, D3 back) {
-  (void)centre;
+Mat4 look_at(const D3& eye, const D3& right, const D3& up, const D3& back) {
   Mat4 m{};
-  m[0] = float(right.x), m[4] = float(right.y), m[8] = float(right.z);
-  m[1] = float(up.x), m[5] = float(up.y), m[9] = float(up.z);
-  m[2] = float(back.x), m[6] = float(back.y), m[10] = float(back.z);
-  m[12] = float(-dot(right, eye)), m[13] = float(-dot(up, eye)), m[14] = float(-dot(back, eye));
+  m[0] = float(right.x()), m[4] = float(right.y()), m[8] = float(right.z());
+  m[1] = float(up.x()), m[5] = float(up.y()), m[9] = float(up.z());
+  m[2] = float(back.x()), m[6] = float(back.y()), m[10] = float(back.z());
+  m[12] = float(-right.dot(eye)), m[13] = float(-up.dot(eye)), m[14] = float(-back.dot(eye));
   m[15] = 1.0f;
   return m;
 }
@@ -100,23 +93,24 @@ Camera fit_camera(const ViewSpec& spec, const std::array<float, 3>& lower,
   check_view_name(spec.name);
   const NamedView& named = named_views().at(canonical(spec.name));
   D3 back = unit(named.toward_eye);
-  D3 right = unit(cross(named.up, back));
-  D3 up = cross(back, right);
+  D3 right = unit(named.up.cross(back));
+  D3 up = back.cross(right);
   // Azimuth about the screen's vertical, then elevation about the (new) horizontal axis; the
   // whole frame turns, so looking straight down never loses its "up".
   const double az = spec.azimuth * kPi / 180.0, el = spec.elevation * kPi / 180.0;
   back = rotate(back, up, az), right = rotate(right, up, az);
   back = rotate(back, right, -el), up = rotate(up, right, -el);
 
-  const D3 lo{lower[0], lower[1], lower[2]}, hi{upper[0], upper[1], upper[2]};
+  const D3 lo(lower[0], lower[1], lower[2]), hi(upper[0], upper[1], upper[2]);
   const D3 centre = 0.5 * (lo + hi);
-  double radius = 0.5 * std::sqrt(dot(hi - lo, hi - lo));
+  double radius = 0.5 * (hi - lo).norm();
   if (!(radius > 0)) radius = 1.0;
   double half_x = 0, half_y = 0;
   for (int corner = 0; corner < 8; ++corner) {
-    const D3 p{corner & 1 ? hi.x : lo.x, corner & 2 ? hi.y : lo.y, corner & 4 ? hi.z : lo.z};
-    half_x = std::max(half_x, std::abs(dot(p - centre, right)));
-    half_y = std::max(half_y, std::abs(dot(p - centre, up)));
+    const D3 p(corner & 1 ? hi.x() : lo.x(), corner & 2 ? hi.y() : lo.y(),
+               corner & 4 ? hi.z() : lo.z());
+    half_x = std::max(half_x, std::abs((p - centre).dot(right)));
+    half_y = std::max(half_y, std::abs((p - centre).dot(up)));
   }
   const double zoom = spec.zoom > 0 ? spec.zoom : 1.0;
   Camera camera;
@@ -124,22 +118,22 @@ Camera fit_camera(const ViewSpec& spec, const std::array<float, 3>& lower,
     double half_h = std::max(half_y, half_x / aspect) * 1.05 / zoom;
     if (!(half_h > 0)) half_h = radius;
     const D3 eye = centre + (3.0 * radius) * back;
-    camera.view = look_at(eye, centre, right, up, back);
+    camera.view = look_at(eye, right, up, back);
     camera.projection = orthographic(half_h * aspect, half_h, 0.5 * radius, 5.5 * radius);
   } else {
     const double fovy = 30.0 * kPi / 180.0;
     const double half_fov = std::min(fovy / 2, std::atan(std::tan(fovy / 2) * aspect));
     const double distance = radius * 1.05 / std::sin(half_fov);
     const D3 eye = centre + distance * back;
-    camera.view = look_at(eye, centre, right, up, back);
+    camera.view = look_at(eye, right, up, back);
     const double zoomed = 2.0 * std::atan(std::tan(fovy / 2) / zoom);
     camera.projection =
         perspective(zoomed, aspect, std::max(distance - 1.1 * radius, 1e-3 * distance),
                     distance + 1.1 * radius);
   }
-  camera.right = {float(right.x), float(right.y), float(right.z)};
-  camera.up = {float(up.x), float(up.y), float(up.z)};
-  camera.toward_eye = {float(back.x), float(back.y), float(back.z)};
+  camera.right = {float(right.x()), float(right.y()), float(right.z())};
+  camera.up = {float(up.x()), float(up.y()), float(up.z())};
+  camera.toward_eye = {float(back.x()), float(back.y()), float(back.z())};
   return camera;
 }
 

@@ -10,26 +10,22 @@
 namespace styk::render {
 namespace {
 
-Vec3 lerp_bilinear(const std::array<Vec3, 4>& c, double s, double t) {
-  Vec3 x{};
-  for (int k = 0; k < 3; ++k)
-    x[k] = (1 - s) * (1 - t) * c[0][k] + s * (1 - t) * c[1][k] + s * t * c[2][k] +
-           (1 - s) * t * c[3][k];
-  return x;
+using V3 = Eigen::Vector3d;
+
+V3 point(const Vec3& x) { return V3(x[0], x[1], x[2]); }
+
+V3 lerp_bilinear(const std::array<V3, 4>& c, double s, double t) {
+  return (1 - s) * (1 - t) * c[0] + s * (1 - t) * c[1] + s * t * c[2] + (1 - s) * t * c[3];
 }
 
-double distance_to_segment(const Vec3& p, const Vec3& a, const Vec3& b) {
-  Vec3 ab{}, ap{};
-  double ab2 = 0.0, along = 0.0;
-  for (int k = 0; k < 3; ++k)
-    ab[k] = b[k] - a[k], ap[k] = p[k] - a[k], ab2 += ab[k] * ab[k], along += ab[k] * ap[k];
-  const double u = ab2 > 0 ? std::clamp(along / ab2, 0.0, 1.0) : 0.0;
-  double d2 = 0.0;
-  for (int k = 0; k < 3; ++k) d2 += (ap[k] - u * ab[k]) * (ap[k] - u * ab[k]);
-  return std::sqrt(d2);
+double distance_to_segment(const V3& p, const V3& a, const V3& b) {
+  const V3 ab = b - a, ap = p - a;
+  const double ab2 = ab.squaredNorm();
+  const double u = ab2 > 0 ? std::clamp(ab.dot(ap) / ab2, 0.0, 1.0) : 0.0;
+  return (ap - u * ab).norm();
 }
 
-FacePatch make_patch(const TElement& element, const std::array<Vec3, 4>& c, int segments) {
+FacePatch make_patch(const TElement& element, const std::array<V3, 4>& c, int segments) {
   const int n = element.node_count();
   const int grid = segments + 1;
   Eigen::VectorXd N(n);
@@ -38,17 +34,15 @@ FacePatch make_patch(const TElement& element, const std::array<Vec3, 4>& c, int 
   for (int j = 0; j < grid; ++j) {
     for (int i = 0; i < grid; ++i) {
       const double s = static_cast<double>(i) / segments, t = static_cast<double>(j) / segments;
-      const Vec3 xi = lerp_bilinear(c, s, t);
-      Vec3 dxi_ds{}, dxi_dt{};
-      for (int k = 0; k < 3; ++k) {
-        dxi_ds[k] = (1 - t) * (c[1][k] - c[0][k]) + t * (c[2][k] - c[3][k]);
-        dxi_dt[k] = (1 - s) * (c[3][k] - c[0][k]) + s * (c[2][k] - c[1][k]);
-      }
-      element.der(xi, N, dN);
+      const V3 xi = lerp_bilinear(c, s, t);
+      const V3 dxi_ds = (1 - t) * (c[1] - c[0]) + t * (c[2] - c[3]);
+      const V3 dxi_dt = (1 - s) * (c[3] - c[0]) + s * (c[2] - c[1]);
+      element.der({xi[0], xi[1], xi[2]}, N, dN);
+      const Eigen::VectorXd along_s = dN * dxi_ds, along_t = dN * dxi_dt;
       for (int a = 0; a < n; ++a) {
         all_N.push_back(N(a));
-        all_ds.push_back(dN(a, 0) * dxi_ds[0] + dN(a, 1) * dxi_ds[1] + dN(a, 2) * dxi_ds[2]);
-        all_dt.push_back(dN(a, 0) * dxi_dt[0] + dN(a, 1) * dxi_dt[1] + dN(a, 2) * dxi_dt[2]);
+        all_ds.push_back(along_s(a));
+        all_dt.push_back(along_t(a));
       }
     }
   }
@@ -76,18 +70,18 @@ FaceShape make_shape(const TElement& element, const FaceDef& face) {
   shape.corner_count = face_corner_count(element, face);
   for (int k = 0; k < 4; ++k) shape.corners[k] = face.nodes[std::min(k, shape.corner_count - 1)];
   const std::vector<Vec3>& xi = element.natural_nodes();
-  const std::array<Vec3, 4> c = {xi[shape.corners[0]], xi[shape.corners[1]], xi[shape.corners[2]],
-                                 xi[shape.corners[3]]};
+  const std::array<V3, 4> c = {point(xi[shape.corners[0]]), point(xi[shape.corners[1]]),
+                               point(xi[shape.corners[2]]), point(xi[shape.corners[3]])};
 
   // Degree: nodes on the busiest edge (corners included) minus one; interior nodes make it >= 2.
   int degree = 1;
   std::vector<int> on_edges(face.nodes.size(), 0);
   for (int e = 0; e < shape.corner_count; ++e) {
-    const Vec3& a = c[e];
-    const Vec3& b = c[(e + 1) % shape.corner_count];
+    const V3& a = c[e];
+    const V3& b = c[(e + 1) % shape.corner_count];
     int count = 0;
     for (std::size_t k = 0; k < face.nodes.size(); ++k)
-      if (distance_to_segment(xi[face.nodes[k]], a, b) < 1e-9) ++count, on_edges[k] = 1;
+      if (distance_to_segment(point(xi[face.nodes[k]]), a, b) < 1e-9) ++count, on_edges[k] = 1;
     degree = std::max(degree, count - 1);
   }
   for (std::size_t k = static_cast<std::size_t>(shape.corner_count); k < face.nodes.size(); ++k)
@@ -97,16 +91,11 @@ FaceShape make_shape(const TElement& element, const FaceDef& face) {
 
   // (s, t) of the other face nodes: exact for the axis-parallel square faces of hexahedra; a node
   // off that square simply never passes the bilinear test, so its face is drawn curved.
-  const auto dot = [](const Vec3& u, const Vec3& v) {
-    return u[0] * v[0] + u[1] * v[1] + u[2] * v[2];
-  };
-  const Vec3 es = {c[1][0] - c[0][0], c[1][1] - c[0][1], c[1][2] - c[0][2]};
-  const Vec3 et = {c[3][0] - c[0][0], c[3][1] - c[0][1], c[3][2] - c[0][2]};
+  const V3 es = c[1] - c[0], et = c[3] - c[0];
   for (std::size_t k = static_cast<std::size_t>(shape.corner_count); k < face.nodes.size(); ++k) {
-    const Vec3& p = xi[face.nodes[k]];
-    const Vec3 d = {p[0] - c[0][0], p[1] - c[0][1], p[2] - c[0][2]};
-    const double ss = dot(es, es) > 0 ? dot(d, es) / dot(es, es) : 0.0;
-    const double tt = dot(et, et) > 0 ? dot(d, et) / dot(et, et) : 0.0;
+    const V3 d = point(xi[face.nodes[k]]) - c[0];
+    const double ss = es.squaredNorm() > 0 ? d.dot(es) / es.squaredNorm() : 0.0;
+    const double tt = et.squaredNorm() > 0 ? d.dot(et) / et.squaredNorm() : 0.0;
     shape.extra_nodes.push_back(face.nodes[k]);
     shape.extra_st.push_back({ss, tt});
   }
@@ -125,8 +114,8 @@ const FacePatch& FaceShapes::refined(const TElement* element, int face, int leve
   if (it == refined_.end()) {
     const FaceShape& shape = get(element, face);
     const std::vector<Vec3>& xi = element->natural_nodes();
-    const std::array<Vec3, 4> c = {xi[shape.corners[0]], xi[shape.corners[1]], xi[shape.corners[2]],
-                                   xi[shape.corners[3]]};
+    const std::array<V3, 4> c = {point(xi[shape.corners[0]]), point(xi[shape.corners[1]]),
+                                 point(xi[shape.corners[2]]), point(xi[shape.corners[3]])};
     it = refined_.emplace(key, make_patch(*element, c, shape.curved_segments << level)).first;
   }
   return it->second;

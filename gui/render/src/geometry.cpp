@@ -4,24 +4,17 @@
 #include <cmath>
 #include <limits>
 
+#include <Eigen/Geometry>
+
 #include "beam_geometry.hpp"
 #include "face_shape.hpp"
 #include "line_geometry.hpp"
+#include "styk/core/vec3.hpp"
 
 namespace styk::render {
 namespace {
 
-struct V3 {
-  double x = 0, y = 0, z = 0;
-};
-V3 operator+(V3 a, V3 b) { return {a.x + b.x, a.y + b.y, a.z + b.z}; }
-V3 operator-(V3 a, V3 b) { return {a.x - b.x, a.y - b.y, a.z - b.z}; }
-V3 operator*(double s, V3 a) { return {s * a.x, s * a.y, s * a.z}; }
-V3 cross(V3 a, V3 b) {
-  return {a.y * b.z - a.z * b.y, a.z * b.x - a.x * b.z, a.x * b.y - a.y * b.x};
-}
-double dot(V3 a, V3 b) { return a.x * b.x + a.y * b.y + a.z * b.z; }
-double norm(V3 a) { return std::sqrt(dot(a, a)); }
+using V3 = Eigen::Vector3d;
 
 // Where a node is drawn: deformed, relative to the frame origin.
 class Placement {
@@ -30,10 +23,10 @@ class Placement {
       : model_(model), origin_(origin), u_(u), scale_(u ? scale : 0.0) {}
   V3 operator()(int node) const {
     const Vec3& x = model_.coords[node];
-    V3 p{x[0] - origin_[0], x[1] - origin_[1], x[2] - origin_[2]};
+    V3 p(x[0] - origin_[0], x[1] - origin_[1], x[2] - origin_[2]);
     if (scale_ != 0.0) {
       const Vec3& d = (*u_)[node];
-      p = p + scale_ * V3{d[0], d[1], d[2]};
+      p += scale_ * V3(d[0], d[1], d[2]);
     }
     return p;
   }
@@ -45,9 +38,9 @@ class Placement {
   double scale_;
 };
 
-Vertex make_vertex(V3 p, V3 n, const Rgb& c, float t) {
-  return Vertex{{float(p.x), float(p.y), float(p.z)},
-                {float(n.x), float(n.y), float(n.z)},
+Vertex make_vertex(const V3& p, const V3& n, const Rgb& c, float t) {
+  return Vertex{{float(p.x()), float(p.y()), float(p.z())},
+                {float(n.x()), float(n.y()), float(n.z())},
                 {c.r, c.g, c.b},
                 t};
 }
@@ -84,10 +77,10 @@ std::uint32_t edge_vertex(const EdgeRef& r, int i) {
 V3 edge_mid_normal(const FrameGeometry& g, const EdgeRef& r) {
   const auto normal = [&](int i) {
     const float* n = g.face_vertices[edge_vertex(r, i)].normal;
-    return V3{n[0], n[1], n[2]};
+    return V3(n[0], n[1], n[2]);
   };
   const int n = r.segments;
-  return n % 2 == 0 ? normal(n / 2) : normal((n - 1) / 2) + normal((n + 1) / 2);
+  return n % 2 == 0 ? normal(n / 2) : V3(normal((n - 1) / 2) + normal((n + 1) / 2));
 }
 
 void add_polyline(const FrameGeometry& g, const EdgeRef& r, const Rgb& color,
@@ -152,38 +145,41 @@ class LayerTessellator {
       if (field->location == FieldLocation::Element) element_value = field->values[sf.element];
     }
     // Fallback normal for degenerate grid points (a triangle's repeated corner).
-    V3 face_normal = cross(corner[3] - corner[1], corner[2] - corner[0]);
-    const double face_len = norm(face_normal);
-    if (face_len > 0) face_normal = (1.0 / face_len) * face_normal;
+    V3 face_normal = (corner[3] - corner[1]).cross(corner[2] - corner[0]);
+    const double face_len = face_normal.norm();
+    if (face_len > 0) face_normal /= face_len;
     // Triangles turn clockwise seen from outside the element: in the face's node order when the
     // corners' normal points out of the element, reversed otherwise (formulations differ).
-    const double outwards =
-        dot(face_normal,
-            0.25 * (corner[0] + corner[1] + corner[2] + corner[3]) - element_centre(sf.element));
+    const double outwards = face_normal.dot(0.25 * (corner[0] + corner[1] + corner[2] + corner[3]) -
+                                            element_centre(sf.element));
     const bool reverse = outwards < 0;
     if (outwards == 0) oriented_ = false;
 
     const int n = patch.segments;
     const auto base = static_cast<std::uint32_t>(g_.face_vertices.size());
     for (int p = 0; p < patch.points(); ++p) {
-      V3 x, ds, dt;
+      V3 x = V3::Zero(), ds = V3::Zero(), dt = V3::Zero();
       double value = element_value;
       const double* N = &patch.N[p * count];
       const double* Ns = &patch.dNds[p * count];
       const double* Nt = &patch.dNdt[p * count];
       for (std::size_t a = 0; a < count; ++a) {
-        x = x + N[a] * local_x_[a];
-        ds = ds + Ns[a] * local_x_[a];
-        dt = dt + Nt[a] * local_x_[a];
+        x += N[a] * local_x_[a];
+        ds += Ns[a] * local_x_[a];
+        dt += Nt[a] * local_x_[a];
         if (field_varies && !discrete) value += N[a] * local_v_[a];
       }
       if (discrete)
         value =
             nearest_value(shape, conn, *field, double(p % (n + 1)) / n, double(p / (n + 1)) / n);
-      V3 normal = cross(dt, ds);  // face nodes circle with the normal into the element: flip it out
-      const double len = norm(normal);
-      normal =
-          len > 1e-12 * (dot(ds, ds) + dot(dt, dt)) && len > 0 ? (1.0 / len) * normal : face_normal;
+      // dt x ds points out of the element when the face lists its corners with the normal into
+      // it (hexahedra, tetrahedra); a face listed the other way round (wedge faces 2-5) is
+      // reversed, and so is its normal.
+      V3 normal = (reverse ? -1.0 : 1.0) * dt.cross(ds);
+      const double len = normal.norm();
+      normal = len > 1e-12 * (ds.squaredNorm() + dt.squaredNorm()) && len > 0
+                   ? V3(normal / len)
+                   : V3((reverse ? -1.0 : 1.0) * face_normal);
       const float t = field ? static_cast<float>(rq_.colors->normalized(value)) : -1.0f;
       g_.face_vertices.push_back(make_vertex(x, normal, color, t));
     }
@@ -224,9 +220,9 @@ class LayerTessellator {
   V3 element_centre(int element) const {
     const int* conn = skin_.model().element_nodes(element);
     const int count = skin_.model().elements[element].node_count;
-    V3 sum;
-    for (int k = 0; k < count; ++k) sum = sum + place_(conn[k]);
-    return (1.0 / count) * sum;
+    V3 sum = V3::Zero();
+    for (int k = 0; k < count; ++k) sum += place_(conn[k]);
+    return sum / count;
   }
 
   // A face with only corners is bilinear; a higher-order face is drawn subdivided when a field
@@ -236,12 +232,12 @@ class LayerTessellator {
                     bool field_varies) const {
     if (shape.curved_segments == 1) return false;
     if (field_varies) return true;
-    const double tolerance = 1e-4 * (norm(c[2] - c[0]) + norm(c[3] - c[1]));
+    const double tolerance = 1e-4 * ((c[2] - c[0]).norm() + (c[3] - c[1]).norm());
     for (std::size_t k = 0; k < shape.extra_nodes.size(); ++k) {
       const double s = shape.extra_st[k][0], t = shape.extra_st[k][1];
       const V3 bilinear =
           (1 - s) * (1 - t) * c[0] + s * (1 - t) * c[1] + s * t * c[2] + (1 - s) * t * c[3];
-      if (norm(place_(conn[shape.extra_nodes[k]]) - bilinear) > tolerance) return true;
+      if ((place_(conn[shape.extra_nodes[k]]) - bilinear).norm() > tolerance) return true;
     }
     return false;
   }
@@ -334,8 +330,8 @@ bool emit_edges(FrameGeometry& g, std::vector<EdgeRef>& edges, const Rgb& color,
     if (feature || edges[k].forward == edges[k + 1].forward) closed = false;
     if (!feature) {
       const V3 n0 = edge_mid_normal(g, edges[k]), n1 = edge_mid_normal(g, edges[k + 1]);
-      const double l0 = norm(n0), l1 = norm(n1);
-      feature = l0 > 0 && l1 > 0 && dot(n0, n1) / (l0 * l1) < crease_cos;
+      const double l0 = n0.norm(), l1 = n1.norm();
+      feature = l0 > 0 && l1 > 0 && n0.dot(n1) / (l0 * l1) < crease_cos;
     }
     if (feature) add_polyline(g, edges[k], color, g.features);
     k = end;
@@ -447,7 +443,7 @@ FrameGeometry build_geometry(const SkinModel& skin, const GeometryRequest& rq) {
       float t = -1.0f;
       if (rq.field && rq.field->location == FieldLocation::Node && rq.field->defined_at(node))
         t = static_cast<float>(rq.colors->normalized(rq.field->values[node]));
-      g.points.push_back(make_vertex(place(node), V3{}, layer.color, t));
+      g.points.push_back(make_vertex(place(node), V3::Zero(), layer.color, t));
     }
   }
   if (rq.outline) {
@@ -489,20 +485,16 @@ bool face_carries(const SkinModel& skin, const ScalarField& field, const SkinFac
     return false;
   // The corners' normal, turned away from the element's centre.
   const FaceShape& shape = skin.shapes().get(skin.formulations()[face.element], face.face);
-  const auto at = [&](int local) {
-    const Vec3& x = model.coords[conn[local]];
-    return V3{x[0], x[1], x[2]};
-  };
-  const V3 c0 = at(shape.corners[0]), c1 = at(shape.corners[1]), c2 = at(shape.corners[2]),
-           c3 = at(shape.corners[3]);
-  V3 normal = cross(c2 - c0, c3 - c1);
-  V3 centre;
+  const auto at = [&](int local) -> Eigen::Vector3d { return as_eigen(model.coords[conn[local]]); };
+  const Eigen::Vector3d c0 = at(shape.corners[0]), c1 = at(shape.corners[1]),
+                        c2 = at(shape.corners[2]), c3 = at(shape.corners[3]);
+  Eigen::Vector3d normal = (c2 - c0).cross(c3 - c1);
+  Eigen::Vector3d centre = Eigen::Vector3d::Zero();
   const int count = model.elements[face.element].node_count;
-  for (int k = 0; k < count; ++k) centre = centre + (1.0 / count) * at(k);
-  if (dot(normal, 0.25 * (c0 + c1 + c2 + c3) - centre) < 0) normal = -1.0 * normal;
-  const double length = norm(normal);
-  const Vec3 outward =
-      length > 0 ? Vec3{normal.x / length, normal.y / length, normal.z / length} : Vec3{0, 0, 0};
+  for (int k = 0; k < count; ++k) centre += at(k) / count;
+  if (normal.dot(0.25 * (c0 + c1 + c2 + c3) - centre) < 0) normal = -normal;
+  const double length = normal.norm();
+  const Vec3 outward = length > 0 ? to_vec3(normal / length) : Vec3{0, 0, 0};
   return field.carries(face.element, face.face, nodes, outward);
 }
 

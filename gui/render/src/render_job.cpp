@@ -90,17 +90,19 @@ DeformSpec parse_deform(const std::string& text) {
   return spec;
 }
 
-RenderJob::RenderJob(const Model& model, const ElementRegistry& registry,
+RenderJob::RenderJob(const Model& section, const ElementRegistry& registry,
                      const IncrementResult* increment, RenderOptions options)
-    : model_(model), increment_(increment), options_(std::move(options)) {
+    : model_(&section), increment_(increment), options_(std::move(options)) {
   check_options();
   typeface_ = std::make_unique<Typeface>();
+  std::unique_ptr<ScalarField> section_field = revolve(section, registry);
+  const Model& model = *model_;
   skin_ =
       std::make_unique<SkinModel>(model, registry, make_layers(model, options_), options_.filter);
   if (skin_->visible_nodes().empty())
     throw InputError({},
                      "nothing to draw: the shown layers and the element filter select no element");
-  evaluate_fields();
+  evaluate_fields(std::move(section_field));
 
   // A steady heat / electric-potential increment has no displacements: the automatic default
   // draws it undeformed (an explicit factor still asks for U and is refused below).
@@ -162,7 +164,7 @@ void RenderJob::check_options() const {
   if (o.unroll_axis && !o.unroll) throw InputError({}, "--unroll-axis needs --unroll");
 }
 
-void RenderJob::evaluate_fields() {
+void RenderJob::evaluate_fields(std::unique_ptr<ScalarField> revolved) {
   if (options_.field.empty()) return;
   if (!increment_)
     throw InputError({}, "field '" + options_.field +
@@ -173,12 +175,15 @@ void RenderJob::evaluate_fields() {
     if (!options_.contact_pair.empty())
       throw InputError({}, "--contact-pair applies to contact fields, not to --ip-values");
     point_field_ =
-        std::make_unique<PointField>(evaluate_point_field(model_, *increment_, options_.field));
+        std::make_unique<PointField>(evaluate_point_field(*model_, *increment_, options_.field));
     range = point_field_range(*skin_, *point_field_);
     colors_ = ColorScale{range[0], range[1], options_.bands, options_.smooth};
   } else {
-    field_ = std::make_unique<ScalarField>(evaluate_field(
-        model_, *increment_, options_.field, options_.averaging, options_.contact_pair));
+    field_ = revolved ? std::move(revolved)
+                      : std::make_unique<ScalarField>(evaluate_field(*model_, *increment_,
+                                                                     options_.field,
+                                                                     options_.averaging,
+                                                                     options_.contact_pair));
     if (!options_.contact_pair.empty() && field_->defined.empty())
       throw InputError({},
                        "--contact-pair applies to contact fields (CPRESS, CSHEAR, CSLIP, "
@@ -230,7 +235,7 @@ Camera RenderJob::fit(const PixelRect& area) const {
   const Vec3 c = skin_->centre();
   for (int n : skin_->visible_nodes()) {
     if (field_faces_only_ && !field_->defined_at(n)) continue;  // only those faces are drawn
-    const Vec3& x = model_.coords[n];
+    const Vec3& x = model_->coords[n];
     grow_bounds(lo, hi, Vec3{x[0] - c[0], x[1] - c[1], x[2] - c[2]});
     if (scale_ > 0) {
       const Vec3& u = increment_->U[n];
@@ -299,10 +304,46 @@ void RenderJob::build_map() {
   add_map_axes(overlay_, *typeface_, camera_, *unrolled_, options_.height);
 }
 
+std::unique_ptr<ScalarField> RenderJob::revolve(const Model& section,
+                                                const ElementRegistry& registry) {
+  if (!(options_.revolve_degrees > 0)) return nullptr;
+  const ElementFilter all;
+  if (!options_.layers.empty() || options_.filter.id_min != all.id_min ||
+      options_.filter.id_max != all.id_max || !options_.filter.types.empty())
+    throw InputError({}, "layers and element filters name the section's elements: they cannot "
+                         "be combined with a revolved picture");
+  if (options_.unroll || options_.ip_values || !options_.contact_pair.empty())
+    throw InputError({}, "--unroll, --ip-values and --contact-pair draw the section's own "
+                         "elements: they cannot be combined with a revolved picture");
+  // The field is evaluated on the section, with its own elements' stress recovery, then carried
+  // round.
+  std::unique_ptr<ScalarField> field;
+  if (!options_.field.empty() && increment_)
+    field = std::make_unique<ScalarField>(
+        evaluate_field(section, *increment_, options_.field, options_.averaging));
+  const int segments = options_.revolve_segments > 0
+                           ? options_.revolve_segments
+                           : std::max(1, static_cast<int>(std::ceil(options_.revolve_degrees / 15.0)));
+  revolved_ = std::make_unique<RevolvedModel>(
+      revolve_axisymmetric(section, registry, increment_, options_.revolve_degrees, segments));
+  if (field) *field = revolve_field(*field, section, *revolved_);
+  if (increment_) {
+    revolved_increment_ = std::make_unique<IncrementResult>();
+    revolved_increment_->step = increment_->step;
+    revolved_increment_->increment = increment_->increment;
+    revolved_increment_->step_time = increment_->step_time;
+    revolved_increment_->total_time = increment_->total_time;
+    revolved_increment_->U = revolved_->U;
+    increment_ = revolved_increment_.get();
+  }
+  model_ = &revolved_->model;
+  return field;
+}
+
 std::vector<std::string> RenderJob::title_lines() const {
   std::vector<std::string> lines;
   const std::string name = !options_.model_name.empty() ? options_.model_name
-                           : !model_.source.empty()     ? base_name(model_.source)
+                           : !model_->source.empty()    ? base_name(model_->source)
                                                         : std::string("(unnamed model)");
   lines.push_back("Model: " + name);
   if (increment_) {
@@ -339,8 +380,8 @@ std::vector<std::string> RenderJob::title_lines() const {
                          ? "  (scale " + format(colors_.min) + " to " + format(colors_.max) + ")"
                          : std::string()));
   } else {
-    lines.push_back("Mesh: " + std::to_string(model_.elements.size()) + " elements, " +
-                    std::to_string(model_.coords.size()) + " nodes");
+    lines.push_back("Mesh: " + std::to_string(model_->elements.size()) + " elements, " +
+                    std::to_string(model_->coords.size()) + " nodes");
   }
   if (unrolled_) {
     char buffer[200];

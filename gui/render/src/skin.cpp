@@ -5,6 +5,8 @@
 #include <cmath>
 #include <map>
 
+#include <Eigen/Core>
+
 #include "styk/core/diagnostics.hpp"
 
 namespace styk::render {
@@ -19,23 +21,18 @@ struct FaceCorners {
 
 bool inside_triangle(const Vec3& p, const Vec3& a, const Vec3& b, const Vec3& c) {
   // Barycentric test in the plane of the triangle (natural coordinates are exact small numbers).
-  const auto sub = [](const Vec3& u, const Vec3& v) {
-    return Vec3{u[0] - v[0], u[1] - v[1], u[2] - v[2]};
-  };
-  const auto dot = [](const Vec3& u, const Vec3& v) {
-    return u[0] * v[0] + u[1] * v[1] + u[2] * v[2];
-  };
-  const Vec3 v0 = sub(c, a), v1 = sub(b, a), v2 = sub(p, a);
-  const double d00 = dot(v0, v0), d01 = dot(v0, v1), d02 = dot(v0, v2), d11 = dot(v1, v1),
-               d12 = dot(v1, v2);
+  using V = Eigen::Map<const Eigen::Vector3d>;
+  const Eigen::Vector3d v0 = V(c.data()) - V(a.data()), v1 = V(b.data()) - V(a.data()),
+                        v2 = V(p.data()) - V(a.data());
+  const double d00 = v0.dot(v0), d01 = v0.dot(v1), d02 = v0.dot(v2), d11 = v1.dot(v1),
+               d12 = v1.dot(v2);
   const double denom = d00 * d11 - d01 * d01;
   if (std::abs(denom) < 1e-14) return false;
   const double u = (d11 * d02 - d01 * d12) / denom, v = (d00 * d12 - d01 * d02) / denom;
   const double eps = 1e-9;
   // Also require p to lie in the plane: the residual of the projection.
-  const Vec3 r = {a[0] + u * v0[0] + v * v1[0] - p[0], a[1] + u * v0[1] + v * v1[1] - p[1],
-                  a[2] + u * v0[2] + v * v1[2] - p[2]};
-  return u >= -eps && v >= -eps && u + v <= 1.0 + eps && dot(r, r) < 1e-18;
+  const Eigen::Vector3d r = u * v0 + v * v1 - v2;
+  return u >= -eps && v >= -eps && u + v <= 1.0 + eps && r.squaredNorm() < 1e-18;
 }
 
 FaceCorners face_corners(const TElement& element) {
@@ -73,11 +70,8 @@ int face_corner_count(const TElement& element, const FaceDef& face) {
 }
 
 bool is_planar_element(const TElement& element) {
-  const std::vector<Vec3>& xi = element.natural_nodes();
-  if (element.faces().empty() || xi.size() < 3) return false;
-  for (const FaceDef& face : element.faces())
-    if (face.nodes.size() > 3) return false;  // a solid's faces have 3 corners or more
-  return std::all_of(xi.begin(), xi.end(), [](const Vec3& p) { return p[2] == 0.0; });
+  const ElementForm form = element.form();
+  return form == ElementForm::Planar || form == ElementForm::Axisymmetric;
 }
 
 std::vector<FaceDef> drawn_faces(const TElement& element) {
@@ -89,10 +83,7 @@ std::vector<FaceDef> drawn_faces(const TElement& element) {
   return faces;
 }
 
-bool is_line_element(const TElement& element) {
-  const int nodes = element.node_count();
-  return element.faces().empty() && (nodes == 2 || nodes == 3);
-}
+bool is_line_element(const TElement& element) { return element.form() == ElementForm::Line; }
 
 std::vector<int> line_node_order(const TElement& element) {
   const std::vector<Vec3>& xi = element.natural_nodes();

@@ -71,7 +71,7 @@ Eigen::VectorXd incompatible_modes(const TElement& element, const ElementGeometr
   Eigen::MatrixXd Kaa = Eigen::MatrixXd::Zero(m, m), Kau = Eigen::MatrixXd::Zero(m, 3 * n);
   for (int q = 0; q < rule.size(); ++q) {
     element.der(rule.points[q], N, dN);
-    const double detJ = element.point_measure(g, dN, dNdx, q + 1);
+    const double detJ = element.point_measure(g, N, dN, dNdx, q + 1);
     element.bee(dNdx, B);
     element.incompatible_bee(g, rule.points[q], detJ, G);
     const double w = rule.weights[q] * detJ;
@@ -129,7 +129,7 @@ double relative_l2_error(const Model& model, const IncrementResult& r,
     Eigen::MatrixXd dN(n, 3), dNdx(n, 3);
     for (int q = 0; q < rule.size(); ++q) {
       element.der(rule.points[q], N, dN);
-      const double w = rule.weights[q] * element.point_measure(g, dN, dNdx, q + 1);
+      const double w = rule.weights[q] * element.point_measure(g, N, dN, dNdx, q + 1);
       const Vec3 x = detail::map_point(N, g);
       if (exact.scalar()) {
         double t = 0;
@@ -177,7 +177,7 @@ double relative_energy_error(const Model& model, const IncrementResult& r,
     }
     for (int q = 0; q < rule.size(); ++q) {
       element.der(rule.points[q], N, dN);
-      const double detJ = element.point_measure(g, dN, dNdx, q + 1);
+      const double detJ = element.point_measure(g, N, dN, dNdx, q + 1);
       const double w = rule.weights[q] * detJ;
       const Vec3 x = detail::map_point(N, g);
       if (exact.scalar()) {

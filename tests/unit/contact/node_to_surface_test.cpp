@@ -68,10 +68,9 @@ TEST_P(NodeToSurfaceGeometry, ProjectionRecoversPointsOffTheCurvedFace) {
   for (const double p0 : {-0.9, -0.35, 0.0, 0.6, 1.0})
     for (const double q0 : {-1.0, -0.2, 0.45})
       for (const double h : {0.0, 0.08, -0.05}) {
-        const Vec3 xi = face_point(f.element->faces()[f.face], p0, q0);
         Eigen::Vector3d x, xp, xq;
-        face_map(f, xi, x, xp, xq);
-        const Eigen::Vector3d n = outward_normal(f, xi);
+        face_map(f, p0, q0, x, xp, xq);
+        const Eigen::Vector3d n = outward_normal(f, p0, q0);
         const Projection pr = project_on_face(f, x + h * n);
         ASSERT_TRUE(pr.converged) << p0 << ", " << q0 << ", " << h;
         EXPECT_NEAR(pr.p, p0, 1e-10);
@@ -121,12 +120,12 @@ TEST_P(NodeToSurfaceGeometry, CurvedFaceStaysWithinTheQuadraticInterpolationBoun
   double worst_position = 0.0, worst_normal = 0.0;
   for (int i = 0; i <= 20; ++i)
     for (int j = 0; j <= 4; ++j) {
-      const Vec3 xi = face_point(f.element->faces()[f.face], -1.0 + 0.1 * i, -1.0 + 0.5 * j);
+      const double p = -1.0 + 0.1 * i, q = -1.0 + 0.5 * j;
       Eigen::Vector3d x, xp, xq;
-      face_map(f, xi, x, xp, xq);
+      face_map(f, p, q, x, xp, xq);
       const double r = std::hypot(x[0], x[1]);
       worst_position = std::max(worst_position, std::abs(r - kRadius));
-      const Eigen::Vector3d n = outward_normal(f, xi);
+      const Eigen::Vector3d n = outward_normal(f, p, q);
       const Eigen::Vector3d exact = radial(std::atan2(x[1], x[0]));
       worst_normal = std::max(worst_normal, std::acos(std::min(1.0, n.dot(exact))));
     }

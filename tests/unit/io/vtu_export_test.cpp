@@ -8,9 +8,11 @@
 #include <cstdint>
 #include <cstring>
 #include <map>
+#include <memory>
 #include <stdexcept>
 
 #include "io_test_support.hpp"
+#include "styk/elements/builtin.hpp"
 #include "styk/io/vtu_export.hpp"
 
 namespace styk {
@@ -117,8 +119,55 @@ bool has_array(const std::vector<XmlElement>& doc, const std::string& name) {
   }
 }
 
-// Two C3D8 sharing a face (nodes on a 3 x 2 x 2 grid), an element type with no VTK cell, and a
-// T3D3 (whose middle node moves to the end in VTK order).
+// A 3-node bar registered by the test, as a plug-in would: its middle node is numbered second
+// (Abaqus), so its VTK cell (a quadratic edge, middle node last) reorders the nodes.
+class Bar3 : public TElement {
+ public:
+  std::string name() const override { return "BAR3"; }
+  std::string description() const override { return "test bar"; }
+  int node_count() const override { return 3; }
+  const std::vector<Vec3>& natural_nodes() const override { return nodes_; }
+  const std::vector<FaceDef>& faces() const override { return faces_; }
+  void der(const Vec3&, Eigen::Ref<Eigen::VectorXd>, Eigen::Ref<Eigen::MatrixXd>) const override {}
+  IntegrationRule rule(RuleKind) const override { return {}; }
+  int face_rule_order() const override { return 1; }
+  VtkCell vtk_cell() const override { return {vtk::kQuadraticEdge, {0, 2, 1}}; }
+
+ private:
+  std::vector<Vec3> nodes_{{-1, 0, 0}, {0, 0, 0}, {1, 0, 0}};
+  std::vector<FaceDef> faces_;
+};
+
+// A 5-node solid that describes no VTK cell (its corners make no cell the default knows).
+class Pyramid5 : public TElement {
+ public:
+  std::string name() const override { return "PYR5"; }
+  std::string description() const override { return "test pyramid"; }
+  int node_count() const override { return 5; }
+  const std::vector<Vec3>& natural_nodes() const override { return nodes_; }
+  const std::vector<FaceDef>& faces() const override { return faces_; }
+  void der(const Vec3&, Eigen::Ref<Eigen::VectorXd>, Eigen::Ref<Eigen::MatrixXd>) const override {}
+  IntegrationRule rule(RuleKind) const override { return {}; }
+  int face_rule_order() const override { return 1; }
+
+ private:
+  std::vector<Vec3> nodes_{{-1, -1, 0}, {1, -1, 0}, {1, 1, 0}, {-1, 1, 0}, {0, 0, 1}};
+  std::vector<FaceDef> faces_{FaceDef{{0, 1, 2, 3}}};
+};
+
+const ElementRegistry& test_registry() {
+  static const ElementRegistry registry = [] {
+    ElementRegistry r;
+    register_builtin_elements(r);
+    r.add(std::make_unique<Bar3>(), "test plug-in");
+    r.add(std::make_unique<Pyramid5>(), "test plug-in");
+    return r;
+  }();
+  return registry;
+}
+
+// Two C3D8 (plain and reduced) sharing a face, nodes on a 3 x 2 x 2 grid, and a plug-in's 3-node
+// bar.
 Model two_hex_model() {
   Model model;
   for (int k = 0; k < 2; ++k)
@@ -126,9 +175,8 @@ Model two_hex_model() {
       for (int i = 0; i < 3; ++i)
         model.add_node(100 + model.node_count(), {1.0 * i, 1.0 * j, 1.0 * k}, {});
   model.add_element(1, "C3D8", {0, 1, 4, 3, 6, 7, 10, 9}, {});
-  model.add_element(2, "C3D99", {0, 1, 2}, {});
   model.add_element(3, "C3D8R", {1, 2, 5, 4, 7, 8, 11, 10}, {});
-  model.add_element(4, "T3D3", {0, 1, 2}, {});
+  model.add_element(4, "BAR3", {0, 1, 2}, {});
   return model;
 }
 
@@ -139,7 +187,7 @@ IncrementResult two_hex_results(const Model& model) {
     inc.U.push_back({1.0 * n, 2.0 * n, 3.0 * n});
     inc.RF.push_back({0.0, -1.0 * n, 0.0});
   }
-  inc.ip_offset = {0, 8, 8, 10, 11};
+  inc.ip_offset = {0, 8, 10, 11};
   for (int p = 0; p < 8; ++p) inc.S.push_back({1.0 * p, 0, 0, 0, 0, 0});
   inc.S.push_back({10, 0, 0, 1, 2, 3});
   inc.S.push_back({20, 0, 0, 1, 2, 3});
@@ -147,24 +195,65 @@ IncrementResult two_hex_results(const Model& model) {
   return inc;
 }
 
-TEST(VtuExport, CellTypesOfKnownElements) {
-  EXPECT_EQ(vtk_cell_type_for("C3D8"), 12);
-  EXPECT_EQ(vtk_cell_type_for("C3D8I"), 12);
-  EXPECT_EQ(vtk_cell_type_for("C3D20"), 25);
-  EXPECT_EQ(vtk_cell_type_for("C3D20R"), 25);
-  EXPECT_EQ(vtk_cell_type_for("CPS4"), 9);
-  EXPECT_EQ(vtk_cell_type_for("CPE8"), 23);
-  EXPECT_EQ(vtk_cell_type_for("T3D2"), 3);
-  EXPECT_EQ(vtk_cell_type_for("C3D99"), -1);
+// The built-in types describe their cells themselves (TElement::vtk_cell()).
+TEST(VtuExport, BuiltInTypesDescribeTheirCells) {
+  const ElementRegistry& r = test_registry();
+  const std::map<std::string, int> expected = {
+      {"C3D8", vtk::kHexahedron},          {"C3D8I", vtk::kHexahedron},
+      {"C3D8R", vtk::kHexahedron},         {"C3D20", vtk::kQuadraticHexahedron},
+      {"C3D20R", vtk::kQuadraticHexahedron}, {"C3D27", vtk::kQuadraticHexahedron},
+      {"CPS4", vtk::kQuad},                {"CPE8", vtk::kQuadraticQuad},
+      {"T3D2", vtk::kLine}};
+  for (const auto& [type, cell] : expected) {
+    EXPECT_EQ(r.find(type)->vtk_cell().type, cell) << type;
+  }
+  // Every registered type has a cell.
+  for (const std::string& type : r.names()) {
+    if (type != "PYR5") {
+      EXPECT_GT(r.find(type)->vtk_cell().type, 0) << type;
+    }
+  }
+}
+
+// A type nobody registered is not skipped: the export stops at the element's line, names the
+// type, and writes no file.
+TEST(VtuExport, UnknownTypeIsRefusedByNameAndNothingIsWritten) {
+  Model model = two_hex_model();
+  model.add_element(7, "C3D99", {0, 1, 2}, {"deck.inp", 42});
+  const std::string path = io_test::fresh_dir("vtu_unknown") + "/unknown.vtu";
+  try {
+    write_vtu(path, model, test_registry(), nullptr);
+    FAIL() << "no error";
+  } catch (const InputError& e) {
+    EXPECT_NE(std::string(e.what()).find("deck.inp:42"), std::string::npos) << e.what();
+    EXPECT_NE(std::string(e.what()).find("element 7 has type C3D99"), std::string::npos)
+        << e.what();
+  }
+  EXPECT_FALSE(io_test::file_exists(path));
+  EXPECT_FALSE(io_test::file_exists(path + ".tmp"));
+}
+
+TEST(VtuExport, TypeWithoutACellIsRefusedByName) {
+  Model model = two_hex_model();
+  model.add_element(8, "PYR5", {0, 1, 4, 3, 7}, {"deck.inp", 43});
+  const std::string path = io_test::fresh_dir("vtu_nocell") + "/nocell.vtu";
+  try {
+    write_vtu(path, model, test_registry(), nullptr);
+    FAIL() << "no error";
+  } catch (const InputError& e) {
+    EXPECT_NE(std::string(e.what()).find("element 8 (PYR5) describes no VTK cell"),
+              std::string::npos)
+        << e.what();
+  }
+  EXPECT_FALSE(io_test::file_exists(path));
 }
 
 TEST(VtuExport, WritesMeshAndIncrementThatParseBack) {
   const Model model = two_hex_model();
   const IncrementResult inc = two_hex_results(model);
   const std::string path = io_test::fresh_dir("vtu") + "/two.vtu";
-  const VtuExportSummary summary = write_vtu(path, model, &inc);
+  const VtuExportSummary summary = write_vtu(path, model, test_registry(), &inc);
   EXPECT_EQ(summary.cells_written, 3);
-  EXPECT_EQ(summary.skipped_by_type, (std::map<std::string, int>{{"C3D99", 1}}));
   EXPECT_FALSE(io_test::file_exists(path + ".tmp"));
 
   const std::vector<XmlElement> doc = scan_xml(io_test::read_text(path));
@@ -185,7 +274,7 @@ TEST(VtuExport, WritesMeshAndIncrementThatParseBack) {
   EXPECT_EQ(decode_array<std::int64_t>(data_array(doc, "connectivity")),
             (std::vector<std::int64_t>{0, 1, 4, 3, 6, 7, 10, 9,   // C3D8
                                        1, 2, 5, 4, 7, 8, 11, 10,  // C3D8R
-                                       0, 2, 1}));                // T3D3, middle node last
+                                       0, 2, 1}));                // BAR3, middle node last
   EXPECT_EQ(decode_array<std::int64_t>(data_array(doc, "element_id")),
             (std::vector<std::int64_t>{1, 3, 4}));
   const std::vector<double> points = decode_array<double>(data_array(doc, "Points"));
@@ -233,7 +322,7 @@ TEST(VtuExport, WritesNodalStressesAndContactPointData) {
   inc.contact = {a, b, c};
 
   const std::string path = io_test::fresh_dir("vtu_nodal") + "/nodal.vtu";
-  write_vtu(path, model, &inc);
+  write_vtu(path, model, test_registry(), &inc);
   const std::vector<XmlElement> doc = scan_xml(io_test::read_text(path));
 
   const std::vector<double> s1 = decode_array<double>(data_array(doc, "S_nodal_I"));
@@ -279,7 +368,7 @@ TEST(VtuExport, WritesNodalStressesAndContactPointData) {
 
 TEST(VtuExport, MeshOnlyHasNoResultArrays) {
   const std::string path = io_test::fresh_dir("vtu_mesh") + "/mesh.vtu";
-  const VtuExportSummary summary = write_vtu(path, two_hex_model(), nullptr);
+  const VtuExportSummary summary = write_vtu(path, two_hex_model(), test_registry(), nullptr);
   EXPECT_EQ(summary.cells_written, 3);
   const std::vector<XmlElement> doc = scan_xml(io_test::read_text(path));
   EXPECT_FALSE(has_array(doc, "U"));
@@ -295,7 +384,7 @@ TEST(VtuExport, MismatchedResultsThrowAndWriteNothing) {
   IncrementResult inc = two_hex_results(model);
   inc.U.resize(5);
   const std::string path = io_test::fresh_dir("vtu_bad") + "/bad.vtu";
-  EXPECT_THROW(write_vtu(path, model, &inc), std::runtime_error);
+  EXPECT_THROW(write_vtu(path, model, test_registry(), &inc), std::runtime_error);
   EXPECT_FALSE(io_test::file_exists(path));
   EXPECT_FALSE(io_test::file_exists(path + ".tmp"));
 }

@@ -47,8 +47,8 @@ TEST(Interface, SplitGivesCoincidentPairsAndFacingSurfaces) {
   EXPECT_EQ(test::conformity_problem(model, elements.registry), "");
   EXPECT_EQ(test::free_nodes(model), 0);
   // The interface faces convert to C3D21 on both sides (the thesis' contact layers).
-  convert_layer_to_c3d21(mesh, "CONTACT_A");
-  convert_layer_to_c3d21(mesh, "CONTACT_B");
+  convert_elements(mesh, elements.registry, "C3D21", "CONTACT_A");
+  convert_elements(mesh, elements.registry, "C3D21", "CONTACT_B");
   EXPECT_GT(test::volume(to_model(mesh), elements.registry), 7.999);
   EXPECT_THROW(split_interface(mesh, "NOPE", "X"), std::invalid_argument);
 }

@@ -46,13 +46,19 @@ std::string conformity_problem(const Model& model, const ElementRegistry& regist
     int element;
     std::vector<int> nodes;
   };
-  std::map<std::array<int, 4>, std::vector<Use>> faces;
+  // Faces keyed by their corner nodes (those of the element's corners on the face: 4 on a brick
+  // face, 3 on a triangle).
+  std::map<std::vector<int>, std::vector<Use>> faces;
   for (int e = 0; e < model.element_count(); ++e) {
     const TElement& t = *registry.find(model.elements[e].type);
+    const std::vector<int> element_corners = corner_nodes(t);
     for (const FaceDef& f : t.faces()) {
-      std::vector<int> nodes;
-      for (int local : f.nodes) nodes.push_back(model.element_nodes(e)[local]);
-      std::array<int, 4> corners{nodes[0], nodes[1], nodes[2], nodes[3]};
+      std::vector<int> nodes, corners;
+      for (int local : f.nodes) {
+        nodes.push_back(model.element_nodes(e)[local]);
+        if (std::binary_search(element_corners.begin(), element_corners.end(), local))
+          corners.push_back(model.element_nodes(e)[local]);
+      }
       std::sort(corners.begin(), corners.end());
       std::sort(nodes.begin(), nodes.end());
       faces[corners].push_back({e, nodes});

@@ -270,7 +270,7 @@ TEST(RotationDofs, RotationsAndMomentsReachEveryOutput) {
       << text;
 
   const std::filesystem::path vtu = scratch("outputs.vtu");
-  write_vtu(vtu.string(), model, &results.increments[0]);
+  write_vtu(vtu.string(), model, loaded->registry, &results.increments[0]);
   std::ifstream in(vtu);
   const std::string xml((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
   EXPECT_NE(xml.find("Name=\"UR\""), std::string::npos);

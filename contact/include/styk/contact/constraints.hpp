@@ -71,9 +71,6 @@ std::vector<ContactConstraint> build_contact_constraints(const Model& model,
                                                          const ElementRegistry& registry,
                                                          std::vector<std::string>* notes);
 
-// The unit vectors of orientation `axes` at point x: columns 1, 2, 3 of the local system.
-Eigen::Matrix3d local_axes_at(const LocalAxes& axes, const Eigen::Vector3d& x);
-
 // A tangent frame (t1, t2) for unit normal n: t1 is `preferred` projected on the tangent plane
 // (when it is not nearly parallel to n; otherwise the global axis least aligned with n), and
 // t2 = n x t1.

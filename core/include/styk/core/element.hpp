@@ -41,12 +41,14 @@
 #pragma once
 
 #include <array>
+#include <optional>
 #include <string>
 #include <vector>
 
 #include <Eigen/Core>
 
 #include "styk/core/constitutive.hpp"
+#include "styk/core/element_description.hpp"
 #include "styk/core/model.hpp"
 
 namespace styk {
@@ -80,10 +82,13 @@ struct IntegrationRule {
   int size() const { return static_cast<int>(weights.size()); }
 };
 
-// A face of the reference element: the element-local node indices on it (corners first, in the
-// Abaqus face order, which circles the face with the normal pointing INTO the element), and the
-// natural coordinate it lies on (axis 0/1/2 = xi/eta/zeta, value -1 or +1). Normals are computed
-// from axis/value, never from the node order.
+// A face of the reference element: the element-local node indices on it (corners first, going
+// round the face, then the other face nodes), and where it lies. A face on a coordinate plane of
+// the reference cube or square gives that plane: axis 0/1/2 = xi/eta/zeta, value -1 or +1
+// (hexahedra, the edges of quadrilaterals). Any other face (tetrahedra, wedges) has axis = -1:
+// it is parametrised from its corners' natural coordinates (face_param.hpp: a triangle for 3
+// corners, a bilinear quadrilateral for 4). Normals never depend on the node order: for axis >= 0
+// they follow axis/value, for axis = -1 the side away from the element's natural centroid.
 struct FaceDef {
   std::vector<int> nodes;
   int axis = 2;
@@ -127,6 +132,19 @@ class TElement {
   // pressure on face Sk) by default; beams: P1, P2 (force per length along section axes 1, 2).
   virtual int distributed_load_labels() const { return static_cast<int>(faces().size()); }
 
+  // --- self-description (element_description.hpp): what the element models, how it is exported
+  // and how the mesher makes it, so that nothing else keeps a table of type names ---------------
+  // Default: inferred from the layout (no faces: Line; natural nodes all at zeta = 0 with faces of
+  // at most 3 nodes: Planar; otherwise Solid). Axisymmetric elements must say so.
+  virtual ElementForm form() const;
+  // Default: the linear VTK cell of the element's corner nodes (corner_nodes()): 8 corners of a
+  // solid a hexahedron, 6 a wedge, 4 a tetrahedron; 4 corners of a planar or axisymmetric element
+  // a quadrilateral, 3 a triangle; 2 nodes of a line a line. Type 0 (no cell) otherwise, which
+  // the VTU export refuses by name.
+  virtual VtkCell vtk_cell() const;
+  // How the mesher makes this type from another one; none by default.
+  virtual std::optional<ElementConversion> conversion() const { return std::nullopt; }
+
   // --- DER: shape functions N (n) and natural derivatives dN (n x 3) at xi ----------------------
   virtual void der(const Vec3& xi, Eigen::Ref<Eigen::VectorXd> N,
                    Eigen::Ref<Eigen::MatrixXd> dN) const = 0;
@@ -157,16 +175,25 @@ class TElement {
                                  const ElementOptions& options, Eigen::MatrixXd& K) const;
 
   // --- kinematics hooks (defaults: a solid on (xi, eta, zeta)) --------------------------------
-  // Cartesian derivatives dNdx (n x 3) at a point and its measure dV / (dxi deta dzeta): det J
-  // for solids (jacobian()), det J2 x thickness for plane elements, |dx/dxi| x area for trusses.
-  // Throws InputError like jacobian() on an inverted or degenerate element.
-  virtual double point_measure(const ElementGeometry& g,
+  // Cartesian derivatives dNdx (n x 3) at a point with shape-function values N and natural
+  // derivatives dN, and its measure dV / (dxi deta dzeta): det J for solids (jacobian()), det J2
+  // x thickness for plane elements, det J2 x 2 pi r for axisymmetric ones (r from N), |dx/dxi| x
+  // area for trusses. Throws InputError like jacobian() on an inverted or degenerate element.
+  virtual double point_measure(const ElementGeometry& g, const Eigen::Ref<const Eigen::VectorXd>& N,
                                const Eigen::Ref<const Eigen::MatrixXd>& dN,
                                Eigen::Ref<Eigen::MatrixXd> dNdx, int point) const;
+  // The strain operator B (6 x 3n) at a point with shape-function values N and Cartesian
+  // derivatives dNdx. Default: bee(dNdx, B); axisymmetric elements add the hoop strain u_r / r,
+  // which needs N and the geometry.
+  virtual void strain_operator(const ElementGeometry& g, const Eigen::Ref<const Eigen::VectorXd>& N,
+                               const Eigen::Ref<const Eigen::MatrixXd>& dNdx,
+                               Eigen::Ref<Eigen::MatrixXd> B) const;
   // Integration points on a face: natural coordinates and, per point, the quadrature weight times
-  // the area vector dA (oriented along +face.axis; its length is the area measure). Solids: a
-  // face_rule_order()^2 Gauss rule on the face; plane elements: a line rule along the edge,
-  // times the thickness.
+  // the area vector dA (its length is the area measure). On a face with axis >= 0 it points along
+  // +face.axis (pressure_load() turns it outward by the sign of face.value); on a face with
+  // axis = -1 it points out of the element. Solids: a face_rule_order()^2 Gauss rule on a cube
+  // face, the face_param.hpp rule of that order on any other face; plane elements: a line rule
+  // along the edge, times the thickness.
   virtual void face_quadrature(const ElementGeometry& g, const FaceDef& face,
                                std::vector<Vec3>& points,
                                std::vector<Eigen::Vector3d>& weighted_normals) const;
@@ -262,6 +289,13 @@ class TElement {
   void point_laws(const ElementGeometry& g, const ElementMaterial& material, RuleKind kind,
                   std::vector<MaterialPoint>& laws) const;
 };
+
+// The element's corner nodes, ascending: the nodes whose natural point lies strictly between no
+// two other nodes (vertices of the reference shape; mid-edge, face and interior nodes are not).
+std::vector<int> corner_nodes(const TElement& element);
+// The mean of the corners' natural coordinates: (0, 0, 0) for bricks and quadrilaterals,
+// (1/4, 1/4, 1/4) for tetrahedra, (1/3, 1/3, 0) for wedges (where centroid values are taken).
+Vec3 natural_centroid(const TElement& element);
 
 // Gauss-Legendre points and weights on [-1, 1], n = 1..6.
 void gauss_legendre(int n, std::vector<double>& points, std::vector<double>& weights);

@@ -41,8 +41,11 @@ extern "C" {
  * active_displacements()), distributed_load_labels(), section_stations() and
  * section_resultants() (beam section forces), and its template methods (stiffness,
  * thermal_load, internal_force, pressure_load, strains_stresses) became virtual; ElementGeometry
- * gained section; SectionMeasure gained Beam. */
-#define STYK_PLUGIN_ABI_VERSION 4u
+ * gained section; SectionMeasure gained Beam; 5 = TElement describes itself: form(), vtk_cell()
+ * and conversion() (new virtual functions); 6 = point_measure() takes the shape-function values
+ * and strain_operator() is new (axisymmetric elements), FaceDef::axis = -1 marks faces off the
+ * cube's planes. */
+#define STYK_PLUGIN_ABI_VERSION 6u
 
 /* The name of the entry point, for dlsym. */
 #define STYK_PLUGIN_ENTRY_NAME "styk_plugin_register"

@@ -49,13 +49,18 @@ class Beam : public TElement {
   DofSet active_dofs() const override;
   SectionMeasure section_measure() const override { return SectionMeasure::Beam; }
   int distributed_load_labels() const override { return 2; }  // P1, P2
+  // B22/B32: VTK's quadratic edge lists its ends before the middle node.
+  VtkCell vtk_cell() const override {
+    return node_count() == 3 ? VtkCell{vtk::kQuadraticEdge, {0, 2, 1}} : VtkCell{vtk::kLine, {0, 1}};
+  }
 
   void der(const Vec3& xi, Eigen::Ref<Eigen::VectorXd> N,
            Eigen::Ref<Eigen::MatrixXd> dN) const override;
   IntegrationRule rule(RuleKind kind) const override;
   int face_rule_order() const override { return 1; }
   // The length measure |dx/dxi| times the section area, as for a truss (distortion checks).
-  double point_measure(const ElementGeometry& g, const Eigen::Ref<const Eigen::MatrixXd>& dN,
+  double point_measure(const ElementGeometry& g, const Eigen::Ref<const Eigen::VectorXd>& /*N*/,
+                       const Eigen::Ref<const Eigen::MatrixXd>& dN,
                        Eigen::Ref<Eigen::MatrixXd> dNdx, int point) const override;
 
   int section_stations(RuleKind kind) const override;

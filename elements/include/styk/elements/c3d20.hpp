@@ -26,6 +26,7 @@ class C3D20 : public TElement {
   // On any 20-node face the pressure integrand N_i (x,s x x,t) has degree <= 5 per direction,
   // so 3 Gauss points integrate consistent pressure loads exactly.
   int face_rule_order() const override { return 3; }
+  VtkCell vtk_cell() const override { return vtk_first_nodes(vtk::kQuadraticHexahedron, 20); }
 
  private:
   std::vector<Vec3> nodes_;

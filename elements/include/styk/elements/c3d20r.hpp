@@ -16,6 +16,10 @@ class C3D20R : public C3D20 {
   std::string description() const override;
   // The element's rule is 2x2x2 for both kinds (the name fixes it).
   IntegrationRule rule(RuleKind kind) const override;
+  // The mesher renames C3D20 elements to C3D20R as they are.
+  std::optional<ElementConversion> conversion() const override {
+    return ElementConversion{"C3D20", -1};
+  }
 };
 
 }  // namespace styk

@@ -20,6 +20,11 @@ class C3D27 : public TElement {
   C3D27();
 
   std::string name() const override { return "C3D27"; }
+  // The mesher makes C3D27 from C3D20: face centres and the element centre on the C3D20
+  // geometry, a face centre shared by the two elements on the face.
+  std::optional<ElementConversion> conversion() const override {
+    return ElementConversion{"C3D20", -1};
+  }
   std::string description() const override;
   int node_count() const override { return 27; }
   const std::vector<Vec3>& natural_nodes() const override { return nodes_; }
@@ -31,6 +36,9 @@ class C3D27 : public TElement {
   IntegrationRule rule(RuleKind kind) const override;
   // On a biquadratic face N_i (x,s x x,t) has degree <= 2 + 1 + 2 = 5 per direction: 3 points.
   int face_rule_order() const override { return 3; }
+  // Exported as the quadratic hexahedron of its first 20 nodes (values at the face and body
+  // centres stay in the point data).
+  VtkCell vtk_cell() const override { return vtk_first_nodes(vtk::kQuadraticHexahedron, 20); }
 
  private:
   std::vector<Vec3> nodes_;

@@ -18,6 +18,10 @@ namespace styk {
 class C3D8I : public C3D8 {
  public:
   std::string name() const override { return "C3D8I"; }
+  // The mesher renames C3D8 elements as they are (the same nodes, another formulation).
+  std::optional<ElementConversion> conversion() const override {
+    return ElementConversion{"C3D8", -1};
+  }
   std::string description() const override;
   int incompatible_mode_count() const override { return 9; }
   void incompatible_bee(const ElementGeometry& g, const Vec3& xi, double detJ,

@@ -31,13 +31,18 @@ class C3D8R : public C3D8 {
   explicit C3D8R(double hourglass_stiffness = kDefaultHourglassStiffness);
 
   std::string name() const override { return kappa_ > 0.0 ? "C3D8R" : "C3D8R0"; }
+  // The mesher renames C3D8 elements as they are (the same nodes, another formulation).
+  std::optional<ElementConversion> conversion() const override {
+    return ElementConversion{"C3D8", -1};
+  }
   std::string description() const override;
   // The element's rule is the 1-point rule for both kinds (the name fixes it).
   IntegrationRule rule(RuleKind kind) const override;
   void add_stabilisation(const ElementGeometry& g, const Matrix6d& D, const ElementOptions& options,
                          Eigen::MatrixXd& K) const override;
   // The uniform gradient B_bar as dNdx and V/8 as the measure of the single point (weight 8).
-  double point_measure(const ElementGeometry& g, const Eigen::Ref<const Eigen::MatrixXd>& dN,
+  double point_measure(const ElementGeometry& g, const Eigen::Ref<const Eigen::VectorXd>& N,
+                       const Eigen::Ref<const Eigen::MatrixXd>& dN,
                        Eigen::Ref<Eigen::MatrixXd> dNdx, int point) const override;
 
  private:

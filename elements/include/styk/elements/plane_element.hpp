@@ -29,12 +29,14 @@ class PlaneElement : public TElement {
 
   DofSet active_dofs() const override { return {true, true, false, false, false, false}; }
   SectionMeasure section_measure() const override { return SectionMeasure::Thickness; }
+  ElementForm form() const override { return ElementForm::Planar; }
 
   void bee(const Eigen::Ref<const Eigen::MatrixXd>& dNdx,
            Eigen::Ref<Eigen::MatrixXd> B) const override;
   void dee(const MaterialPoint& material, Matrix6d& D) const override;
 
-  double point_measure(const ElementGeometry& g, const Eigen::Ref<const Eigen::MatrixXd>& dN,
+  double point_measure(const ElementGeometry& g, const Eigen::Ref<const Eigen::VectorXd>& N,
+                       const Eigen::Ref<const Eigen::MatrixXd>& dN,
                        Eigen::Ref<Eigen::MatrixXd> dNdx, int point) const override;
   void face_quadrature(const ElementGeometry& g, const FaceDef& face, std::vector<Vec3>& points,
                        std::vector<Eigen::Vector3d>& weighted_normals) const override;

@@ -27,6 +27,7 @@ class T3D2 : public TElement {
   // A truss has no faces: no pressure loads, no contact surfaces.
   const std::vector<FaceDef>& faces() const override { return faces_; }
   SectionMeasure section_measure() const override { return SectionMeasure::Area; }
+  ElementForm form() const override { return ElementForm::Line; }
 
   void der(const Vec3& xi, Eigen::Ref<Eigen::VectorXd> N,
            Eigen::Ref<Eigen::MatrixXd> dN) const override;
@@ -36,7 +37,8 @@ class T3D2 : public TElement {
   void bee(const Eigen::Ref<const Eigen::MatrixXd>& dNdx,
            Eigen::Ref<Eigen::MatrixXd> B) const override;
   void dee(const MaterialPoint& material, Matrix6d& D) const override;
-  double point_measure(const ElementGeometry& g, const Eigen::Ref<const Eigen::MatrixXd>& dN,
+  double point_measure(const ElementGeometry& g, const Eigen::Ref<const Eigen::VectorXd>& N,
+                       const Eigen::Ref<const Eigen::MatrixXd>& dN,
                        Eigen::Ref<Eigen::MatrixXd> dNdx, int point) const override;
 
  private:

@@ -1,42 +1,44 @@
-// Element conversion (issue "Mesher"): the thesis' contact hexahedra from ordinary meshes.
-// Node layouts follow elements-ref/README.md. Converted elements keep their index; new nodes are
-// appended (shared between neighbours), nodes no element uses any more are removed, so node
-// indices change: build node sets after converting.
+// Element conversion (issue "Mesher"; elements describe themselves, issue 15 item 9): a mesh of
+// one type becomes another as the target type's TElement describes it (TElement::conversion(),
+// element_description.hpp), so the thesis' contact hexahedra and any plug-in type convert without
+// a table of type names here. Converted elements keep their index; new nodes are appended (shared
+// between neighbours), nodes no element uses any more are removed, so node indices change: build
+// node sets after converting.
 #pragma once
 
 #include <string>
 #include <vector>
 
+#include "styk/core/element_registry.hpp"
 #include "styk/mesher/mesh.hpp"
 
 namespace styk::mesher {
 
-// C3D8 -> C3D14: a node at the centre of every face (shared by the two elements on it).
-// `elements` empty = every C3D8 of the mesh. Throws std::invalid_argument for a non-C3D8.
-void convert_to_c3d14(Mesh& mesh, const std::vector<int>& elements = {});
+// Converts elements of the base type of `type` (its TElement::conversion()) to `type`:
+// - a type with a contact face (C3D21, C3D28: S1): every element with a face on `surface` becomes
+//   `type` with that face as its contact face. The element is renumbered by a proper rotation of
+//   the reference cube (its Jacobian keeps its sign) and every surface naming it follows. When a
+//   face of `type` other than the contact face carries nodes the base type's face does not
+//   (C3D28's side faces), the layer is closed: a base element sharing such a face joins it with
+//   the free face whose converted nodes meet the layer's, and is added to `surface`. The surface
+//   then lists the contact faces of all converted elements.
+// - a type without one (C3D14, C3D20R): the listed `elements`, or every element of the base type
+//   when the list is empty, convert as they are.
+// Nodes of `type` at natural points of base nodes reuse those nodes; the others are placed on the
+// base element's geometry (its shape functions) and shared by neighbours that reach the same
+// point through the same edge or face (two bodies split at an interface keep separate nodes).
+// Returns the converted elements. Throws std::invalid_argument naming the problem: a type that
+// is not registered or describes no conversion, a missing surface, an element of another type,
+// an element with two faces on the surface, a layer that cannot be closed.
+std::vector<int> convert_elements(Mesh& mesh, const ElementRegistry& registry,
+                                  const std::string& type, const std::string& surface = "",
+                                  const std::vector<int>& elements = {});
 
-// C3D20 -> C3D20R (reduced integration): a change of name only.
-void convert_to_c3d20r(Mesh& mesh, const std::vector<int>& elements = {});
+// The registered types that convert from `base` (their conversion() names it), alphabetical.
+std::vector<std::string> conversions_from(const ElementRegistry& registry, const std::string& base);
 
-// C3D20 -> C3D27 (triquadratic Lagrange): a node at the centre of every face (shared by the two
-// elements on it, in face order S1..S6) and one at the element centre, all placed on the C3D20
-// geometry, so curved faces stay curved. `elements` empty = every C3D20 of the mesh. Throws
-// std::invalid_argument for a non-C3D20.
-void convert_to_c3d27(Mesh& mesh, const std::vector<int>& elements = {});
-
-// Every C3D20 with a face on `surface` becomes C3D21 with that face as its S1 (zeta = -1): the
-// element is renumbered (a proper rotation of the reference cube, so the Jacobian keeps its sign)
-// and gets the face-centre node on the C3D20 geometry. The surface (and every other surface
-// naming these elements) is updated to the new face numbers. Throws std::invalid_argument for a
-// missing surface, a non-C3D20 element or an element with two faces on the surface.
-void convert_layer_to_c3d21(Mesh& mesh, const std::string& surface);
-
-// As convert_layer_to_c3d21, to C3D28: the face's mid-edge nodes are replaced by the GLL nodes at
-// +-1/sqrt(5) and four interior face nodes are added, all on the C3D20 geometry. A C3D28 side face
-// conforms only with a C3D28 whose bottom edge is the same (elements-ref section 4), so the
-// layer is closed: a C3D20 sharing a side face with the layer joins it with its free face along
-// the shared bottom edge (and is added to the surface). Returns the elements converted; throws
-// std::invalid_argument naming the element when the layer cannot be closed.
-std::vector<int> convert_layer_to_c3d28(Mesh& mesh, const std::string& surface);
+// Whether `type` converts a layer towards a surface (it has a contact face) rather than whole
+// elements; false for a type without a conversion.
+bool converts_a_layer(const ElementRegistry& registry, const std::string& type);
 
 }  // namespace styk::mesher

@@ -14,7 +14,7 @@
 namespace styk::mesher {
 
 struct MeshElement {
-  std::string type;        // upper-case: C3D8, C3D20, C3D14, C3D21, C3D28, C3D20R
+  std::string type;        // upper-case element type name (C3D8, C3D20, C3D21, C3D10, ...)
   std::vector<int> nodes;  // node indices in the element's own numbering
 };
 
@@ -43,6 +43,11 @@ struct Mesh {
   std::map<std::string, std::vector<int>> element_sets;  // upper-case names, sorted unique
   std::map<std::string, std::vector<FaceRef>> surfaces;  // upper-case names, sorted unique
   std::vector<Interface> interfaces;
+  // The faces of every element type in the mesh: per type, per face (S1 first), the element-local
+  // nodes on it, corners first. Filled by whoever adds elements of a type: mesh_block() for its
+  // C3D8/C3D20 bricks, convert_elements() and the splits from the type's own TElement::faces(),
+  // so the mesh answers surface questions for any type without a table of type names.
+  std::map<std::string, std::vector<std::vector<int>>> faces_of_type;
 
   int add_node(const Vec3& x) {
     nodes.push_back(x);
@@ -58,7 +63,8 @@ struct Mesh {
   void add_to_element_set(const std::string& name, const std::vector<int>& members);
   void add_to_surface(const std::string& name, const std::vector<FaceRef>& faces);
 
-  // Node indices on a surface (sorted, unique).
+  // Node indices on a surface (sorted, unique). Throws std::logic_error for a surface on an element
+  // type whose faces the mesh was not told (faces_of_type).
   std::vector<int> surface_nodes(const std::string& name) const;
 
   // Applies a node renumbering (old index -> new index, -1 = removed) to the elements, node sets

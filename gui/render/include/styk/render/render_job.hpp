@@ -20,6 +20,7 @@
 #include "styk/render/layers.hpp"
 #include "styk/render/point_field.hpp"
 #include "styk/render/unroll.hpp"
+#include "styk/render/revolve.hpp"
 
 namespace styk::render {
 
@@ -67,6 +68,10 @@ struct RenderOptions {
   ElementFilter filter;
   std::string model_name;  // title block; empty: the model's source file name
   int samples = 4;         // multisampling of the scene's edges, 1..16 (1 = none)
+  // > 0: draw the axisymmetric elements as the body they stand for, swept about the y axis
+  // through this many degrees (revolve.hpp); segments 0 = one per 15 degrees.
+  double revolve_degrees = 0.0;
+  int revolve_segments = 0;
 };
 
 class RenderJob {
@@ -99,16 +104,23 @@ class RenderJob {
 
  private:
   void check_options() const;
-  void evaluate_fields();
+  // The field asked for; `revolved` is the field already evaluated on a revolved section.
+  void evaluate_fields(std::unique_ptr<ScalarField> revolved);
   void choose_field_faces();
   std::vector<std::string> title_lines() const;
   std::string legend_heading() const;
   GeometryRequest request(double fraction) const;
   Camera fit(const PixelRect& area) const;
   void build_map();
+  // With RenderOptions::revolve_degrees: sweeps the section into its body (model_, increment_
+  // then point at the revolved ones) and returns the field evaluated on the section and carried
+  // round (null without a field); null and nothing changed otherwise.
+  std::unique_ptr<ScalarField> revolve(const Model& section, const ElementRegistry& registry);
 
-  const Model& model_;
+  const Model* model_;  // the model drawn: the given one, or its revolved body
   const IncrementResult* increment_;
+  std::unique_ptr<RevolvedModel> revolved_;
+  std::unique_ptr<IncrementResult> revolved_increment_;
   RenderOptions options_;
   std::unique_ptr<Typeface> typeface_;
   std::unique_ptr<SkinModel> skin_;

@@ -35,8 +35,8 @@ std::vector<SkinFace> extract_skin(const Model& model,
 // first three (in natural coordinates) is a mid-edge node of a triangle, not a corner.
 int face_corner_count(const TElement& element, const FaceDef& face);
 
-// Whether a formulation is a planar element (CPS4, CPE8, ...): every natural node has zeta = 0 and
-// its faces are its edges (at most 3 nodes each).
+// Whether a formulation is drawn as a planar area (CPS4, CPE8, CAX8, ...): its form
+// (TElement::form()) is Planar or Axisymmetric, so its faces are its edges.
 bool is_planar_element(const TElement& element);
 
 // The faces the renderer draws, indexed as SkinFace::face: TElement::faces(), or for a planar
@@ -44,8 +44,8 @@ bool is_planar_element(const TElement& element);
 // its nodes, corners first) at index faces().size(), so a plane mesh shows as a filled surface.
 std::vector<FaceDef> drawn_faces(const TElement& element);
 
-// Whether a formulation is a line element (a truss such as T3D2): no faces and 2 or 3 nodes. It
-// has no skin; the renderer draws it as segments through its nodes instead.
+// Whether a formulation is a line element (a truss such as T3D2): its form is Line. It has no
+// skin; the renderer draws it as segments through its nodes instead.
 bool is_line_element(const TElement& element);
 
 // The local nodes of a line element in their order along the line (ascending natural xi), e.g.
