@@ -113,7 +113,8 @@ bool model_b(const ElementRegistry& registry, bool full, bool echo) {
   // The figures docs/contact.md quotes (measured 2026-11-25, this mesh), to 0.5 %.
   ok = check(std::abs(onset - 559.0) <= 0.005 * 559.0, "full slip at 559.0 N m") && ok;
   ok = check(std::abs(last_torque - 567.9) <= 0.005 * 567.9, "torque at 1.5 deg 567.9 N m") && ok;
-  if (!full) ok = check(run.seconds <= 120, "sector torque curve to full slip within 2 minutes") && ok;
+  if (!full)
+    ok = check(run.seconds <= 120, "sector torque curve to full slip within 2 minutes") && ok;
   return ok;
 }
 
@@ -210,10 +211,10 @@ bool spline(const ElementRegistry& registry, bool full, bool echo) {
   const Run sector = build_and_solve("spline-joint", {{"sector", "yes"}}, registry, echo);
   const IncrementResult& s = sector.results.increments.back();
   const double moment = -3 * s.contact_pairs.at(0).moment[2] / 1000.0;
-  std::printf("  sector: %d elements, %.1f s, %d contact iterations, torque %.3f N m, largest "
-              "flank pressure %.2f MPa\n",
-              sector.model.element_count(), sector.seconds, sector.iterations, moment,
-              largest_pressure(s));
+  std::printf(
+      "  sector: %d elements, %.1f s, %d contact iterations, torque %.3f N m, largest "
+      "flank pressure %.2f MPa\n",
+      sector.model.element_count(), sector.seconds, sector.iterations, moment, largest_pressure(s));
   std::printf("CSV,spline_sector,%d,%.2f,%d,%.2f,%.2f\n", sector.model.element_count(),
               sector.seconds, sector.iterations, moment, largest_pressure(s));
   bool ok = check(std::abs(moment - 1000.0) < 1e-6 * 1000.0, "sector carries 1000 N m");
@@ -221,10 +222,11 @@ bool spline(const ElementRegistry& registry, bool full, bool echo) {
   if (!full) return ok;
   const Run whole = build_and_solve("spline-joint", {}, registry, echo);
   const IncrementResult& w = whole.results.increments.back();
-  std::printf("  full: %d elements, %.1f s, %d contact iterations, largest flank pressure %.2f "
-              "MPa; sector / full time %.3f\n",
-              whole.model.element_count(), whole.seconds, whole.iterations, largest_pressure(w),
-              sector.seconds / whole.seconds);
+  std::printf(
+      "  full: %d elements, %.1f s, %d contact iterations, largest flank pressure %.2f "
+      "MPa; sector / full time %.3f\n",
+      whole.model.element_count(), whole.seconds, whole.iterations, largest_pressure(w),
+      sector.seconds / whole.seconds);
   std::printf("CSV,spline_full,%d,%.2f,%d,%.2f,%.3f\n", whole.model.element_count(), whole.seconds,
               whole.iterations, largest_pressure(w), sector.seconds / whole.seconds);
   return check(std::abs(largest_pressure(w) - largest_pressure(s)) <= 1e-6 * largest_pressure(w),

@@ -93,7 +93,9 @@ TEST(JointReports, BoltedFlange) {
   EXPECT_NEAR(r.figure("leak_10kN"), 8.0, 1e-6);
   EXPECT_NEAR(r.figure("leak_15kN_gasket35"), 12.0, 1e-6);
   expect_measured(r, "bolt_force_change_8MPa", -2.0839);
-  expect_measured(r, "gauge_mises", 223.2);
+  // The coarse neck has one element layer: mid-neck and corner are the same element.
+  expect_measured(r, "gauge_mises", 122.29);
+  expect_measured(r, "neck_corner_mises", 122.29);
 }
 
 // SPEC §4.3: published 58 / 42 / 35 MPa for mu = 0 / 0.2 / 0.4. Asserted: the stress falls with
@@ -151,6 +153,8 @@ TEST(JointReports, Spline) {
   expect_measured(r, "shaft_mises", 36.41);
   expect_measured(r, "hub_mises", 23.05);
   expect_measured(r, "flank_pressure_max", 229.4);
+  expect_measured(r, "flank_pressure_inner", 129.95);
+  EXPECT_LT(r.figure("flank_pressure_inner"), r.figure("flank_pressure_max"));
   expect_measured(r, "shaft_mises_peak", 177.4);
 }
 

@@ -26,8 +26,8 @@ JointReport conical_fit_study(const ElementRegistry& registry, const JointOption
   const char* keys[3] = {"mises_mu0", "mises_mu0.2", "mises_mu0.4"};
   const double mus[3] = {0.0, 0.2, 0.4};
   DataTable along{"cone-pressure", {"mu", "z_mm", "pressure_MPa"}, {}};
-  DataTable summary{"mu", {"mu", "mises_lower_pin_MPa", "normal_force_N", "push_N", "wedge_ratio"},
-                    {}};
+  DataTable summary{
+      "mu", {"mu", "mises_lower_pin_MPa", "normal_force_N", "push_N", "wedge_ratio"}, {}};
   charts::Chart cone{"Contact pressure along the cone (generator y = 0)",
                      {"z (mm)", false, {}, {}},
                      {"contact pressure (MPa)", false, 0.0, {}},
@@ -35,11 +35,11 @@ JointReport conical_fit_study(const ElementRegistry& registry, const JointOption
   std::vector<double> scaled;
   for (int k = 0; k < 3; ++k) {
     const std::string mu = k == 0 ? "0" : k == 1 ? "0.2" : "0.4";
-    const SolvedModel s = build_and_solve("conical-fit", {{"mu", mu}}, registry, options,
-                                          "mu = " + mu, report);
+    const SolvedModel s =
+        build_and_solve("conical-fit", {{"mu", mu}}, registry, options, "mu = " + mu, report);
     const IncrementResult& inc = s.results.increments.back();
-    const double lower = largest_mises(s.model, inc, "PIN",
-                                       [](const Vec3& centre) { return centre[2] <= 15; });
+    const double lower =
+        largest_mises(s.model, inc, "PIN", [](const Vec3& centre) { return centre[2] <= 15; });
     double normal = 0;
     std::vector<std::pair<double, double>> profile;
     for (const ContactNodeResult& c : inc.contact) {
@@ -59,11 +59,12 @@ JointReport conical_fit_study(const ElementRegistry& registry, const JointOption
     const double ratio = normal * (std::sin(alpha) + mus[k] * std::cos(alpha)) / push;
     summary.rows.push_back({mus[k], lower, normal, push, ratio});
     scaled.push_back(lower * (std::sin(alpha) + mus[k] * std::cos(alpha)));
-    report.headlines.push_back({keys[k], "Largest Mises in the pin below mid-engagement, mu = " + mu,
-                                lower, "MPa", published[k], ""});
+    report.headlines.push_back({keys[k],
+                                "Largest Mises in the pin below mid-engagement, mu = " + mu, lower,
+                                "MPa", published[k], ""});
     report.headlines.push_back({"wedge_ratio_mu" + mu,
-                                "N (sin alpha + mu cos alpha) / F, mu = " + mu, ratio, "",
-                                "", "1 when every node slips; >= 1 with sticking nodes"});
+                                "N (sin alpha + mu cos alpha) / F, mu = " + mu, ratio, "", "",
+                                "1 when every node slips; >= 1 with sticking nodes"});
   }
   std::vector<double> mu_axis(mus, mus + 3), mises_values, published_values = {58, 42, 35};
   for (const std::vector<double>& row : summary.rows) mises_values.push_back(row[1]);
@@ -85,11 +86,12 @@ JointReport conical_fit_study(const ElementRegistry& registry, const JointOption
                               "max/min of Mises x (sin alpha + mu cos alpha) over the three mu",
                               spread, "", "", "1 (stress follows the wedge's normal force)"});
   report.findings.push_back(
-      "The Mises stresses " + fixed(mises_values[0], 1) + " / " + fixed(mises_values[1], 1) + " / " +
-      fixed(mises_values[2], 1) +
+      "The Mises stresses " + fixed(mises_values[0], 1) + " / " + fixed(mises_values[1], 1) +
+      " / " + fixed(mises_values[2], 1) +
       " MPa fall with mu like the published 58 / 42 / 35, but far more steeply. Measured cause: "
       "they follow the wedge's normal force N = F / (sin alpha + mu cos alpha) (Mises x (sin "
-      "alpha + mu cos alpha) is the same for the three within a factor " + fixed(spread, 3) +
+      "alpha + mu cos alpha) is the same for the three within a factor " +
+      fixed(spread, 3) +
       "), 20.0 / 4.0 / 2.2 times the push; the published values do not follow that ratio, so the "
       "thesis' pin cannot have been free to seat itself (its support is in the lost figure). At "
       "mu = 0.4 the two agree within " +

@@ -41,9 +41,10 @@ SolvedModel build_and_solve(const std::string& builder,
   std::string command = "styk mesh " + builder;
   for (const auto& [name, value] : args) command += " --" + name + " " + value;
   char line[512];
-  std::snprintf(line, sizeof line, "%s (`%s`): %d elements, %d nodes, %d contact iterations, %.1f s",
-                what.c_str(), command.c_str(), solved.model.element_count(),
-                solved.model.node_count(), solved.iterations, solved.seconds);
+  std::snprintf(line, sizeof line,
+                "%s (`%s`): %d elements, %d nodes, %d contact iterations, %.1f s", what.c_str(),
+                command.c_str(), solved.model.element_count(), solved.model.node_count(),
+                solved.iterations, solved.seconds);
   report.models.push_back(line);
   if (options.progress) options.progress(line);
   return solved;
@@ -67,8 +68,7 @@ Vec3 centre_of(const Model& model, int e) {
 
 }  // namespace
 
-double largest_mises(const Model& model, const IncrementResult& increment,
-                     const std::string& elset,
+double largest_mises(const Model& model, const IncrementResult& increment, const std::string& elset,
                      const std::function<bool(const Vec3& centre)>& where) {
   double largest = 0;
   for (int e : model.elsets.at(elset).elements) {

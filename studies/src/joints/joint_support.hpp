@@ -36,8 +36,7 @@ double mises(const Tensor6& s);
 
 // The largest integration-point Mises stress over the elements of `elset` whose centre satisfies
 // `where` (all when empty).
-double largest_mises(const Model& model, const IncrementResult& increment,
-                     const std::string& elset,
+double largest_mises(const Model& model, const IncrementResult& increment, const std::string& elset,
                      const std::function<bool(const Vec3& centre)>& where = {});
 
 // The same with each element's Mises stress of its mean integration-point stress (the element

@@ -20,7 +20,10 @@ constexpr double kMuAxial = 0.2;
 
 std::map<std::string, std::string> mesh_args(bool coarse) {
   if (!coarse) return {};
-  return {{"around", "4"}, {"fit-rows", "4"}, {"end-rows", "3"}, {"shaft-rings", "2"},
+  return {{"around", "4"},
+          {"fit-rows", "4"},
+          {"end-rows", "3"},
+          {"shaft-rings", "2"},
           {"sleeve-rings", "2"}};
 }
 
@@ -70,22 +73,22 @@ void add_fit_figures(const FitAnswer& f, const std::string& mu, JointReport& rep
   report.headlines.push_back({"elongation" + suffix, "Tab 4.1: shaft-end elongation, mm" + when,
                               f.elongation, "", "0.1268 (C3D21; C3D14 0.1269, C3D28 0.1258)",
                               "0.12 free (alpha dT L)"});
-  report.headlines.push_back({"diametral_growth" + suffix,
-                              "Tab 4.1: shaft-end diametral growth, mm" + when, f.growth, "",
-                              "0.040096 (C3D21; C3D14 0.04116, C3D28 0.04018)",
-                              "0.04 free (alpha dT d)"});
+  report.headlines.push_back(
+      {"diametral_growth" + suffix, "Tab 4.1: shaft-end diametral growth, mm" + when, f.growth, "",
+       "0.040096 (C3D21; C3D14 0.04116, C3D28 0.04018)", "0.04 free (alpha dT d)"});
   report.headlines.push_back({"pressure_mid" + suffix, "Contact pressure at mid-sleeve" + when,
                               f.mid, "MPa", "", "111-122 (Lamé, plane stress - plane strain)"});
   report.headlines.push_back({"pressure_edge" + suffix,
                               "Contact pressure at the sleeve's edge (larger of the two)" + when,
                               f.edge, "MPa", "peaks at both sleeve edges", ""});
-  report.headlines.push_back({"pressure_max" + suffix, "Largest contact pressure along the fit" + when,
-                              f.peak, "MPa", "", ""});
+  report.headlines.push_back({"pressure_max" + suffix,
+                              "Largest contact pressure along the fit" + when, f.peak, "MPa", "",
+                              ""});
   report.findings.push_back(
       "Heating" + when + ": elongation " + fixed(f.elongation, 5) + " mm and diametral growth " +
-      fixed(f.growth, 5) + " mm (Tab 4.1, C3D21: 0.1268 and 0.040096: " +
-      fixed(100 * (f.elongation / 0.1268 - 1), 2) + " % and " +
-      fixed(100 * (f.growth / 0.040096 - 1), 2) + " %); pressure " + fixed(f.edge, 1) +
+      fixed(f.growth, 5) +
+      " mm (Tab 4.1, C3D21: 0.1268 and 0.040096: " + fixed(100 * (f.elongation / 0.1268 - 1), 2) +
+      " % and " + fixed(100 * (f.growth / 0.040096 - 1), 2) + " %); pressure " + fixed(f.edge, 1) +
       " MPa at the edge, " + fixed(f.mid, 1) + " MPa at mid-sleeve, largest " + fixed(f.peak, 1) +
       " MPa" +
       (f.edge >= f.peak - 1e-9 ? ": the peaks sit at the sleeve's edges, as published."
@@ -102,9 +105,9 @@ void model_a(const ElementRegistry& registry, const JointOptions& options, Joint
   args["load-case"] = "axial";
   args["mu"] = "0.2";
   args["pressures"] = "52.5,72";
-  const SolvedModel a = build_and_solve("shrink-fit", args, registry, options,
-                                        "Model A (quarter, mu 0.2): heating, 52.5 and 72 MPa",
-                                        report);
+  const SolvedModel a =
+      build_and_solve("shrink-fit", args, registry, options,
+                      "Model A (quarter, mu 0.2): heating, 52.5 and 72 MPa", report);
   const FitAnswer f0 = fit_answer(free_fit), f2 = fit_answer(a);
   add_fit_figures(f0, "0", report);
   add_fit_figures(f2, "0.2", report);
@@ -185,8 +188,8 @@ void model_b(const ElementRegistry& registry, const JointOptions& options, Joint
   report.headlines.push_back({"torque_full_slip", "Model B: torque when every closed node slips",
                               onset, "N m", "all nodes slip at 1000 N m (force control)",
                               "559-614 (mu pi d^2 l p / 2)"});
-  report.headlines.push_back({"torque_end", "Model B: torque at 1.5 deg (past full slip)", last,
-                              "N m", "", "559-614"});
+  report.headlines.push_back(
+      {"torque_end", "Model B: torque at 1.5 deg (past full slip)", last, "N m", "", "559-614"});
   charts::Chart turn{"Torque on the sleeve against its rotation (model B sector)",
                      {"rotation of the sleeve's rim (deg)", false, 0.0, {}},
                      {"torque (N m)", false, 0.0, {}},

@@ -17,8 +17,8 @@ namespace styk::studies {
 
 // One number the report's summary quotes.
 struct Headline {
-  std::string key;        // stable name, e.g. "leak_15kN" (tests look figures up by it)
-  std::string label;      // what it is, for the table
+  std::string key;    // stable name, e.g. "leak_15kN" (tests look figures up by it)
+  std::string label;  // what it is, for the table
   double value = 0.0;
   std::string unit;       // "MPa", "N m", ...
   std::string published;  // the thesis' value (SPEC.md), "" when it gives none
@@ -39,9 +39,9 @@ struct JointChart {
 };
 
 struct JointReport {
-  std::string joint;    // "shrink-fit", ...
-  std::string title;    // page title
-  std::string summary;  // the model(s) and what was done, Markdown
+  std::string joint;                // "shrink-fit", ...
+  std::string title;                // page title
+  std::string summary;              // the model(s) and what was done, Markdown
   std::vector<std::string> models;  // one line per solved model: mesh, sizes, wall time
   std::vector<Headline> headlines;
   std::vector<DataTable> tables;
