@@ -111,9 +111,10 @@ JointReport spline_study(const ElementRegistry& registry, const JointOptions& op
                       {line("largest at z", z, high, 0), line("mean at z", z, mean, 1),
                        guide("uniform hand value", z.front(), z.back(), uniform, 2)}};
   report.charts.push_back({"flank-pressure",
-                           "Flank contact pressure along the hub (z 80-120; the torque enters at "
-                           "the flange end): the largest and the mean over the closed nodes at "
-                           "each height, against the uniform hand value.",
+                           "Flank contact pressure along the hub (z 80-120: the shaft enters the "
+                           "hub at z = 80, the loaded flange is z 100-120): the largest and the "
+                           "mean over the closed nodes at each height, against the uniform hand "
+                           "value.",
                            {{chart}, 1, 1200, 700}});
   report.findings.push_back(
       "Flank pressure up to " + fixed(peak, 1) +
