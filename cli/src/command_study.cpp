@@ -11,6 +11,7 @@
 #include "registry_setup.hpp"
 #include "study_args.hpp"
 #include "styk/core/diagnostics.hpp"
+#include "styk/studies/joints/joint_report.hpp"
 #include "styk/studies/results/run_record.hpp"
 #include "styk/studies/study/families.hpp"
 #include "styk/studies/study/problems.hpp"
@@ -178,12 +179,35 @@ int run_study(const StudyArgs& args, const ElementRegistry& registry) {
   return kOk;
 }
 
+// A SPEC §4 joint report: build, solve, write the page, its CSV files and charts.
+int run_joint(const StudyArgs& args, const ElementRegistry& registry) {
+  if (!args.docs_dir.empty() && !args.output_dir.empty())
+    throw InputError(here(args), "give either -o DIR or --docs DIR, not both");
+  const studies::JointLayout layout =
+      !args.docs_dir.empty()
+          ? studies::joint_docs_layout(args.docs_dir, args.kind)
+          : studies::joint_output_layout(
+                args.output_dir.empty() ? "study-" + args.kind : args.output_dir, args.kind);
+  std::string command = "styk study " + args.kind;
+  if (args.coarse) command += " --coarse";
+  if (!args.docs_dir.empty()) command += " --docs " + args.docs_dir;
+  studies::JointOptions options;
+  options.coarse = args.coarse;
+  options.progress = [](const std::string& line) { fmt::print(stderr, "{}\n", line); };
+  const studies::JointReport report = studies::run_joint_study(args.kind, registry, options);
+  studies::write_joint_report(report, command, studies::machine_description(), layout);
+  fmt::print("{}: {} figures, {} charts, {} tables, {:.1f} s\n", layout.markdown,
+             report.headlines.size(), report.charts.size(), report.tables.size(), report.seconds);
+  return kOk;
+}
+
 }  // namespace
 
 int study_command(const StudyArgs& args) {
   PluginLibraries libraries;  // outlives the registry: plug-in code lives in it
   const ElementRegistry registry = make_registry(libraries);
   if (args.kind == "run") return run_one(args, registry);
+  if (studies::is_joint_study(args.kind)) return run_joint(args, registry);
   if (args.list) {
     print_list(args, registry);
     return kOk;

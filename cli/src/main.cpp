@@ -109,7 +109,8 @@ int main(int argc, char** argv) {
 
   StudyArgs study;
   CLI::App* study_cmd = app.add_subcommand(
-      "study", "Studies against exact solutions: accuracy atlas, stability sweeps, model size");
+      "study",
+      "Studies: accuracy atlas, stability sweeps, model size, the SPEC §4 joint reports");
   study_cmd->require_subcommand(1);
   CLI::App* study_run =
       study_cmd->add_subcommand("run", "One run: build, solve, measure; print its CSV row");
@@ -148,6 +149,16 @@ int main(int argc, char** argv) {
         "Write the documentation: DIR/<study>.md, DIR/atlas/<study>.csv, DIR/images/atlas/");
     sub->add_option("--from-csv", study.from_csv,
                     "Draw the charts and page from this CSV, run nothing");
+  }
+
+  for (const char* name : {"shrink-fit", "conical-fit", "spline", "p3g", "bolted-flange"}) {
+    CLI::App* sub = study_cmd->add_subcommand(
+        name, std::string("SPEC §4 joint report (") + name +
+                  "): build, solve, write the Markdown page, CSV and charts");
+    sub->add_flag("--coarse", study.coarse, "Coarse meshes (the tests'): a quick look");
+    sub->add_option("-o,--output-dir", study.output_dir, "Directory for the CSV, charts and page");
+    sub->add_option("--docs", study.docs_dir,
+                    "Write the documentation: DIR/joints/<study>.md and CSV, DIR/images/joints/");
   }
 
   app.add_subcommand("elements", "List the element types available, with rules and source");

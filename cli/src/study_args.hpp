@@ -1,6 +1,6 @@
 // `styk study`: the studies (docs/cli.md, docs/accuracy.md, docs/stability.md): refinement series
-// and stability sweeps against exact solutions, the shrink-fit model-size comparison, and one run
-// of any of them.
+// and stability sweeps against exact solutions, the shrink-fit model-size comparison, one run of
+// any of them, and the SPEC §4 joint reports (docs/joints.md).
 #pragma once
 
 #include <string>
@@ -9,7 +9,7 @@
 namespace styk::cli {
 
 struct StudyArgs {
-  std::string kind;  // run, accuracy, stability, model-size
+  std::string kind;  // run, accuracy, stability, model-size, or a joint (shrink-fit, ...)
   // run: one model of one problem
   std::string study = "accuracy";
   std::string problem;
@@ -27,6 +27,7 @@ struct StudyArgs {
   std::string output_dir;   // -o DIR: the CSV, the charts and the Markdown page
   std::string docs_dir;     // --docs DIR: DIR/<study>.md, DIR/atlas/<study>.csv, DIR/images/atlas
   std::string from_csv;     // redraw the charts and the page from a CSV instead of running
+  bool coarse = false;      // joint reports: the tests' coarse meshes
 };
 
 // Exit codes as every command: unknown problem, family or option values -> InputError (1).
