@@ -216,7 +216,7 @@ TEST(Convert, APluginTypeConvertsFromItsOwnDescription) {
   register_builtin_elements(local);
   local.add(std::make_unique<Brick27FromC3D20>(*local.find("C3D27")), "test plug-in");
   EXPECT_EQ(conversions_from(local, "C3D20"),
-            (std::vector<std::string>{"C3D20R", "TEST27"}));
+            (std::vector<std::string>{"C3D20R", "C3D27", "TEST27"}));
   Mesh mesh = cube_block("C3D20");
   const std::size_t nodes = mesh.nodes.size();
   convert_elements(mesh, local, "TEST27");
