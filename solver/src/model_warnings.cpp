@@ -9,6 +9,7 @@
 #include <Eigen/Eigenvalues>
 
 #include "beam_warnings.hpp"
+#include "shell_warnings.hpp"
 
 namespace styk::solver_detail {
 namespace {
@@ -59,6 +60,7 @@ bool is_cube_solid(const TElement& element) {
 bool bulk_dominated(const TElement& element, const Material& material) {
   if (element.section_measure() == SectionMeasure::Area) return false;  // trusses
   if (element.section_measure() == SectionMeasure::Beam) return false;  // uniaxial fibres
+  if (element.section_measure() == SectionMeasure::Shell) return false;  // plane stress
   const MaterialPoint point = material_point(material);
   if (!point.isotropic) return false;  // the bulk-dominance rule is stated for isotropic laws
   Matrix6d D;
@@ -203,6 +205,9 @@ std::vector<std::string> model_warnings(const Model& model, const PreparedModel&
 
   // Beams: shear locking of fully integrated slender beams, spurious modes (beam_warnings.hpp).
   for (std::string& warning : beam_warnings(model, prepared))
+    warnings.push_back(std::move(warning));
+  // Shells: shear locking of thin S8, spurious modes of 2x2 rules (shell_warnings.hpp).
+  for (std::string& warning : shell_warnings(model, prepared))
     warnings.push_back(std::move(warning));
 
   // Distortion: the worst element and how many are beyond the ratio.

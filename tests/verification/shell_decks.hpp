@@ -90,9 +90,9 @@ inline Model read_shell_deck(const std::string& name, const std::string& text,
 
 // Solves the grid and returns the displacement of grid point (i, j).
 inline Vec3 solve_grid(const ShellGrid& g, const std::string& name, int i, int j,
-                       const ElementRegistry& registry) {
+                       const ElementRegistry& registry, AnalysisReport* report = nullptr) {
   const Model model = read_shell_deck(name, shell_grid_deck(g), registry);
-  const Results results = run_static_analysis(model, registry, SolveOptions{}, nullptr, nullptr);
+  const Results results = run_static_analysis(model, registry, SolveOptions{}, nullptr, report);
   const int node = model.node_index(grid_node(g, i, j));
   return results.increments.back().U[node];
 }

@@ -44,9 +44,12 @@ test::ShellGrid scordelis_lo(const std::string& type, int n) {
   };
   g.fixed = [](int i, int j, int imax, int) {
     std::vector<int> dofs;
-    if (i == 0) dofs.insert(dofs.end(), {1, 5, 6});  // mid-span symmetry
-    if (j == 0) dofs.insert(dofs.end(), {2, 4, 6});  // crown symmetry
-    if (i == imax) dofs.insert(dofs.end(), {2, 3});  // diaphragm
+    if (i == 0)
+      for (const int d : {1, 5, 6}) dofs.push_back(d);  // mid-span symmetry
+    if (j == 0)
+      for (const int d : {2, 4, 6}) dofs.push_back(d);  // crown symmetry
+    if (i == imax)
+      for (const int d : {2, 3}) dofs.push_back(d);  // diaphragm
     return dofs;
   };
   g.thickness = 0.25;
@@ -75,10 +78,14 @@ test::ShellGrid pinched_cylinder(const std::string& type, int n) {
   };
   g.fixed = [](int i, int j, int imax, int jmax) {
     std::vector<int> dofs;
-    if (i == 0) dofs.insert(dofs.end(), {1, 5, 6});     // mid-length symmetry
-    if (j == 0) dofs.insert(dofs.end(), {2, 4, 6});     // plane y = 0
-    if (j == jmax) dofs.insert(dofs.end(), {3, 4, 5});  // plane z = 0
-    if (i == imax) dofs.insert(dofs.end(), {2, 3, 4});  // diaphragm
+    if (i == 0)
+      for (const int d : {1, 5, 6}) dofs.push_back(d);  // mid-length symmetry
+    if (j == 0)
+      for (const int d : {2, 4, 6}) dofs.push_back(d);  // plane y = 0
+    if (j == jmax)
+      for (const int d : {3, 4, 5}) dofs.push_back(d);  // plane z = 0
+    if (i == imax)
+      for (const int d : {2, 3, 4}) dofs.push_back(d);  // diaphragm
     return dofs;
   };
   g.thickness = 3.0;
@@ -107,8 +114,10 @@ test::ShellGrid hemisphere(const std::string& type, int n) {
   };
   g.fixed = [](int i, int j, int imax, int) {
     std::vector<int> dofs;
-    if (i == 0) dofs.insert(dofs.end(), {2, 4, 6});     // plane y = 0
-    if (i == imax) dofs.insert(dofs.end(), {1, 5, 6});  // plane x = 0
+    if (i == 0)
+      for (const int d : {2, 4, 6}) dofs.push_back(d);  // plane y = 0
+    if (i == imax)
+      for (const int d : {1, 5, 6}) dofs.push_back(d);  // plane x = 0
     if (i == 0 && j == 0) dofs.push_back(3);            // the rigid motion along z
     return dofs;
   };

@@ -57,10 +57,14 @@ test::ShellGrid quarter_plate(const std::string& type, int n, double t, bool sof
   g.map = [](double s, double r) { return std::array<double, 3>{0.5 * s, 0.5 * r, 0.0}; };
   g.fixed = [soft](int i, int j, int imax, int jmax) {
     std::vector<int> dofs;
-    if (i == 0) dofs.insert(dofs.end(), {3, soft ? 3 : 4});
-    if (j == 0) dofs.insert(dofs.end(), {3, soft ? 3 : 5});
-    if (i == imax) dofs.insert(dofs.end(), {1, 5, 6});
-    if (j == jmax) dofs.insert(dofs.end(), {2, 4, 6});
+    if (i == 0)
+      for (const int d : {3, soft ? 3 : 4}) dofs.push_back(d);
+    if (j == 0)
+      for (const int d : {3, soft ? 3 : 5}) dofs.push_back(d);
+    if (i == imax)
+      for (const int d : {1, 5, 6}) dofs.push_back(d);
+    if (j == jmax)
+      for (const int d : {2, 4, 6}) dofs.push_back(d);
     return dofs;
   };
   g.thickness = t;
@@ -123,8 +127,12 @@ TEST(Spec73Plates, Tab71bSerendipityLocksLagrangeStays) {
       std::printf("t = %g %-4s Styk %.6g (thesis %s), Mindlin %.6g, Styk / Mindlin %.4f\n", row.t,
                   kTypes71b[c], w, row.thesis[c], mindlin, w / mindlin);
       EXPECT_NEAR(w, row.styk[c], 5e-4 * row.styk[c]) << kTypes71b[c] << " t = " << row.t;
-      if (c == 2) EXPECT_NEAR(w / mindlin, 1.0, 0.003) << "S9R t = " << row.t;
-      if (c == 3) EXPECT_NEAR(w / mindlin, 1.0, 0.021) << "S9 t = " << row.t;
+      if (c == 2) {
+        EXPECT_NEAR(w / mindlin, 1.0, 0.003) << "S9R t = " << row.t;
+      }
+      if (c == 3) {
+        EXPECT_NEAR(w / mindlin, 1.0, 0.021) << "S9 t = " << row.t;
+      }
       if (c == 1) {
         EXPECT_LT(w / mindlin, previous_s8) << "S8 locks more as t falls";
         previous_s8 = w / mindlin;
@@ -152,8 +160,8 @@ TEST(Spec73Plates, Tab72MeshSeries) {
     std::printf("whole plate %dx%d: S9R %.6g, S4 %.6g\n", 2 * quarter[k], 2 * quarter[k], a, b);
     EXPECT_NEAR(a, s9r[k], 5e-4 * s9r[k]);
     EXPECT_NEAR(b, s4[k], 5e-4 * s4[k]);
+    if (k == 5) EXPECT_NEAR(a, 4.06235, 4.06235e-5);  // 64 x 64 against Kirchhoff
   }
-  EXPECT_NEAR(centre("S9R", 32, 0.001, registry) * 1e-9, 4.06235, 4.06235e-5);
 }
 
 }  // namespace
@@ -193,9 +201,10 @@ TEST(Spec315ThickPlate, S8RColumn) {
   register_builtin_elements(registry);
   const double w6 = thick_plate_centre("S8R", 6, registry);
   const double w10 = thick_plate_centre("S8R", 10, registry);
-  std::printf("SPEC 3.1.5 S8R: 6x6 %.5g (thesis 3.2827e-3), 10x10 %.5g (thesis 3.3350e-3), "
-              "theory 3.322e-3\n",
-              w6, w10);
+  std::printf(
+      "SPEC 3.1.5 S8R: 6x6 %.5g (thesis 3.2827e-3), 10x10 %.5g (thesis 3.3350e-3), "
+      "theory 3.322e-3\n",
+      w6, w10);
   EXPECT_NEAR(w6, 3.2827e-3, 0.00005e-3);
   EXPECT_NEAR(w10, 3.3350e-3, 0.00005e-3);
 }
