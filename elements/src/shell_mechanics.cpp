@@ -98,10 +98,11 @@ void Shell::pressure_load(const ElementGeometry& g, int face, double p, Eigen::V
   f.setZero(6 * n);
   for (int k = 0; k < surface.size(); ++k) {
     der(surface.points[k], N, dN);
-    // Reference surface (the nodes): dA = (g1 x g2) dxi deta; Abaqus' P pushes against it.
+    // Reference surface (the nodes): dA = (g1 x g2) dxi deta; a positive P pushes along it, as
+    // CalculiX applies P, P1 and P2 on its shells (measured with ccx 2.20).
     const Eigen::Vector3d g1 = g.X.transpose() * dN.col(0), g2 = g.X.transpose() * dN.col(1);
     const Eigen::Vector3d dA = g1.cross(g2);
-    for (int a = 0; a < n; ++a) f.segment<3>(6 * a) -= (p * surface.weights[k] * N(a)) * dA;
+    for (int a = 0; a < n; ++a) f.segment<3>(6 * a) += (p * surface.weights[k] * N(a)) * dA;
   }
 }
 

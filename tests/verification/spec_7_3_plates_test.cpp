@@ -75,7 +75,7 @@ test::ShellGrid quarter_plate(const std::string& type, int n, double t, bool sof
 }
 
 // Centre deflection of the quarter plate of n x n elements in the table's units (P pushes
-// against the +z normal: w < 0).
+// along the +z normal, as in CalculiX: w > 0).
 double centre(const std::string& type, int n, double t, const ElementRegistry& registry,
               bool soft = false) {
   const test::ShellGrid g = quarter_plate(type, n, t, soft);
@@ -84,7 +84,7 @@ double centre(const std::string& type, int n, double t, const ElementRegistry& r
                                   "plate_" + type + (soft ? "_soft_" : "_") + std::to_string(n) +
                                       "_" + std::to_string(t) + ".inp",
                                   last, last, registry);
-  return -1000.0 * u[2] * kD1 / kQ;
+  return 1000.0 * u[2] * kD1 / kQ;
 }
 
 TEST(Spec73Plates, SeriesSolutionsOfTheSimplySupportedSquare) {

@@ -50,6 +50,9 @@ std::map<std::string, VtkCellMapping> build_table() {
   add({"CPS6", "CPE6", "CAX6"}, first_nodes(kQuadraticTriangle, 6));
   add({"CPS4", "CPE4", "CPS4R", "CPE4R", "CAX4", "CAX4R"}, first_nodes(kQuad, 4));
   add({"CPS8", "CPE8", "CPS8R", "CPE8R", "CAX8", "CAX8R"}, first_nodes(kQuadraticQuad, 8));
+  // Shells as their reference surface; S9's centre node stays in the point data.
+  add({"S4", "S4R"}, first_nodes(kQuad, 4));
+  add({"S8", "S8R", "S9", "S9R"}, first_nodes(kQuadraticQuad, 8));
   add({"T3D2", "B21", "B31", "B31R"}, first_nodes(kLine, 2));
   add({"T3D3", "B22", "B32", "B32R"}, VtkCellMapping{kQuadraticEdge, {0, 2, 1}});
   return table;

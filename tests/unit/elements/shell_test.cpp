@@ -372,8 +372,8 @@ TEST(Shell, SerendipityBendingPatchErrorOnTheDistortedPatch) {
   EXPECT_NEAR(error[1], 6.87e-5, 0.02 * 6.87e-5);
 }
 
-// The consistent pressure load sums to -p times the area vector (g1 x g2 is the normal); no
-// moments.
+// The consistent pressure load sums to p times the area vector (g1 x g2 is the normal; CalculiX's
+// sense); no moments.
 TEST(Shell, PressureLoadSumsToThePressureTimesTheArea) {
   const Section section = shell_section(0.05);
   for (const ShellType type : kTypes) {
@@ -388,7 +388,7 @@ TEST(Shell, PressureLoadSumsToThePressureTimesTheArea) {
       total += f.segment<3>(6 * a);
       moment += f.segment<3>(6 * a + 3);
     }
-    EXPECT_NEAR(total(2), -2.0 * 2.0 * 1.0, 1e-12) << shell.name();
+    EXPECT_NEAR(total(2), 2.0 * 2.0 * 1.0, 1e-12) << shell.name();
     EXPECT_NEAR(total.head<2>().norm(), 0.0, 1e-12);
     EXPECT_EQ(moment.norm(), 0.0);
     EXPECT_THROW(shell.pressure_load(g, 1, 2.0, f), InputError);

@@ -78,8 +78,8 @@ class Shell : public TElement {
   void eigenstrain_load(const ElementGeometry& g, const ElementMaterial& material, RuleKind kind,
                         Eigen::VectorXd& f, const ElementOptions& options = {},
                         const Eigen::MatrixXd* initial_stress = nullptr) const override;
-  // P (face 0): pressure on the reference surface, positive against the shell normal
-  // (g1 x g2, the node order's right-hand normal), as in Abaqus.
+  // P (face 0): pressure on the reference surface, a positive value pushing along the shell
+  // normal (g1 x g2, the node order's right-hand normal), as CalculiX applies its shells' P.
   void pressure_load(const ElementGeometry& g, int face, double p,
                      Eigen::VectorXd& f) const override;
   // GRAV / CENTRIF: density times thickness per unit area, on the translations.
