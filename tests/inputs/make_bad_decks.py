@@ -334,7 +334,7 @@ DECKS = [
     ("solver_equation_prescribed", "an equation eliminating a dof that a step also prescribes",
      base(BOUNDARY=BOUNDARY + "*EQUATION\n>>2\n2, 3, 1., 3, 3, -1.\n",
           STEP="*STEP\n*STATIC\n*BOUNDARY\n2, 3, 3, 0.01\n*END STEP\n"), 1,
-     "is eliminated by the equation and also prescribed"),
+     "is eliminated by the constraint equation of this line"),
     ("solver_equation_cycle", "two equations eliminating each other's dof",
      base(BOUNDARY=BOUNDARY + "*EQUATION\n>>2\n2, 3, 1., 3, 3, -1.\n2\n3, 3, 1., 2, 3, -1.\n"),
      1, "depend on each other in a cycle"),
