@@ -32,6 +32,8 @@ const char* form_name(ElementForm form) {
       return "axisymmetric";
     case ElementForm::Line:
       return "line";
+    case ElementForm::Shell:
+      return "shell";
   }
   return "";
 }
@@ -90,6 +92,10 @@ VtkCell TElement::vtk_cell() const {
       break;
     case ElementForm::Line:
       if (count == 2) return {vtk::kLine, c};
+      break;
+    case ElementForm::Shell:  // its reference surface
+      if (count == 4) return {vtk::kQuad, c};
+      if (count == 3) return {vtk::kTriangle, c};
       break;
   }
   return {};

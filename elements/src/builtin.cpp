@@ -11,6 +11,7 @@
 #include "styk/elements/c3d8i.hpp"
 #include "styk/elements/c3d8r.hpp"
 #include "styk/elements/plane_quads.hpp"
+#include "styk/elements/shell.hpp"
 #include "styk/elements/t3d2.hpp"
 #include "styk/elements/tetrahedra.hpp"
 #include "styk/elements/wedges.hpp"
@@ -44,6 +45,9 @@ void register_builtin_elements(ElementRegistry& registry) {
   for (const BeamType type :
        {BeamType::B21, BeamType::B22, BeamType::B31, BeamType::B31R, BeamType::B32, BeamType::B32R})
     registry.add(std::make_unique<Beam>(type), source);
+  for (const ShellType type : {ShellType::S4, ShellType::S4R, ShellType::S8, ShellType::S8R,
+                               ShellType::S9, ShellType::S9R})
+    registry.add(std::make_unique<Shell>(type), source);
 }
 
 }  // namespace styk

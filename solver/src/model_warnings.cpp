@@ -11,6 +11,7 @@
 #include "zero_energy_modes.hpp"
 
 #include "beam_warnings.hpp"
+#include "shell_warnings.hpp"
 
 namespace styk::solver_detail {
 namespace {
@@ -56,7 +57,8 @@ bool linear_tetrahedron(const TElement& element) {
 }
 
 bool bulk_dominated(const TElement& element, const Material& material) {
-  if (element.form() == ElementForm::Line) return false;  // trusses and beams: uniaxial fibres
+  // Trusses and beams (uniaxial fibres), shells (plane stress in their lamina).
+  if (element.form() == ElementForm::Line || element.form() == ElementForm::Shell) return false;
   const MaterialPoint point = material_point(material);
   if (!point.isotropic) return false;  // the bulk-dominance rule is stated for isotropic laws
   Matrix6d D;
@@ -248,6 +250,9 @@ std::vector<std::string> model_warnings(const Model& model, const PreparedModel&
   tetrahedron_bending_warnings(model, prepared, warnings);
   // Beams: shear locking of fully integrated slender beams, spurious modes (beam_warnings.hpp).
   for (std::string& warning : beam_warnings(model, prepared))
+    warnings.push_back(std::move(warning));
+  // Shells: shear locking of thin S8, spurious modes of 2x2 rules (shell_warnings.hpp).
+  for (std::string& warning : shell_warnings(model, prepared))
     warnings.push_back(std::move(warning));
   distortion_warnings(model, prepared, warnings);
   return warnings;

@@ -35,6 +35,13 @@ void check_section_measure(const Model& model, const Element& element,
                                         " covers element " + std::to_string(element.id) +
                                         " of type " + element.type +
                                         ", which is not a beam; use *SOLID SECTION");
+  const bool shell_type = formulation.section_measure() == SectionMeasure::Shell;
+  if (shell_type != section.shell.has_value())
+    throw InputError(section.where, "element " + std::to_string(element.id) + " (" + element.type +
+                                        ") of element set " + section.elset +
+                                        (shell_type ? " is a shell: it takes a *SHELL SECTION"
+                                                    : " is not a shell: a *SHELL SECTION "
+                                                      "cannot cover it"));
   if (formulation.section_measure() == SectionMeasure::Area && !section.thickness)
     throw InputError(section.where, "the *SOLID SECTION of element set " + section.elset +
                                         " gives no cross-section area (its first data line), "
@@ -209,18 +216,18 @@ void check_output_requests(const Model& model, const PreparedModel& prepared) {
       for (const std::string& var : request.vars) {
         if ((var == "UR" || var == "RM") && !prepared.has_rotations())
           throw InputError(request.where, "output variable " + var +
-                                              " needs nodes with rotations (beam elements); no "
+                                              " needs nodes with rotations (beam or shell elements); no "
                                               "node of this model carries any");
         if ((var == "SF" || var == "SM") && !stations)
           throw InputError(request.where, "output variable " + var +
-                                              " (section forces and moments) needs beam "
-                                              "elements; this model has none");
+                                              " (section forces and moments) needs beam or "
+                                              "shell elements; this model has none");
         const bool energy = var == "ENER" || var == "ELSE" || var == "EVOL" || var == "THE";
         if (energy && stations)
           throw InputError(request.where, "output variable " + var +
-                                              " is not computed for beam elements (their "
-                                              "section is integrated in resultants); this model "
-                                              "has beams");
+                                              " is not computed for beam and shell elements "
+                                              "(their section is integrated in resultants); this "
+                                              "model has some");
       }
 }
 

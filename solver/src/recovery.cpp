@@ -147,7 +147,8 @@ void recover_increment(const Model& model, const PreparedModel& prepared,
       }
       // Beams have no 3D energy density at their fibre points (prepare_model refuses ENER, ELSE,
       // EVOL and THE requests in models with beams).
-      const bool continuum = element.section_measure() != SectionMeasure::Beam;
+      const bool continuum = element.section_measure() != SectionMeasure::Beam &&
+                             element.section_measure() != SectionMeasure::Shell;
       if (continuum && (input.energies || input.thermal_strains))
         element_energies(element, s.geometry, law, prepared.rule_kind[e], sigma0, e, first, s,
                          out);

@@ -75,6 +75,19 @@ BEAM_BOUNDARY = "*BOUNDARY\nFIXED, 1, 6\n"
 BEAM_STEP = "*STEP\n*STATIC\n*CLOAD\nTIP, 3, -1.\n*END STEP\n"
 
 
+SHELL_ELEMENTS = "*ELEMENT, TYPE=S4, ELSET=PLATE\n1, 1, 2, 3, 4\n"
+SHELL_SETS = "*NSET, NSET=FIXED\n1, 4\n*NSET, NSET=TIP\n2, 3\n"
+SHELL_SECTION = "*SHELL SECTION, ELSET=PLATE, MATERIAL=STEEL\n0.01\n"
+
+
+def shell(**replace):
+    """The shell deck (one S4 on the base's bottom face) with parts replaced."""
+    parts = dict(ELEMENTS=SHELL_ELEMENTS, SETS=SHELL_SETS, SECTION=SHELL_SECTION,
+                 BOUNDARY=BEAM_BOUNDARY, STEP=BEAM_STEP)
+    parts.update(replace)
+    return base(**parts)
+
+
 def beam(**replace):
     """The beam deck with parts replaced."""
     parts = dict(ELEMENTS=BEAM_ELEMENTS, SETS=BEAM_SETS, SECTION=BEAM_SECTION,
@@ -270,10 +283,34 @@ DECKS = [
                   "0.1, 0.2\n"), 1, "section offsets are not supported"),
     ("beam_section_on_solid", "a *BEAM SECTION covering a brick",
      base(SECTION=">>*BEAM SECTION, ELSET=BLOCK, MATERIAL=STEEL, SECTION=RECT\n0.1, 0.2\n"), 1,
-     "which is not a beam: use *SOLID SECTION"),
+     "neither a beam nor a shell: it takes a *SOLID SECTION"),
     ("solid_section_on_beam", "a *SOLID SECTION covering beams",
      beam(SECTION=">>*SOLID SECTION, ELSET=FRAME, MATERIAL=STEEL\n"), 1,
-     "a beam: beams take a *BEAM SECTION"),
+     "a beam: it takes a *BEAM SECTION"),
+    ("shell_section_orientation", "ORIENTATION= on a *SHELL SECTION",
+     shell(SECTION=">>*SHELL SECTION, ELSET=PLATE, MATERIAL=STEEL, ORIENTATION=OR1\n0.01\n"), 1,
+     "ORIENTATION= on *SHELL SECTION is not supported"),
+    ("shell_section_composite", "a composite *SHELL SECTION",
+     shell(SECTION=">>*SHELL SECTION, ELSET=PLATE, MATERIAL=STEEL, COMPOSITE\n0.01\n"), 1,
+     "COMPOSITE on *SHELL SECTION is not supported"),
+    ("shell_section_points_even", "an even number of section points (Simpson needs odd)",
+     shell(SECTION="*SHELL SECTION, ELSET=PLATE, MATERIAL=STEEL\n>>0.01, 4\n"), 1,
+     "must be an odd integer from 3 to 15"),
+    ("shell_thickness_zero", "a shell thickness of zero",
+     shell(SECTION="*SHELL SECTION, ELSET=PLATE, MATERIAL=STEEL\n>>0.\n"), 1,
+     "the shell thickness must be positive"),
+    ("shell_offset_outside", "a reference surface outside the shell (OFFSET=0.7)",
+     shell(SECTION=">>*SHELL SECTION, ELSET=PLATE, MATERIAL=STEEL, OFFSET=0.7\n0.01\n"), 1,
+     "the reference surface must lie inside the shell"),
+    ("shell_section_on_solid", "a *SHELL SECTION covering a brick",
+     base(SECTION=">>*SHELL SECTION, ELSET=BLOCK, MATERIAL=STEEL\n0.01\n"), 1,
+     "neither a beam nor a shell: it takes a *SOLID SECTION"),
+    ("solid_section_on_shell", "a *SOLID SECTION covering a shell",
+     shell(SECTION=">>*SOLID SECTION, ELSET=PLATE, MATERIAL=STEEL\n"), 1,
+     "a shell: it takes a *SHELL SECTION"),
+    ("shell_pressure_on_solid", "the shell pressure label P on a brick",
+     base(STEP="*STEP\n*STATIC\n*DLOAD\n>>BLOCK, P, 1.\n*END STEP\n"), 1,
+     "load label P (a shell pressure) on element 1 (C3D8), which is not a shell"),
     ("beam_full_on_reduced_type", "INTEGRATION=FULL on CalculiX's always-reduced B31R",
      beam(ELEMENTS=BEAM_ELEMENTS.replace("B31", "B31R"),
           SECTION=">>*BEAM SECTION, ELSET=FRAME, MATERIAL=STEEL, SECTION=RECT, INTEGRATION=FULL\n"
@@ -297,7 +334,7 @@ DECKS = [
     ("solver_equation_prescribed", "an equation eliminating a dof that a step also prescribes",
      base(BOUNDARY=BOUNDARY + "*EQUATION\n>>2\n2, 3, 1., 3, 3, -1.\n",
           STEP="*STEP\n*STATIC\n*BOUNDARY\n2, 3, 3, 0.01\n*END STEP\n"), 1,
-     "is eliminated by the equation and also prescribed"),
+     "is eliminated by the constraint equation of this line"),
     ("solver_equation_cycle", "two equations eliminating each other's dof",
      base(BOUNDARY=BOUNDARY + "*EQUATION\n>>2\n2, 3, 1., 3, 3, -1.\n2\n3, 3, 1., 2, 3, -1.\n"),
      1, "depend on each other in a cycle"),

@@ -60,6 +60,16 @@ const std::vector<DeckReader::KeywordSpec>& DeckReader::keywords() {
         {"NODAL THICKNESS", false, V::None}},
        &DeckReader::on_beam_section,
        kData},
+      {"SHELL SECTION",
+       S::Model,
+       {{"ELSET", true, V::Required},
+        {"MATERIAL", true, V::Required},
+        {"OFFSET", false, V::Required},
+        {"ORIENTATION", false, V::Required},  // CalculiX; refused by name
+        {"COMPOSITE", false, V::None},
+        {"NODAL THICKNESS", false, V::None}},
+       &DeckReader::on_shell_section,
+       kData},
       {"BOUNDARY",
        S::Anywhere,
        {{"OP", false, V::Required}, {"FIXED", false, V::None}},
@@ -470,7 +480,7 @@ void DeckReader::finish() {
 void DeckReader::assign_sections() {
   for (std::size_t s = 0; s < model_.sections.size(); ++s) {
     Section& section = model_.sections[s];
-    const std::string keyword = section.beam ? "*BEAM SECTION" : "*SOLID SECTION";
+    const std::string keyword = section_keyword(section);
     section.material_index = model_.material_index(section.material);
     if (section.material_index < 0) {
       std::string names;
@@ -497,19 +507,9 @@ void DeckReader::assign_sections() {
                              ") already has a section (ELSET=" + other.elset + " at " +
                              other.where.str() + "); an element belongs to one section only");
       }
-      // Beams take a *BEAM SECTION and only they do.
+      // Beams take a *BEAM SECTION, shells a *SHELL SECTION, and only they do.
       if (const TElement* formulation = registry_.find(element.type)) {
-        const bool beam_type = formulation->section_measure() == SectionMeasure::Beam;
-        if (beam_type && !section.beam)
-          throw InputError(section.where, "*SOLID SECTION of element set " + section.elset +
-                                              " covers element " + std::to_string(element.id) +
-                                              " (" + element.type +
-                                              "), a beam: beams take a *BEAM SECTION");
-        if (!beam_type && section.beam)
-          throw InputError(section.where, "*BEAM SECTION of element set " + section.elset +
-                                              " covers element " + std::to_string(element.id) +
-                                              " (" + element.type +
-                                              "), which is not a beam: use *SOLID SECTION");
+        check_section_kind(section, element, *formulation);
         if (section.beam && section.beam->integration == BeamIntegration::Full &&
             formulation->rule(RuleKind::Full).size() == formulation->rule(RuleKind::Reduced).size())
           throw InputError(section.where, "*BEAM SECTION, INTEGRATION=FULL of element set " +
@@ -527,8 +527,8 @@ void DeckReader::assign_sections() {
     if (element.section < 0)
       throw InputError(element.where, "element " + std::to_string(element.id) + " (" +
                                           element.type +
-                                          ") has no section: no *SOLID SECTION or *BEAM SECTION "
-                                          "names an element set containing it");
+                                          ") has no section: no *SOLID SECTION, *BEAM SECTION or "
+                                          "*SHELL SECTION names an element set containing it");
 }
 
 }  // namespace styk::inp

@@ -19,6 +19,14 @@ namespace styk::inp {
 
 struct WrittenTerm;  // an *EQUATION term as written (constraint_keywords.cpp)
 
+// The keyword that made a section ("*SOLID SECTION", "*BEAM SECTION", "*SHELL SECTION").
+std::string section_keyword(const Section& section);
+// Throws InputError at the section when its kind does not fit the element's formulation: beams
+// take a *BEAM SECTION, shells a *SHELL SECTION, every other element a *SOLID SECTION
+// (shell_keywords.cpp).
+void check_section_kind(const Section& section, const Element& element,
+                        const TElement& formulation);
+
 class DeckReader {
  public:
   DeckReader(const std::string& path, const ElementRegistry& registry);
@@ -62,6 +70,8 @@ class DeckReader {
   void on_solid_section(const KeywordLine& kw);
   // beam_keywords.cpp
   void on_beam_section(const KeywordLine& kw);
+  void on_shell_section(const KeywordLine& kw);  // shell_keywords.cpp
+  void check_shell_pressure(const Element& element, const SourceLoc& where) const;
   // material_keywords.cpp
   void on_elastic(const KeywordLine& kw);
   void on_expansion(const KeywordLine& kw);

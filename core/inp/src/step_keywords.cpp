@@ -159,6 +159,15 @@ void DeckReader::on_cload(const KeywordLine& kw) {
   }
 }
 
+// The label P (without a face number) is the pressure of shell elements only.
+void DeckReader::check_shell_pressure(const Element& element, const SourceLoc& where) const {
+  const TElement* formulation = registry_.find(element.type);
+  if (formulation != nullptr && formulation->section_measure() == SectionMeasure::Shell) return;
+  throw InputError(where, "load label P (a shell pressure) on element " +
+                              std::to_string(element.id) + " (" + element.type +
+                              "), which is not a shell; faces of solids take P1..P6");
+}
+
 void DeckReader::on_dload(const KeywordLine& kw) {
   Step& step = current_step();
   if (op_new(kw, true)) step.dload_op_new = true;
@@ -171,14 +180,18 @@ void DeckReader::on_dload(const KeywordLine& kw) {
     }
     const bool face_label =
         label.size() == 2 && label[0] == 'P' && label[1] >= '1' && label[1] <= '6';
-    if (line->fields.size() > 1 && !face_label)
+    const bool shell_pressure = label == "P";  // shells: pressure on the reference surface
+    if (line->fields.size() > 1 && !face_label && !shell_pressure)
       throw InputError(line->where, "load label " + quote(line->fields[1]) +
                                         " is not supported; Styk reads face pressures P1..P6, "
-                                        "GRAV and CENTRIF");
+                                        "the shell pressure P, GRAV and CENTRIF");
     expect_fields(*line, 3, 3, "element or element set, load label, magnitude");
     const std::vector<int> elements = elements_of(*line, 0, "element or element set");
     const double magnitude = real_field(*line, 2, "magnitude");
-    for (int e : elements) step.dloads.push_back({e, label[1] - '0', magnitude, line->where});
+    for (int e : elements) {
+      if (shell_pressure) check_shell_pressure(model_.elements[e], line->where);
+      step.dloads.push_back({e, shell_pressure ? 1 : label[1] - '0', magnitude, line->where});
+    }
   }
 }
 

@@ -103,6 +103,16 @@ void write_beam_section(const Section& s, std::ostream& out) {
         << num(beam.direction[2]) << '\n';
 }
 
+// *SHELL SECTION as CalculiX reads it (OFFSET only when not zero; the section points only when
+// the deck gave them).
+void write_shell_section(const Section& s, std::ostream& out) {
+  out << "*SHELL SECTION, ELSET=" << s.elset << ", MATERIAL=" << s.material;
+  if (s.shell->offset != 0.0) out << ", OFFSET=" << num(s.shell->offset);
+  out << '\n' << num(s.thickness.value_or(0.0));
+  if (s.shell->section_points_given) out << ", " << s.shell->section_points;
+  out << '\n';
+}
+
 void write_properties(const Model& model, std::ostream& out) {
   for (const Material& m : model.materials) {
     out << "*MATERIAL, NAME=" << m.name << '\n';
@@ -113,6 +123,10 @@ void write_properties(const Model& model, std::ostream& out) {
   for (const Section& s : model.sections) {
     if (s.beam) {
       write_beam_section(s, out);
+      continue;
+    }
+    if (s.shell) {
+      write_shell_section(s, out);
       continue;
     }
     out << "*SOLID SECTION, ELSET=" << s.elset << ", MATERIAL=" << s.material

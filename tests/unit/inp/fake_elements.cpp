@@ -49,6 +49,29 @@ class FakeBeam : public TElement {
   std::vector<FaceDef> faces_;
 };
 
+// A 4-node shell for the *SHELL SECTION checks: takes a shell section and the pressure P.
+class FakeShell : public TElement {
+ public:
+  std::string name() const override { return "S4"; }
+  std::string description() const override { return "fake shell S4 for reader tests"; }
+  int node_count() const override { return 4; }
+  const std::vector<Vec3>& natural_nodes() const override { throw std::logic_error("fake"); }
+  const std::vector<FaceDef>& faces() const override { return faces_; }
+  int node_dofs() const override { return 6; }
+  SectionMeasure section_measure() const override { return SectionMeasure::Shell; }
+  int distributed_load_labels() const override { return 1; }
+  void der(const Vec3&, Eigen::Ref<Eigen::VectorXd>, Eigen::Ref<Eigen::MatrixXd>) const override {
+    throw std::logic_error("fake");
+  }
+  IntegrationRule rule(RuleKind) const override {
+    return IntegrationRule{"fake", std::vector<Vec3>(4), std::vector<double>(4, 1.0)};
+  }
+  int face_rule_order() const override { throw std::logic_error("fake"); }
+
+ private:
+  std::vector<FaceDef> faces_;
+};
+
 class FakeElement : public TElement {
  public:
   FakeElement(std::string name, int nodes, std::vector<FaceDef> faces)
@@ -79,6 +102,7 @@ ElementRegistry fake_registry() {
   registry.add(std::make_unique<FakeBeam>("B21", false), "test");
   registry.add(std::make_unique<FakeBeam>("B31", false), "test");
   registry.add(std::make_unique<FakeBeam>("B31R", true), "test");
+  registry.add(std::make_unique<FakeShell>(), "test");
   return registry;
 }
 

@@ -6,8 +6,8 @@
 
 namespace styk::test {
 
-// A registry holding fake C3D8 (8 nodes) and C3D20 (20 nodes) types, and fake 2-node beams B21,
-// B31 and B31R (reduced only).
+// A registry holding fake C3D8 (8 nodes) and C3D20 (20 nodes) types, fake 2-node beams B21,
+// B31 and B31R (reduced only) and a fake 4-node shell S4.
 ElementRegistry fake_registry();
 // fake_registry() plus a fake six-node wedge C3D6 with five faces (S1..S5).
 ElementRegistry fake_registry_with_wedge();

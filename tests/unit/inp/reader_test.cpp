@@ -389,7 +389,7 @@ TEST(ReadInp, UnknownElementTypeListsRegisteredTypesAndPluginPaths) {
   } catch (const InputError& e) {
     EXPECT_EQ(e.where().line, 3);
     EXPECT_NE(e.message().find(
-                  "unknown element type C3D14; registered types: B21, B31, B31R, C3D20, C3D8"),
+                  "unknown element type C3D14; registered types: B21, B31, B31R, C3D20, C3D8, S4"),
               std::string::npos)
         << e.what();
     EXPECT_NE(e.message().find("/opt/styk/plugins"), std::string::npos) << e.what();

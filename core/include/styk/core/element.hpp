@@ -72,8 +72,9 @@ struct ElementOptions {
 
 // What the element's section must give: nothing for solids, the out-of-plane thickness of plane
 // elements (first data line of *SOLID SECTION, default 1, as in CalculiX), the cross-section area
-// of trusses (required), a *BEAM SECTION for beams.
-enum class SectionMeasure { None, Thickness, Area, Beam };
+// of trusses (required), a *BEAM SECTION for beams, a *SHELL SECTION for shells (its thickness
+// in ElementGeometry::cross_section, offset and section points in the Section).
+enum class SectionMeasure { None, Thickness, Area, Beam, Shell };
 
 struct IntegrationRule {
   std::string label;                    // e.g. "3x3x3 Gauss"

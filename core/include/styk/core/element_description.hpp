@@ -16,6 +16,7 @@ enum class ElementForm {
   Planar,        // plane stress or plane strain in the x-y plane; its faces are its edges
   Axisymmetric,  // a ring: its section in the r-z plane (x = r, y = z) revolved about the y axis
   Line,          // a bar or beam along its nodes; no faces
+  Shell,         // a surface with a thickness (its section); no faces for contact surfaces
 };
 
 // The name of a form for messages and listings ("solid", "planar", "axisymmetric", "line").

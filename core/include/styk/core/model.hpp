@@ -105,12 +105,23 @@ struct BeamSection {
   bool integration_given = false;  // INTEGRATION= appeared on the keyword line
 };
 
+// *SHELL SECTION data beyond the thickness (kept in Section::thickness).
+struct ShellSection {
+  // OFFSET=: the reference surface (the nodes) lies this fraction of the thickness from the
+  // mid-surface along the positive normal (Abaqus/CalculiX; SPOS = 0.5, SNEG = -0.5).
+  double offset = 0.0;
+  // Simpson points through the thickness (second field of the data line; odd, default 5).
+  int section_points = 5;
+  bool section_points_given = false;  // written back only when the deck gave it
+};
+
 struct Section {
   std::string elset;          // upper-case
   std::string material;       // upper-case
   int material_index = -1;
   std::optional<double> thickness;  // for plane and truss elements (first data line)
   std::optional<BeamSection> beam;  // set for a *BEAM SECTION (beam elements)
+  std::optional<ShellSection> shell;  // set for a *SHELL SECTION (shell elements)
   // Styk-only: integrate the volumetric part of the strain selectively (B-bar, mean dilatation)
   // against volumetric locking in near-incompressible materials.
   bool selective_volumetric = false;

@@ -1,0 +1,201 @@
+// The shell obstacle course (MacNeal & Harder 1985, "A proposed standard set of problems to test
+// finite element accuracy", Finite Elements in Analysis and Design 1; Belytschko et al. 1985),
+// SPEC §7.3 "Structural benchmarks outside the thesis", solved from CalculiX decks through the
+// reader and the solver. Symmetric parts are modelled with symmetry conditions:
+// - Scordelis-Lo roof: R = 25, length 50, 80 degree arc, t = 0.25, E = 4.32e8, nu = 0, weight
+//   90 per unit area (GRAV with density 360 over t = 0.25), curved ends on rigid diaphragms
+//   (uy = uz = 0), straight edges free; vertical deflection at the middle of a free edge 0.3024
+//   (MacNeal-Harder's reference; 0.3086 is the deep-shell value some sources give). Quarter.
+// - Pinched cylinder with end diaphragms (uy = uz = rx = 0): R = 300, length 600, t = 3,
+//   E = 3e6, nu = 0.3, two opposite radial loads P = 1 at mid-length; radial deflection under a
+//   load 1.8248e-5. Octant, carrying P / 4.
+// - Pinched hemisphere with an 18 degree hole: R = 10, t = 0.04, E = 6.825e7, nu = 0.3, radial
+//   loads 2 at the equator, alternating out and in every 90 degrees; deflection at a load point
+//   0.094 (MacNeal-Harder; 0.093 in Belytschko's). Quarter (longitude 0-90 degrees, each load
+//   halved by its symmetry plane), uz fixed at one point against the rigid motion.
+#include <cmath>
+#include <cstdio>
+#include <string>
+#include <vector>
+
+#include <gtest/gtest.h>
+
+#include "shell_decks.hpp"
+
+namespace styk {
+namespace {
+
+constexpr double kPi = 3.14159265358979323846;
+
+ElementRegistry builtin() {
+  ElementRegistry registry;
+  register_builtin_elements(registry);
+  return registry;
+}
+
+// The quarter roof: x = 25 s (x = 0 mid-span), angle 40 r degrees from the crown.
+test::ShellGrid scordelis_lo(const std::string& type, int n) {
+  test::ShellGrid g;
+  g.type = type;
+  g.nx = g.ny = n;
+  g.map = [](double s, double r) {
+    const double phi = 40.0 * kPi / 180.0 * r;
+    return std::array<double, 3>{25.0 * s, 25.0 * std::sin(phi), 25.0 * std::cos(phi)};
+  };
+  g.fixed = [](int i, int j, int imax, int) {
+    std::vector<int> dofs;
+    if (i == 0)
+      for (const int d : {1, 5, 6}) dofs.push_back(d);  // mid-span symmetry
+    if (j == 0)
+      for (const int d : {2, 4, 6}) dofs.push_back(d);  // crown symmetry
+    if (i == imax)
+      for (const int d : {2, 3}) dofs.push_back(d);  // diaphragm
+    return dofs;
+  };
+  g.thickness = 0.25;
+  g.young = 4.32e8;
+  g.poisson = 0.0;
+  g.material_extra = "*DENSITY\n360.\n";
+  g.load = "*DLOAD\nSHELL, GRAV, 1., 0., 0., -1.\n";
+  return g;
+}
+
+double scordelis_lo_deflection(const std::string& type, int n, const ElementRegistry& registry) {
+  const test::ShellGrid g = scordelis_lo(type, n);
+  const int jmax = test::grid_order(g) * n;
+  return -test::solve_grid(g, "scordelis_lo_" + type + "_" + std::to_string(n) + ".inp", 0, jmax,
+                           registry)[2];
+}
+
+// The octant: x = 300 s (x = 0 mid-length, the load), angle 90 r degrees from the loaded top.
+test::ShellGrid pinched_cylinder(const std::string& type, int n) {
+  test::ShellGrid g;
+  g.type = type;
+  g.nx = g.ny = n;
+  g.map = [](double s, double r) {
+    const double phi = 0.5 * kPi * r;
+    return std::array<double, 3>{300.0 * s, 300.0 * std::sin(phi), 300.0 * std::cos(phi)};
+  };
+  g.fixed = [](int i, int j, int imax, int jmax) {
+    std::vector<int> dofs;
+    if (i == 0)
+      for (const int d : {1, 5, 6}) dofs.push_back(d);  // mid-length symmetry
+    if (j == 0)
+      for (const int d : {2, 4, 6}) dofs.push_back(d);  // plane y = 0
+    if (j == jmax)
+      for (const int d : {3, 4, 5}) dofs.push_back(d);  // plane z = 0
+    if (i == imax)
+      for (const int d : {2, 3, 4}) dofs.push_back(d);  // diaphragm
+    return dofs;
+  };
+  g.thickness = 3.0;
+  g.young = 3e6;
+  g.poisson = 0.3;
+  g.load = "*CLOAD\n" + std::to_string(test::grid_node(g, 0, 0)) + ", 3, -0.25\n";
+  return g;
+}
+
+double pinched_cylinder_deflection(const std::string& type, int n,
+                                   const ElementRegistry& registry) {
+  const test::ShellGrid g = pinched_cylinder(type, n);
+  return -test::solve_grid(g, "pinched_cylinder_" + type + "_" + std::to_string(n) + ".inp", 0, 0,
+                           registry)[2];
+}
+
+// The quarter hemisphere: longitude 90 s degrees from the x axis, latitude 72 r degrees.
+test::ShellGrid hemisphere(const std::string& type, int n) {
+  test::ShellGrid g;
+  g.type = type;
+  g.nx = g.ny = n;
+  g.map = [](double s, double r) {
+    const double lon = 0.5 * kPi * s, lat = 72.0 * kPi / 180.0 * r;
+    return std::array<double, 3>{10.0 * std::cos(lat) * std::cos(lon),
+                                 10.0 * std::cos(lat) * std::sin(lon), 10.0 * std::sin(lat)};
+  };
+  g.fixed = [](int i, int j, int imax, int) {
+    std::vector<int> dofs;
+    if (i == 0)
+      for (const int d : {2, 4, 6}) dofs.push_back(d);  // plane y = 0
+    if (i == imax)
+      for (const int d : {1, 5, 6}) dofs.push_back(d);  // plane x = 0
+    if (i == 0 && j == 0) dofs.push_back(3);            // the rigid motion along z
+    return dofs;
+  };
+  g.thickness = 0.04;
+  g.young = 6.825e7;
+  g.poisson = 0.3;
+  return g;
+}
+
+double hemisphere_deflection(const std::string& type, int n, const ElementRegistry& registry) {
+  test::ShellGrid g = hemisphere(type, n);
+  const int imax = test::grid_order(g) * n;
+  g.load = "*CLOAD\n" + std::to_string(test::grid_node(g, 0, 0)) + ", 1, 1.\n" +
+           std::to_string(test::grid_node(g, imax, 0)) + ", 2, -1.\n";
+  return test::solve_grid(g, "hemisphere_" + type + "_" + std::to_string(n) + ".inp", 0, 0,
+                          registry)[0];
+}
+
+struct Case {
+  const char* type;
+  int n;        // elements per side of the modelled part
+  double styk;  // asserted to 1e-3 (docs/verification.md prints 4 digits)
+  double band;  // |styk / reference - 1| <= band
+};
+
+// Scordelis-Lo: the 2x2 quadratic elements converge to 0.3020 (-0.12 % of 0.3024), S4 from below
+// (-0.87 % on 16 x 16); the fully integrated 3x3 elements lock on coarse meshes (4 x 4: 0.2456,
+// -19 %).
+TEST(ShellObstacleCourse, ScordelisLoRoof) {
+  const ElementRegistry registry = builtin();
+  const double reference = 0.3024;
+  const Case cases[] = {{"S4", 16, 0.29977, 0.009},
+                        {"S8R", 8, 0.30207, 0.0015},
+                        {"S9R", 8, 0.30207, 0.0015},
+                        {"S9", 4, 0.24598, 0.19}};
+  for (const Case& c : cases) {
+    const double w = scordelis_lo_deflection(c.type, c.n, registry);
+    std::printf("Scordelis-Lo %s %dx%d: %.5g (%.2f %%)\n", c.type, c.n, c.n, w,
+                100.0 * (w / reference - 1.0));
+    EXPECT_NEAR(w, c.styk, 1e-3 * c.styk) << c.type;
+    EXPECT_LE(std::abs(w / reference - 1.0), c.band) << c.type;
+  }
+}
+
+// Pinched cylinder (octant, 16 x 16): S8R 1.8305e-5 (+0.3 %), S9R 1.8671e-5 (+2.3 %), S4 (MITC4)
+// 1.6949e-5 (-7.1 %, its known slow convergence under a point load).
+TEST(ShellObstacleCourse, PinchedCylinderWithDiaphragms) {
+  const ElementRegistry registry = builtin();
+  const double reference = 1.8248e-5;
+  const Case cases[] = {
+      {"S8R", 16, 1.8305e-5, 0.004}, {"S9R", 16, 1.8671e-5, 0.024}, {"S4", 16, 1.6949e-5, 0.072}};
+  for (const Case& c : cases) {
+    const double w = pinched_cylinder_deflection(c.type, c.n, registry);
+    std::printf("pinched cylinder %s %dx%d: %.5g (%.2f %%)\n", c.type, c.n, c.n, w,
+                100.0 * (w / reference - 1.0));
+    EXPECT_NEAR(w, c.styk, 1e-3 * c.styk) << c.type;
+    EXPECT_LE(std::abs(w / reference - 1.0), c.band) << c.type;
+  }
+}
+
+// Pinched hemisphere (quarter, 16 x 16): S4 0.09286 (-1.2 %), S8R 0.09371 (-0.3 %), S9R 0.09376
+// (-0.3 %); the fully integrated quadratic elements lock in membrane on this doubly curved shell
+// (S9 16 x 16: 0.0789, -16 %; 4 x 4: 0.0021).
+TEST(ShellObstacleCourse, PinchedHemisphereWithHole) {
+  const ElementRegistry registry = builtin();
+  const double reference = 0.094;
+  const Case cases[] = {{"S4", 16, 0.092863, 0.013},
+                        {"S8R", 16, 0.09371, 0.004},
+                        {"S9R", 16, 0.093759, 0.004},
+                        {"S9", 16, 0.078922, 0.17}};
+  for (const Case& c : cases) {
+    const double w = hemisphere_deflection(c.type, c.n, registry);
+    std::printf("hemisphere %s %dx%d: %.5g (%.2f %%)\n", c.type, c.n, c.n, w,
+                100.0 * (w / reference - 1.0));
+    EXPECT_NEAR(w, c.styk, 1e-3 * c.styk) << c.type;
+    EXPECT_LE(std::abs(w / reference - 1.0), c.band) << c.type;
+  }
+}
+
+}  // namespace
+}  // namespace styk

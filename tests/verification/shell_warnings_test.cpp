@@ -1,0 +1,71 @@
+// The shell warnings before solving (solver/src/shell_warnings.hpp, SPEC §7.3): a thin fully
+// integrated S8 plate warns with its measured slenderness and the remedies; the 2x2 rules' spurious
+// modes are counted on a flat patch and warned of; the locking-free types stay silent.
+#include <string>
+#include <vector>
+
+#include <gtest/gtest.h>
+
+#include "shell_decks.hpp"
+
+namespace styk {
+namespace {
+
+// Tab 7.1b's quarter plate (2 x 2 elements of size 0.25) of thickness t.
+std::vector<std::string> plate_warnings(const std::string& type, double t) {
+  ElementRegistry registry;
+  register_builtin_elements(registry);
+  test::ShellGrid g;
+  g.type = type;
+  g.map = [](double s, double r) { return std::array<double, 3>{0.5 * s, 0.5 * r, 0.0}; };
+  g.fixed = [](int i, int j, int imax, int jmax) {
+    std::vector<int> dofs;
+    if (i == 0)
+      for (const int d : {3, 4}) dofs.push_back(d);
+    if (j == 0)
+      for (const int d : {3, 5}) dofs.push_back(d);
+    if (i == imax)
+      for (const int d : {1, 5, 6}) dofs.push_back(d);
+    if (j == jmax)
+      for (const int d : {2, 4, 6}) dofs.push_back(d);
+    return dofs;
+  };
+  g.thickness = t;
+  g.young = 10.92e5;
+  g.load = "*DLOAD\nSHELL, P, 10.\n";
+  AnalysisReport report;
+  test::solve_grid(g, "warn_" + type + "_" + std::to_string(t) + ".inp", 0, 0, registry, &report);
+  return report.warnings;
+}
+
+int count_containing(const std::vector<std::string>& warnings, const std::string& text) {
+  int n = 0;
+  for (const std::string& w : warnings) n += w.find(text) != std::string::npos ? 1 : 0;
+  return n;
+}
+
+TEST(ShellWarnings, ThinS8PlateWarnsOfShearLockingWithItsSlenderness) {
+  // size 0.25 / t 0.001 = 250: the message states it and the remedies.
+  const std::vector<std::string> w = plate_warnings("S8", 0.001);
+  ASSERT_EQ(count_containing(w, "S8 elements of element set SHELL are thin"), 1) << w.size();
+  EXPECT_EQ(count_containing(w, "element size / thickness up to 250 (element"), 1);
+  EXPECT_EQ(count_containing(w, "remedy: reduced integration (S8R), the 9-node Lagrange shell"), 1);
+  // Thick (size / t = 2.5, 0.7 % too stiff): no warning.
+  EXPECT_EQ(count_containing(plate_warnings("S8", 0.1), "are thin"), 0);
+  // The 9-node and 4-node elements do not lock: silent at any thickness.
+  for (const char* type : {"S9", "S4", "S8R", "S9R"})
+    EXPECT_EQ(count_containing(plate_warnings(type, 0.001), "are thin"), 0) << type;
+}
+
+TEST(ShellWarnings, SpuriousModesOfTheReducedRulesAreCounted) {
+  // Flat 2x2 patch, measured: S9R four modes beyond the rigid motions; none for S4, S8, S9 and
+  // S8R (the single S8R element's two spurious modes do not survive in a patch).
+  EXPECT_EQ(
+      count_containing(plate_warnings("S9R", 0.01), "have 4 zero-energy modes in a flat 2x2 patch"),
+      1);
+  for (const char* type : {"S4", "S8", "S8R", "S9"})
+    EXPECT_EQ(count_containing(plate_warnings(type, 0.01), "zero-energy modes"), 0) << type;
+}
+
+}  // namespace
+}  // namespace styk
