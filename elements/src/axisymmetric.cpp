@@ -5,6 +5,7 @@
 
 #include <Eigen/Dense>
 
+#include "edge_quadrature.hpp"
 #include "styk/elements/quad_shapes.hpp"
 
 namespace styk {
@@ -75,27 +76,10 @@ void AxisymmetricElement::strain_operator(const ElementGeometry& g,
 void AxisymmetricElement::face_quadrature(const ElementGeometry& g, const FaceDef& face,
                                           std::vector<Vec3>& points,
                                           std::vector<Eigen::Vector3d>& weighted_normals) const {
-  std::vector<double> gauss, weights;
-  gauss_legendre(face_rule_order(), gauss, weights);
-  const int along = 1 - face.axis;  // the natural coordinate running along the edge
-  const int n = node_count();
-  Eigen::VectorXd N(n);
-  Eigen::MatrixXd dN(n, 3);
-  points.clear();
-  weighted_normals.clear();
-  for (std::size_t a = 0; a < gauss.size(); ++a) {
-    Vec3 xi{};
-    xi[face.axis] = face.value;
-    xi[along] = gauss[a];
-    der(xi, N, dN);
-    const Eigen::Vector2d tangent = g.X.leftCols<2>().transpose() * dN.col(along);
-    // As for plane elements (along +axis for a counter-clockwise element), times the ring's
-    // circumference 2 pi r in place of the thickness.
-    const Eigen::Vector3d normal = face.axis == 0 ? Eigen::Vector3d(tangent.y(), -tangent.x(), 0.0)
-                                                  : Eigen::Vector3d(-tangent.y(), tangent.x(), 0.0);
-    points.push_back(xi);
-    weighted_normals.push_back(weights[a] * kTwoPi * radius(g, N) * normal);
-  }
+  // As for plane elements, times the ring's circumference 2 pi r in place of the thickness.
+  elements_detail::edge_quadrature(
+      *this, g, face, [&](const Eigen::VectorXd& N) { return kTwoPi * radius(g, N); }, points,
+      weighted_normals);
 }
 
 CAX4::CAX4(bool reduced)

@@ -5,6 +5,7 @@
 
 #include <Eigen/Dense>
 
+#include "edge_quadrature.hpp"
 namespace styk {
 namespace {
 
@@ -91,27 +92,9 @@ void PlaneElement::face_quadrature(const ElementGeometry& g, const FaceDef& face
                                    std::vector<Vec3>& points,
                                    std::vector<Eigen::Vector3d>& weighted_normals) const {
   check_thickness(g, *this);
-  std::vector<double> gauss, weights;
-  gauss_legendre(face_rule_order(), gauss, weights);
-  const int along = 1 - face.axis;  // the natural coordinate running along the edge
-  const int n = node_count();
-  Eigen::VectorXd N(n);
-  Eigen::MatrixXd dN(n, 3);
-  points.clear();
-  weighted_normals.clear();
-  for (std::size_t a = 0; a < gauss.size(); ++a) {
-    Vec3 xi{};
-    xi[face.axis] = face.value;
-    xi[along] = gauss[a];
-    der(xi, N, dN);
-    const Eigen::Vector2d tangent = g.X.leftCols<2>().transpose() * dN.col(along);
-    // The solid's x,s x x,t with the zeta tangent = thickness e_z: along +axis for a
-    // counter-clockwise element (xi edges: t x e_z; eta edges: e_z x t).
-    const Eigen::Vector3d normal = face.axis == 0 ? Eigen::Vector3d(tangent.y(), -tangent.x(), 0.0)
-                                                  : Eigen::Vector3d(-tangent.y(), tangent.x(), 0.0);
-    points.push_back(xi);
-    weighted_normals.push_back(weights[a] * g.cross_section * normal);
-  }
+  elements_detail::edge_quadrature(
+      *this, g, face, [&](const Eigen::VectorXd&) { return g.cross_section; }, points,
+      weighted_normals);
 }
 
 void PlaneElement::complete_strain(const MaterialPoint& material,

@@ -9,18 +9,13 @@
 
 #include "assembly.hpp"
 #include "styk/core/beam_section.hpp"
+#include "warning_format.hpp"
 
 namespace styk::solver_detail {
 namespace {
 
 // Locking beyond this bending stiffening (2 %, grade A of SPEC Tab 3.12) is warned of.
 constexpr double kLockingWarned = 0.02;
-
-std::string format(const char* pattern, double value) {
-  char buffer[64];
-  std::snprintf(buffer, sizeof buffer, pattern, value);
-  return buffer;
-}
 
 bool is_beam(const TElement& element) { return element.section_measure() == SectionMeasure::Beam; }
 

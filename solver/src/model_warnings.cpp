@@ -12,6 +12,7 @@
 
 #include "beam_warnings.hpp"
 #include "shell_warnings.hpp"
+#include "warning_format.hpp"
 
 namespace styk::solver_detail {
 namespace {
@@ -41,12 +42,6 @@ constexpr LockingOnset kMeasuredOnsets[] = {
     {"C3D20R", 1.0},     // never: passes at 0.49999
     {"C3D8I", 1.0},      // never: passes at 0.49999
 };
-
-std::string format(const char* pattern, double value) {
-  char buffer[64];
-  std::snprintf(buffer, sizeof buffer, pattern, value);
-  return buffer;
-}
 
 // A linear tetrahedron (C3D4): a solid whose nodes are its 4 corners, integrated at one point.
 // Its strain is constant: it is stiff in bending and, one volume constraint per element and about

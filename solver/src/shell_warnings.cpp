@@ -9,18 +9,13 @@
 #include <Eigen/Eigenvalues>
 
 #include "assembly.hpp"
+#include "warning_format.hpp"
 
 namespace styk::solver_detail {
 namespace {
 
 // Element size / thickness from which a fully integrated S8 is warned of (about 3 % too stiff).
 constexpr double kSlenderWarned = 10.0;
-
-std::string format(const char* pattern, double value) {
-  char buffer[64];
-  std::snprintf(buffer, sizeof buffer, pattern, value);
-  return buffer;
-}
 
 bool is_shell(const TElement& element) {
   return element.section_measure() == SectionMeasure::Shell;
