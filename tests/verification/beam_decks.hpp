@@ -12,6 +12,7 @@
 #include "styk/elements/builtin.hpp"
 #include "styk/inp/reader.hpp"
 #include "styk/solver/analysis.hpp"
+#include "../support/test_scratch.hpp"
 
 namespace styk::test {
 
@@ -58,8 +59,7 @@ inline std::string cantilever_deck(const Cantilever& c) {
 
 inline Model read_deck(const std::string& name, const std::string& text,
                        const ElementRegistry& registry) {
-  const std::filesystem::path dir = std::filesystem::path(STYK_BINARY_DIR) / "tests" / "beam_decks";
-  std::filesystem::create_directories(dir);
+  const std::filesystem::path dir = test::test_scratch_dir("tests/beam_decks");
   const std::filesystem::path path = dir / name;
   std::ofstream(path) << text;
   return read_inp(path.string(), registry);

@@ -16,6 +16,7 @@
 #include "styk/elements/builtin.hpp"
 #include "styk/inp/reader.hpp"
 #include "styk/solver/analysis.hpp"
+#include "../support/test_scratch.hpp"
 
 namespace styk::test {
 
@@ -80,9 +81,7 @@ inline std::string shell_grid_deck(const ShellGrid& g) {
 
 inline Model read_shell_deck(const std::string& name, const std::string& text,
                              const ElementRegistry& registry) {
-  const std::filesystem::path dir =
-      std::filesystem::path(STYK_BINARY_DIR) / "tests" / "shell_decks";
-  std::filesystem::create_directories(dir);
+  const std::filesystem::path dir = test::test_scratch_dir("tests/shell_decks");
   const std::filesystem::path path = dir / name;
   std::ofstream(path) << text;
   return read_inp(path.string(), registry);

@@ -14,6 +14,7 @@
 #include "hex_model_builder.hpp"
 #include "styk/inp/reader.hpp"
 #include "styk/solver/analysis.hpp"
+#include "../../support/test_scratch.hpp"
 
 namespace styk::test {
 
@@ -81,9 +82,7 @@ inline Results solve_with_plugins(const Model& model,
 
 // Parses `deck` (written to a scratch file named `name`) with the built-in elements.
 inline Model parse_deck(const std::string& name, const std::string& deck) {
-  const std::filesystem::path dir =
-      std::filesystem::path(STYK_BINARY_DIR) / "tests" / "constraints_decks";
-  std::filesystem::create_directories(dir);
+  const std::filesystem::path dir = test::test_scratch_dir("tests/constraints_decks");
   const std::filesystem::path path = dir / name;
   std::ofstream(path) << deck;
   ElementRegistry registry;

@@ -13,6 +13,7 @@
 #include "styk/elements/builtin.hpp"
 #include "styk/inp/reader.hpp"
 #include "styk/solver/analysis.hpp"
+#include "../../support/test_scratch.hpp"
 
 namespace styk::test {
 
@@ -22,9 +23,7 @@ struct Solved {
 };
 
 inline Solved solve_text(const std::string& name, const std::string& deck) {
-  const std::filesystem::path dir =
-      std::filesystem::path(STYK_BINARY_DIR) / "tests" / "keyword_decks";
-  std::filesystem::create_directories(dir);
+  const std::filesystem::path dir = test::test_scratch_dir("tests/keyword_decks");
   const std::filesystem::path path = dir / name;
   std::ofstream(path) << deck;
   ElementRegistry registry;

@@ -4,13 +4,12 @@
 #include <filesystem>
 #include <fstream>
 #include <string>
+#include "../../support/test_scratch.hpp"
 
 namespace styk::test {
 
 inline std::filesystem::path scratch_dir() {
-  const std::filesystem::path dir = std::filesystem::path(STYK_BINARY_DIR) / "inp_test_decks";
-  std::filesystem::create_directories(dir);
-  return dir;
+  return test_scratch_dir("inp_test_decks");
 }
 
 // Writes `text` to scratch_dir()/name and returns the path.

@@ -21,6 +21,7 @@
 #include "styk/io/results_file.hpp"
 #include "styk/io/vtu_export.hpp"
 #include "styk/solver/analysis.hpp"
+#include "../../support/test_scratch.hpp"
 
 namespace styk {
 namespace {
@@ -43,10 +44,7 @@ std::unique_ptr<Loaded> registry_with_frame() {
 }
 
 std::filesystem::path scratch(const std::string& name) {
-  const std::filesystem::path dir =
-      std::filesystem::path(STYK_BINARY_DIR) / "tests" / "rotation_decks";
-  std::filesystem::create_directories(dir);
-  return dir / name;
+  return test::test_scratch_dir("tests/rotation_decks") / name;
 }
 
 Model parse(const Loaded& loaded, const std::string& name, const std::string& deck) {
