@@ -3,6 +3,7 @@
 // refused (with the line that is wrong).
 #include <gtest/gtest.h>
 
+#include "deck_errors.hpp"
 #include "deck_files.hpp"
 #include "fake_elements.hpp"
 #include "styk/inp/reader.hpp"
@@ -12,6 +13,7 @@ namespace {
 
 using test::fake_registry;
 using test::write_deck;
+using test::line_of;
 
 // Two unit cubes stacked in z, not sharing nodes: block A (element 1, nodes 1-8) below,
 // block B (element 2, nodes 11-18) above. A's top is its face S2, B's bottom its face S1.
@@ -48,14 +50,6 @@ const char* const kTwoBlocks = R"(*NODE, NSET=ALL
 const char* const kStep = "*STEP\n*STATIC\n*END STEP\n";
 
 // The line of `text` (1-based) that contains `marker` (the first one).
-int line_of(const std::string& text, const std::string& marker) {
-  const std::size_t at = text.find(marker);
-  EXPECT_NE(at, std::string::npos) << marker;
-  int line = 1;
-  for (std::size_t i = 0; i < at && i < text.size(); ++i) line += text[i] == '\n';
-  return line;
-}
-
 Model read(const std::string& name, const std::string& text,
            const ElementRegistry& registry = fake_registry()) {
   return read_inp(write_deck(name, text), registry);

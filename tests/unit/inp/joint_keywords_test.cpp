@@ -5,6 +5,7 @@
 
 #include <sstream>
 
+#include "deck_errors.hpp"
 #include "deck_files.hpp"
 #include "fake_elements.hpp"
 #include "styk/inp/reader.hpp"
@@ -15,6 +16,8 @@ namespace {
 
 using test::fake_registry;
 using test::write_deck;
+using test::line_of;
+using test::expect_error;
 
 // Two unit cubes stacked in z without shared nodes (A below, B above) and a contact pair between
 // A's top (S2) and B's bottom (S1).
@@ -64,27 +67,8 @@ B_BOTTOM, A_TOP
 2, 3, 6, 7
 )";
 
-int line_of(const std::string& text, const std::string& marker) {
-  const std::size_t at = text.find(marker);
-  EXPECT_NE(at, std::string::npos) << marker;
-  int line = 1;
-  for (std::size_t i = 0; i < at && i < text.size(); ++i) line += text[i] == '\n';
-  return line;
-}
-
 Model read(const std::string& name, const std::string& text) {
   return read_inp(write_deck(name, text), fake_registry());
-}
-
-void expect_error(const std::string& name, const std::string& text, const std::string& marker,
-                  const std::string& substring) {
-  try {
-    read(name, text);
-    ADD_FAILURE() << name << ": accepted";
-  } catch (const InputError& e) {
-    EXPECT_EQ(e.where().line, line_of(text, marker)) << e.what();
-    EXPECT_NE(e.message().find(substring), std::string::npos) << e.what();
-  }
 }
 
 const char* const kCyclic = R"(*TIE, NAME=CYC, CYCLIC SYMMETRY, POSITION TOLERANCE=0.01

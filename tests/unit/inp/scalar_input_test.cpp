@@ -6,6 +6,7 @@
 
 #include <sstream>
 
+#include "deck_errors.hpp"
 #include "deck_files.hpp"
 #include "fake_elements.hpp"
 #include "styk/inp/reader.hpp"
@@ -16,6 +17,8 @@ namespace {
 
 using test::fake_registry;
 using test::write_deck;
+using test::line_of;
+using test::expect_error;
 
 const char* const kMesh = R"(*NODE, NSET=ALL
 1, 0., 0., 0.
@@ -41,29 +44,9 @@ const char* const kHeatStep =
     "*CFLUX\nTOP, 11, 2.5\n*DFLUX\n1, S2, 4.\n*NODE PRINT, NSET=ALL\nNT, RFL\n*EL PRINT\nHFL\n"
     "*END STEP\n";
 
-int line_of(const std::string& text, const std::string& marker) {
-  const std::size_t at = text.find(marker);
-  EXPECT_NE(at, std::string::npos) << marker;
-  int line = 1;
-  for (std::size_t i = 0; i < at && i < text.size(); ++i) line += text[i] == '\n';
-  return line;
-}
-
 Model read(const std::string& name, const std::string& text) {
   const ElementRegistry registry = fake_registry();
   return read_inp(write_deck(name, text), registry);
-}
-
-void expect_error(const std::string& name, const std::string& text, const std::string& marker,
-                  const std::string& substring) {
-  const ElementRegistry registry = fake_registry();
-  try {
-    read_inp(write_deck(name, text), registry);
-    ADD_FAILURE() << name << ": accepted";
-  } catch (const InputError& e) {
-    EXPECT_EQ(e.where().line, line_of(text, marker)) << e.what();
-    EXPECT_NE(e.message().find(substring), std::string::npos) << e.what();
-  }
 }
 
 TEST(ScalarInput, HeatStepLandsInTheModelAndRoundTrips) {
