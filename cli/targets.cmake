@@ -25,8 +25,7 @@ if(TARGET styk_render_osmesa)
   target_compile_definitions(styk PRIVATE STYK_WITH_RENDER)
 endif()
 install(TARGETS styk RUNTIME DESTINATION bin)
-# Element plug-ins: where make_registry() looks by default; build them with the program.
-target_compile_definitions(styk PRIVATE
-  STYK_PLUGIN_BUILD_DIR="${STYK_PLUGIN_BUILD_DIR}"
-  STYK_PLUGIN_INSTALL_DIR="${STYK_PLUGIN_INSTALL_DIR}")
+# Element registry: styk_element_setup (built-ins, then the plug-ins of STYK_PLUGIN_PATH and of
+# the installation or the build tree); build the plug-ins with the program.
+target_link_libraries(styk PRIVATE styk_element_setup)
 add_dependencies(styk styk_plugins)

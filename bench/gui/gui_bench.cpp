@@ -12,7 +12,7 @@
 
 #include "gl_view.hpp"
 #include "session/document.hpp"
-#include "session/element_setup.hpp"
+#include "styk/elements/element_setup.hpp"
 #include "session/scene.hpp"
 #include "styk/io/results_file.hpp"
 #include "styk/mesher/block_mesh.hpp"
@@ -59,7 +59,7 @@ int main(int argc, char** argv) {
   QApplication app(argc, argv);
   PluginLibraries libraries;
   ElementRegistry registry;
-  gui::load_elements(registry, libraries, STYK_PLUGIN_BUILD_DIR);
+  styk::setup_element_registry(registry, libraries, {styk::build_plugin_directory()});
   std::vector<int> sizes;
   for (int i = 1; i < argc; ++i) sizes.push_back(std::atoi(argv[i]));
   if (sizes.empty()) sizes = {10000, 100000};

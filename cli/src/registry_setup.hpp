@@ -1,5 +1,5 @@
 // The element registry a command works with: the built-in elements, then the plug-ins found on
-// STYK_PLUGIN_PATH and in the default plug-in directory.
+// STYK_PLUGIN_PATH and in the default plug-in directory (styk_element_setup).
 #pragma once
 
 #include "styk/core/element_registry.hpp"

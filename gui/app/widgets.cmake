@@ -31,6 +31,5 @@ target_compile_definitions(styk_gui_widgets PRIVATE STYK_CLI_BUILD_PATH="$<TARGE
 
 add_executable(styk-gui src/main.cpp)
 target_link_libraries(styk-gui PRIVATE styk_gui_widgets styk_gui_session styk_warnings)
-target_compile_definitions(styk-gui PRIVATE STYK_PLUGIN_BUILD_DIR="${STYK_PLUGIN_BUILD_DIR}")
 add_dependencies(styk-gui styk_plugins styk)
 install(TARGETS styk-gui RUNTIME DESTINATION bin)

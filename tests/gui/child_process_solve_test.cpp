@@ -13,7 +13,7 @@
 #include "solve_runner.hpp"
 #include "styk/core/element_registry.hpp"
 #include "styk/core/plugin_loader.hpp"
-#include "styk/elements/builtin.hpp"
+#include "styk/elements/element_setup.hpp"
 #include "styk/mesher/builders.hpp"
 #include "styk/studies/static_solve.hpp"
 
@@ -24,8 +24,7 @@ struct Registry {
   PluginLibraries libraries;
   ElementRegistry registry;
   Registry() {
-    register_builtin_elements(registry);
-    load_plugins(registry, libraries, {STYK_PLUGIN_BUILD_DIR});
+    setup_element_registry(registry, libraries, {build_plugin_directory()});
   }
 };
 

@@ -23,7 +23,7 @@
 #include "image_compare.hpp"
 #include "main_window.hpp"
 #include "results_panel.hpp"
-#include "session/element_setup.hpp"
+#include "styk/elements/element_setup.hpp"
 #include "styk/render/image.hpp"
 
 using namespace styk;
@@ -68,7 +68,8 @@ class GuiEndToEnd : public QObject {
     QStandardPaths::setTestModeEnabled(true);  // recent files go to a test settings location
     qputenv("STYK_GUI_NO_MESSAGE_BOXES", "1");
     QDir().mkpath(kOutput);
-    warnings_ = gui::load_elements(registry_, libraries_, STYK_PLUGIN_BUILD_DIR);
+    warnings_ =
+        styk::setup_element_registry(registry_, libraries_, {styk::build_plugin_directory()});
     window_ = std::make_unique<gui::MainWindow>(registry_);
     window_->view()->setFixedSize(640, 480);
     window_->show();
@@ -247,7 +248,7 @@ class GuiEndToEnd : public QObject {
  private:
   PluginLibraries libraries_;
   ElementRegistry registry_;
-  std::vector<std::string> warnings_;
+  std::vector<styk::PluginDiagnostic> warnings_;
   std::unique_ptr<gui::MainWindow> window_;
 };
 

@@ -17,7 +17,7 @@
 #include "form_dialog.hpp"
 #include "gl_view.hpp"
 #include "main_window.hpp"
-#include "session/element_setup.hpp"
+#include "styk/elements/element_setup.hpp"
 
 using namespace styk;
 
@@ -54,7 +54,8 @@ class GuiFilterGeometry : public QObject {
   void initTestCase() {
     QStandardPaths::setTestModeEnabled(true);
     qputenv("STYK_GUI_NO_MESSAGE_BOXES", "1");
-    (void)gui::load_elements(registry_, libraries_, STYK_PLUGIN_BUILD_DIR);
+    (void)styk::setup_element_registry(registry_, libraries_,
+                                       {styk::build_plugin_directory()});
     window_ = std::make_unique<gui::MainWindow>(registry_);
     window_->view()->setFixedSize(640, 480);
     window_->show();

@@ -21,7 +21,7 @@
 #include "gl_view.hpp"
 #include "main_window.hpp"
 #include "model_tree.hpp"
-#include "session/element_setup.hpp"
+#include "styk/elements/element_setup.hpp"
 #include "session/picking.hpp"
 
 using namespace styk;
@@ -76,7 +76,7 @@ class HeatWallWalkThrough : public QObject {
     qputenv("STYK_GUI_NO_MESSAGE_BOXES", "1");
     shots_ = qEnvironmentVariable("STYK_GUI_SCREENSHOTS");
     if (!shots_.isEmpty()) QDir().mkpath(shots_);
-    gui::load_elements(registry_, libraries_, STYK_PLUGIN_BUILD_DIR);
+    styk::setup_element_registry(registry_, libraries_, {styk::build_plugin_directory()});
     window_ = std::make_unique<gui::MainWindow>(registry_);
     window_->resize(1280, 820);
     window_->show();

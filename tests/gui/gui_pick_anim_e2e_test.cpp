@@ -22,7 +22,7 @@
 #include "gl_view.hpp"
 #include "main_window.hpp"
 #include "results_panel.hpp"
-#include "session/element_setup.hpp"
+#include "styk/elements/element_setup.hpp"
 #include "session/picking.hpp"
 #include "styk/render/image.hpp"
 
@@ -48,7 +48,8 @@ class GuiPickAnimate : public QObject {
     QStandardPaths::setTestModeEnabled(true);
     qputenv("STYK_GUI_NO_MESSAGE_BOXES", "1");
     QDir().mkpath(kOutput);
-    warnings_ = gui::load_elements(registry_, libraries_, STYK_PLUGIN_BUILD_DIR);
+    warnings_ =
+        styk::setup_element_registry(registry_, libraries_, {styk::build_plugin_directory()});
     window_ = std::make_unique<gui::MainWindow>(registry_);
     window_->view()->setFixedSize(640, 480);
     window_->show();
@@ -268,7 +269,7 @@ class GuiPickAnimate : public QObject {
  private:
   PluginLibraries libraries_;
   ElementRegistry registry_;
-  std::vector<std::string> warnings_;
+  std::vector<styk::PluginDiagnostic> warnings_;
   std::unique_ptr<gui::MainWindow> window_;
   int first_ = -1, second_ = -1;
 };

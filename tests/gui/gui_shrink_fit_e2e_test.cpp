@@ -37,7 +37,7 @@
 #include "main_window.hpp"
 #include "model_tree.hpp"
 #include "results_panel.hpp"
-#include "session/element_setup.hpp"
+#include "styk/elements/element_setup.hpp"
 #include "session/picking.hpp"
 
 using namespace styk;
@@ -108,7 +108,7 @@ class ShrinkFitWalkThrough : public QObject {
     qputenv("STYK_GUI_NO_MESSAGE_BOXES", "1");
     shots_ = qEnvironmentVariable("STYK_GUI_SCREENSHOTS");
     if (!shots_.isEmpty()) QDir().mkpath(shots_);
-    gui::load_elements(registry_, libraries_, STYK_PLUGIN_BUILD_DIR);
+    styk::setup_element_registry(registry_, libraries_, {styk::build_plugin_directory()});
     window_ = std::make_unique<gui::MainWindow>(registry_);
     window_->resize(1280, 820);
     window_->show();

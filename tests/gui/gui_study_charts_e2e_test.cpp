@@ -20,7 +20,7 @@
 #include <fstream>
 
 #include "main_window.hpp"
-#include "session/element_setup.hpp"
+#include "styk/elements/element_setup.hpp"
 #include "study_chart_window.hpp"
 #include "styk/studies/results/run_record.hpp"
 
@@ -86,7 +86,7 @@ class GuiStudyCharts : public QObject {
     QStandardPaths::setTestModeEnabled(true);
     qputenv("STYK_GUI_NO_MESSAGE_BOXES", "1");
     QDir().mkpath(kOutput);
-    gui::load_elements(registry_, libraries_, STYK_PLUGIN_BUILD_DIR);
+    styk::setup_element_registry(registry_, libraries_, {styk::build_plugin_directory()});
     window_ = std::make_unique<gui::MainWindow>(registry_);
     window_->show();
     QVERIFY(QTest::qWaitForWindowExposed(window_.get()));

@@ -11,7 +11,7 @@
 #include "refusal.hpp"
 #include "session/block_input.hpp"
 #include "styk/core/plugin_loader.hpp"
-#include "styk/elements/builtin.hpp"
+#include "styk/elements/element_setup.hpp"
 #include "styk/mesher/quality.hpp"
 
 namespace styk::gui {
@@ -76,8 +76,7 @@ double quadratic_body_volume(double half_angle) {
 class Block20Test : public ::testing::Test {
  protected:
   Block20Test() {
-    register_builtin_elements(registry);
-    load_plugins(registry, libraries, {STYK_PLUGIN_BUILD_DIR});
+    setup_element_registry(registry, libraries, {build_plugin_directory()});
   }
   PluginLibraries libraries;
   ElementRegistry registry;

@@ -15,7 +15,7 @@
 #include "session/revolve.hpp"
 #include "session/thermal_input.hpp"
 #include "styk/core/plugin_loader.hpp"
-#include "styk/elements/builtin.hpp"
+#include "styk/elements/element_setup.hpp"
 #include "styk/inp/reader.hpp"
 #include "styk/inp/writer.hpp"
 
@@ -28,8 +28,7 @@ using test::refusal;
 class ModelEditTest : public ::testing::Test {
  protected:
   ModelEditTest() {
-    register_builtin_elements(registry);
-    load_plugins(registry, libraries, {STYK_PLUGIN_BUILD_DIR});
+    setup_element_registry(registry, libraries, {build_plugin_directory()});
     apply(material_command(model, {"STEEL", 200000.0, 0.3, 0.0, 2e-5}));
     RevolveInput shaft;
     shaft.name = "SHAFT";

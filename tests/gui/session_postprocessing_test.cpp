@@ -12,6 +12,7 @@
 #include "session/selection_info.hpp"
 #include "styk/core/plugin_loader.hpp"
 #include "styk/elements/builtin.hpp"
+#include "styk/elements/element_setup.hpp"
 #include "styk/solver/analysis.hpp"
 
 namespace styk::gui {
@@ -33,8 +34,8 @@ class ContactPostprocessing : public ::testing::Test {
   static void SetUpTestSuite() {
     libraries_ = std::make_unique<PluginLibraries>();
     registry_ = std::make_unique<ElementRegistry>();
-    register_builtin_elements(*registry_);
-    ASSERT_TRUE(load_plugins(*registry_, *libraries_, {STYK_PLUGIN_BUILD_DIR}).empty());
+    ASSERT_TRUE(
+        setup_element_registry(*registry_, *libraries_, {build_plugin_directory()}).empty());
     doc_ = std::make_unique<Document>(*registry_);
     doc_->open_inp(kCylinders);
     doc_->attach_results(

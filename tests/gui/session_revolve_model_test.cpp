@@ -11,7 +11,7 @@
 #include "refusal.hpp"
 #include "session/revolve.hpp"
 #include "styk/core/plugin_loader.hpp"
-#include "styk/elements/builtin.hpp"
+#include "styk/elements/element_setup.hpp"
 #include "styk/mesher/quality.hpp"
 
 namespace styk::gui {
@@ -56,8 +56,7 @@ RevolveInput sleeve_input() {
 class RevolveTest : public ::testing::Test {
  protected:
   RevolveTest() {
-    register_builtin_elements(registry);
-    load_plugins(registry, libraries, {STYK_PLUGIN_BUILD_DIR});
+    setup_element_registry(registry, libraries, {build_plugin_directory()});
     Material m;
     m.name = "STEEL";
     m.young = 200000.0;

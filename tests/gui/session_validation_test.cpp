@@ -7,7 +7,7 @@
 #include "refusal.hpp"
 #include "session/validation.hpp"
 #include "styk/core/plugin_loader.hpp"
-#include "styk/elements/builtin.hpp"
+#include "styk/elements/element_setup.hpp"
 
 namespace styk::gui {
 namespace {
@@ -17,8 +17,7 @@ using test::refusal;
 class ValidationTest : public ::testing::Test {
  protected:
   ValidationTest() {
-    register_builtin_elements(registry);
-    load_plugins(registry, libraries, {STYK_PLUGIN_BUILD_DIR});
+    setup_element_registry(registry, libraries, {build_plugin_directory()});
     Material m;
     m.name = "STEEL";
     m.young = 210000.0;

@@ -6,15 +6,14 @@
 #include <Eigen/Core>
 
 #include "contact_scene.hpp"
-#include "styk/elements/builtin.hpp"
+#include "styk/elements/element_setup.hpp"
 #include "styk/mesher/box_mesh.hpp"
 
 namespace styk::render_test {
 
 ElementRegistry make_test_registry(PluginLibraries& libraries) {
   ElementRegistry registry;
-  register_builtin_elements(registry);
-  const auto diagnostics = load_plugins(registry, libraries, {STYK_PLUGIN_BUILD_DIR});
+  const auto diagnostics = setup_element_registry(registry, libraries, {build_plugin_directory()});
   if (!diagnostics.empty()) throw std::runtime_error(diagnostics.front().message);
   return registry;
 }

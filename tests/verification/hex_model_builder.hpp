@@ -1,7 +1,7 @@
 // Programmatic hexahedral models for the recovery tests (SPEC §2.4 single elements, §3.1.8 patch
 // test, unit tests of the stress averaging): elements of any registered type placed on the
 // trilinear map of eight corner points, nodes shared by position, plus the registry with the
-// build-tree plug-ins (C3D14, C3D21, C3D28). Header-only; needs STYK_PLUGIN_BUILD_DIR.
+// build-tree plug-ins (C3D14, C3D21, C3D28). Header-only; needs styk_element_setup.
 #pragma once
 
 #include <array>
@@ -14,7 +14,7 @@
 #include "styk/core/element.hpp"
 #include "styk/core/element_registry.hpp"
 #include "styk/core/plugin_loader.hpp"
-#include "styk/elements/builtin.hpp"
+#include "styk/elements/element_setup.hpp"
 
 namespace styk::test {
 
@@ -27,10 +27,10 @@ struct FullRegistry {
 
 inline std::unique_ptr<FullRegistry> registry_with_plugins() {
   auto out = std::make_unique<FullRegistry>();
-  register_builtin_elements(out->registry);
   // The build's plug-ins, and the template plug-in of docs/plugins.md (built into examples/).
-  out->diagnostics = load_plugins(out->registry, out->libraries,
-                                  {STYK_PLUGIN_BUILD_DIR, STYK_PLUGIN_BUILD_DIR "/examples"});
+  out->diagnostics =
+      setup_element_registry(out->registry, out->libraries,
+                             {build_plugin_directory(), build_plugin_directory() + "/examples"});
   return out;
 }
 

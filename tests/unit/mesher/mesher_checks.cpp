@@ -6,13 +6,12 @@
 #include <stdexcept>
 #include <vector>
 
-#include "styk/elements/builtin.hpp"
+#include "styk/elements/element_setup.hpp"
 
 namespace styk::test {
 
 Elements::Elements() {
-  register_builtin_elements(registry);
-  const auto problems = load_plugins(registry, libraries, {STYK_PLUGIN_BUILD_DIR});
+  const auto problems = setup_element_registry(registry, libraries, {build_plugin_directory()});
   for (const char* name : {"C3D14", "C3D21", "C3D28"})
     if (!registry.find(name))
       throw std::runtime_error(std::string("plug-in element ") + name + " not found in " +
