@@ -14,6 +14,7 @@
 #include "styk/core/element.hpp"
 #include "styk/core/element_registry.hpp"
 #include "styk/core/plugin_loader.hpp"
+#include "styk/elements/builtin.hpp"
 #include "styk/elements/element_setup.hpp"
 
 namespace styk::test {

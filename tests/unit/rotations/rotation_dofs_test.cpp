@@ -15,7 +15,7 @@
 
 #include "styk/core/element_registry.hpp"
 #include "styk/core/plugin_loader.hpp"
-#include "styk/elements/builtin.hpp"
+#include "styk/elements/element_setup.hpp"
 #include "styk/inp/reader.hpp"
 #include "styk/io/dat_writer.hpp"
 #include "styk/io/results_file.hpp"
@@ -36,9 +36,8 @@ struct Loaded {
 
 std::unique_ptr<Loaded> registry_with_frame() {
   auto loaded = std::make_unique<Loaded>();
-  register_builtin_elements(loaded->registry);
   const auto diagnostics =
-      load_plugins(loaded->registry, loaded->libraries, {STYK_ROTATION_PLUGIN_DIR});
+      setup_element_registry(loaded->registry, loaded->libraries, {STYK_ROTATION_PLUGIN_DIR});
   for (const PluginDiagnostic& d : diagnostics) ADD_FAILURE() << d.message;
   return loaded;
 }
