@@ -1,13 +1,15 @@
 // The template plug-in: the smallest complete element plug-in, meant to be copied. It registers
-// the 8-node trilinear brick once more under the name "TMPL8"; docs/plugins.md walks through it.
+// the 8-node trilinear brick once more under the name "TMPL8"; docs/plugins.md walks through it
+// and builds it outside the Styk tree with the CMakeLists.txt next to this file.
 // Everything a new element needs is here: node layout, faces, DER, integration rules, the
 // face-load rule, and the entry point (the last line).
 
 // The SDK: TElement, ElementRegistry and the STYK_PLUGIN entry macro.
 #include "styk/plugin/sdk.hpp"
 
-// The built-in hexahedral shape-function library (node tables, Abaqus faces, DER of the 8- and
-// 20-node bricks); a new element may use it or compute everything itself.
+// The SDK's hexahedral shape-function library (node tables, Abaqus faces, DER of the 8-, 20- and
+// 27-node bricks; quad_shapes.hpp, tet_shapes.hpp and wedge_shapes.hpp hold the other families);
+// a new element may use it or compute everything itself.
 #include "styk/elements/hex_shapes.hpp"
 
 #include <memory>
