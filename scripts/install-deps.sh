@@ -1,7 +1,7 @@
 #!/usr/bin/env bash
 # Installs the Debian 12 packages Styk needs. Idempotent: apt-get skips what is present, and the
 # package index is refreshed only when a package is missing.
-# Usage: scripts/install-deps.sh [--test]   (--test adds the test-only peers: calculix-ccx, time)
+# Usage: scripts/install-deps.sh [--test]   (--test adds the test-only peers: calculix-ccx and its test suite, time)
 set -euo pipefail
 
 packages=(
@@ -14,7 +14,7 @@ packages=(
   libfreetype-dev fonts-dejavu-core
 )
 if [[ "${1:-}" == "--test" ]]; then
-  packages+=(calculix-ccx time python3 xvfb xauth)
+  packages+=(calculix-ccx calculix-ccx-test time python3 xvfb xauth)
 fi
 
 missing=()

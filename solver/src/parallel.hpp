@@ -19,7 +19,8 @@ inline int resolve_threads(int requested) {
 }
 
 // body(begin, end, worker) is called for consecutive chunks [begin, end) of [0, n); `worker` is in
-// [0, threads) and lets the body use per-thread scratch space.
+// [0, threads) and lets the body use per-thread scratch space. Every `begin` is a multiple of
+// `chunk` (one thread: a single call for [0, n)), so begin / chunk names a chunk's own output.
 template <class Body>
 void parallel_for(int n, int threads, int chunk, const Body& body) {
   if (n <= 0) return;

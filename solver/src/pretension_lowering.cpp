@@ -75,6 +75,20 @@ void lower_pretension_sections(Model& lowered, const ElementRegistry& registry,
                          ": mean normal (" + std::to_string(n[0]) + ", " + std::to_string(n[1]) +
                          ", " + std::to_string(n[2]) + ")");
     }
+    // Plane and axisymmetric elements move in the x-y plane only: their nodes have no z dof, so
+    // the section takes n and t in that plane and no equation along d = z.
+    const bool planar = std::all_of(surface.faces.begin(), surface.faces.end(),
+                                    [&](const SurfaceFace& sf) {
+                                      const ElementForm form =
+                                          registry.find(lowered.elements[sf.element].type)->form();
+                                      return form == ElementForm::Planar ||
+                                             form == ElementForm::Axisymmetric;
+                                    });
+    if (planar && std::abs(n[2]) > 1e-12)
+      throw InputError(section.where, "*PRE-TENSION SECTION: the normal of surface " +
+                                          section.surface +
+                                          " of plane or axisymmetric elements must lie in the "
+                                          "x-y plane");
     const auto [t, d] = in_plane(n);
     // The copy's components the three equations eliminate: distinct, with the largest product of
     // the coefficients n_a t_b d_c (CalculiX picks such a "Latin hypercube" too).
@@ -106,7 +120,7 @@ void lower_pretension_sections(Model& lowered, const ElementRegistry& registry,
     const auto first = copy_of.begin();
     for (const auto& [node, copy] : copy_of) {
       equations.add({{copy, t}, {node, -t}}, copy, section.where, best[1]);
-      equations.add({{copy, d}, {node, -d}}, copy, section.where, best[2]);
+      if (!planar) equations.add({{copy, d}, {node, -d}}, copy, section.where, best[2]);
       if (node == first->first)
         equations.add({{copy, n}, {node, -n}, {reference, -Eigen::Vector3d::UnitX()}}, copy,
                       section.where, best[0]);

@@ -13,11 +13,10 @@ namespace {
 // Scratch of one worker, sized on first use and reused for every element.
 struct RecoveryScratch {
   ElementGeometry geometry;
-  Eigen::VectorXd ue, fe, dv;
+  Eigen::VectorXd ue, dv;
   Eigen::MatrixXd strain, stress, forces, moments, positions;
   std::vector<MaterialPoint> laws;
   std::vector<int> dofs;
-  std::vector<double> internal;  // internal force (global) on the dofs of the reaction nodes
 };
 
 // Nodal displacements and rotations (global components) from the solution on the active dofs.
@@ -107,13 +106,14 @@ void recover_increment(const Model& model, const PreparedModel& prepared,
   }
 
   std::vector<RecoveryScratch> scratch(threads);
-  for (RecoveryScratch& s : scratch) s.internal.assign(reaction_dofs, 0.0);
+  // The internal force of each element touching a reaction node, summed afterwards in element
+  // order: per-thread sums would depend on which thread took which elements, and RF with them.
+  std::vector<Eigen::VectorXd> element_force(model.element_count());
   parallel_for(model.element_count(), threads, 16, [&](int begin, int end, int worker) {
     RecoveryScratch& s = scratch[worker];
     for (int e = begin; e < end; ++e) {
       const TElement& element = *prepared.formulation[e];
       const int n = model.elements[e].node_count;
-      const int m = element.node_dofs();
       const int* nodes = model.element_nodes(e);
       element_geometry(model, e, s.geometry);
       prepared.element_dofs(model, e, s.dofs);
@@ -161,14 +161,22 @@ void recover_increment(const Model& model, const PreparedModel& prepared,
 
       // Internal force of the element (B-bar, incompatible modes, hourglass forces and the
       // thermal strain included).
-      element.internal_force(s.geometry, law, prepared.rule_kind[e], s.ue, s.fe, options, sigma0);
-      for (int k = 0; k < n; ++k) {
-        const int r = reaction_node[prepared.active_of_node[nodes[k]]];
-        if (r < 0) continue;
-        for (int c = 0; c < m; ++c) s.internal[reaction_first[r] + c] += s.fe(m * k + c);
-      }
+      element.internal_force(s.geometry, law, prepared.rule_kind[e], s.ue, element_force[e],
+                             options, sigma0);
     }
   });
+  std::vector<double> internal(reaction_dofs, 0.0);
+  for (int e = 0; e < model.element_count(); ++e) {
+    if (element_force[e].size() == 0) continue;
+    const int n = model.elements[e].node_count;
+    const int m = prepared.formulation[e]->node_dofs();
+    const int* nodes = model.element_nodes(e);
+    for (int k = 0; k < n; ++k) {
+      const int r = reaction_node[prepared.active_of_node[nodes[k]]];
+      if (r < 0) continue;
+      for (int c = 0; c < m; ++c) internal[reaction_first[r] + c] += element_force[e](m * k + c);
+    }
+  }
 
   // Constraint force in the nodal system, kept on the constrained dofs, reported globally: the
   // force part as RF, the moment part (nodes with rotations) as RM; a *TRANSFORM turns both.
@@ -179,14 +187,13 @@ void recover_increment(const Model& model, const PreparedModel& prepared,
     const int first = prepared.dof_offset[a];
     const Eigen::Matrix3d* R = input.rotations != nullptr ? input.rotations->of(a) : nullptr;
     for (int part = 0; part * 3 < prepared.node_dofs(a); ++part) {
-      Eigen::Vector3d internal = Eigen::Vector3d::Zero();
-      for (const RecoveryScratch& s : scratch)
-        for (int d = 0; d < 3; ++d) internal[d] += s.internal[reaction_first[r] + 3 * part + d];
-      if (R != nullptr) internal = R->transpose() * internal;
+      Eigen::Vector3d node_force;
+      for (int d = 0; d < 3; ++d) node_force[d] = internal[reaction_first[r] + 3 * part + d];
+      if (R != nullptr) node_force = R->transpose() * node_force;
       Eigen::Vector3d reaction = Eigen::Vector3d::Zero();
       for (int d = 0; d < 3; ++d) {
         const int dof = first + 3 * part + d;
-        if (constrained[dof]) reaction[d] = internal[d] - input.f[dof];
+        if (constrained[dof]) reaction[d] = node_force[d] - input.f[dof];
       }
       if (R != nullptr) reaction = *R * reaction;
       Vec3& target = (part == 0 ? out.RF : out.RM)[prepared.node_of_active[a]];

@@ -19,13 +19,17 @@ using SparseMatrix = Eigen::SparseMatrix<double>;
 using Triplet = Eigen::Triplet<double>;
 
 // The conductance of the whole mesh (unknowns x unknowns), element matrices computed in parallel.
+// The triplets are kept per chunk of elements and joined in element order, so setFromTriplets sums
+// each entry's contributions in the same order whatever thread computed them: the matrix, and so
+// the answer, is the same bit for bit on any number of threads.
 SparseMatrix assemble_conductance(const Model& model, const ScalarFieldModel& prepared,
                                   int threads) {
-  std::vector<std::vector<Triplet>> per_worker(threads);
-  parallel_for(model.element_count(), threads, 64, [&](int begin, int end, int worker) {
+  constexpr int kChunk = 64;
+  std::vector<std::vector<Triplet>> per_chunk((model.element_count() + kChunk - 1) / kChunk);
+  parallel_for(model.element_count(), threads, kChunk, [&](int begin, int end, int) {
     ElementGeometry g;
     Eigen::MatrixXd K;
-    std::vector<Triplet>& out = per_worker[worker];
+    std::vector<Triplet>& out = per_chunk[begin / kChunk];
     for (int e = begin; e < end; ++e) {
       element_geometry(model, e, g);
       scalar_conductance(*prepared.formulation[e], g, prepared.rule(e), prepared.conductivity[e],
@@ -39,7 +43,7 @@ SparseMatrix assemble_conductance(const Model& model, const ScalarFieldModel& pr
     }
   });
   std::vector<Triplet> all;
-  for (std::vector<Triplet>& part : per_worker) {
+  for (std::vector<Triplet>& part : per_chunk) {
     all.insert(all.end(), part.begin(), part.end());
     part = {};
   }

@@ -43,28 +43,29 @@ std::vector<double> assemble_eigenstrain_load(const Model& model, const Prepared
   threads = resolve_threads(threads);
   struct Scratch {
     ElementGeometry geometry;
-    Eigen::VectorXd fe;
-    std::vector<int> dofs;
-    std::vector<double> f;  // this worker's share of the global vector
   };
   std::vector<Scratch> scratch(threads);
+  // Element loads computed in parallel and summed afterwards in element order, so that the load,
+  // and the answer, is the same bit for bit whatever thread took which element.
+  std::vector<Eigen::VectorXd> element_load(model.element_count());
   parallel_for(model.element_count(), threads, 32, [&](int begin, int end, int worker) {
     Scratch& s = scratch[worker];
-    if (s.f.empty()) s.f.assign(prepared.active_dofs(), 0.0);
     for (int e = begin; e < end; ++e) {
       if (!states.loaded(e)) continue;  // no change, no load (and no *EXPANSION needed)
       element_geometry(model, e, s.geometry);
       const ElementOptions options{model.sections[model.elements[e].section].selective_volumetric};
       prepared.formulation[e]->eigenstrain_load(s.geometry, states.law(e), prepared.rule_kind[e],
-                                                s.fe, options, states.initial_stress(e));
-      prepared.element_dofs(model, e, s.dofs);
-      for (std::size_t i = 0; i < s.dofs.size(); ++i)
-        s.f[s.dofs[i]] += s.fe(static_cast<Eigen::Index>(i));
+                                                element_load[e], options, states.initial_stress(e));
     }
   });
   std::vector<double> f(prepared.active_dofs(), 0.0);
-  for (const Scratch& s : scratch)
-    for (std::size_t i = 0; i < s.f.size(); ++i) f[i] += s.f[i];
+  std::vector<int> dofs;
+  for (int e = 0; e < model.element_count(); ++e) {
+    if (element_load[e].size() == 0) continue;
+    prepared.element_dofs(model, e, dofs);
+    for (std::size_t i = 0; i < dofs.size(); ++i)
+      f[dofs[i]] += element_load[e](static_cast<Eigen::Index>(i));
+  }
   return f;
 }
 

@@ -47,6 +47,12 @@ void DeckReader::on_orientation(const KeywordLine& kw) {
     throw InputError(kw.where, "orientation " + orientation.name + " is defined twice (first at " +
                                    existing->second.where.str() + ")");
   const CoordinateSystem system = system_value(kw.find("SYSTEM"), kw.where, "SYSTEM");
+  // CalculiX's default DEFINITION=COORDINATES is what Styk reads; NODES names the points by node.
+  if (const Parameter* definition = kw.find("DEFINITION");
+      definition && normalize_name(definition->value) != "COORDINATES")
+    throw InputError(kw.where, "DEFINITION=" + definition->value + " of " + kw.label() +
+                                   " is not supported; Styk reads DEFINITION=COORDINATES (the "
+                                   "default): give the points' coordinates");
   const std::optional<DataLine> line = single_data_line(kw, true, kAxesLayout);
   expect_fields(*line, 6, 6,
                 std::string(kAxesLayout) +

@@ -45,7 +45,8 @@ const std::vector<DeckReader::KeywordSpec>& DeckReader::keywords() {
        {{"ELSET", true, V::Required},
         {"MATERIAL", true, V::Required},
         {"TECHNIQUE", false, V::Required},  // Styk-only (B-bar)
-        {"ORIENTATION", false, V::Required}},
+        {"ORIENTATION", false, V::Required},
+        {"OFFSET", false, V::Required}},  // CalculiX; 0 only
        &DeckReader::on_solid_section,
        kData},
       {"BEAM SECTION",
@@ -115,14 +116,19 @@ const std::vector<DeckReader::KeywordSpec>& DeckReader::keywords() {
        S::Step,
        {{"NSET", false, V::Required},
         {"GLOBAL", false, V::Required},
-        {"FREQUENCY", false, V::Required}},
+        {"FREQUENCY", false, V::Required},
+        {"OUTPUT", false, V::Required}},
        &DeckReader::on_node_file,
        kData},
       {"EL FILE",
        S::Step,
        {{"ELSET", false, V::Required},
         {"GLOBAL", false, V::Required},
-        {"FREQUENCY", false, V::Required}},
+        {"FREQUENCY", false, V::Required},
+        {"OUTPUT", false, V::Required},
+        // CalculiX: beams' section forces in the .frd instead of their stresses; Styk's results
+        // hold both for every beam and shell (SF, SM), so the request is always met.
+        {"SECTION FORCES", false, V::None}},
        &DeckReader::on_el_file,
        kData},
       {"SECTION PRINT",
@@ -173,7 +179,9 @@ const std::vector<DeckReader::KeywordSpec>& DeckReader::keywords() {
       // Local systems and constraints (constraint_keywords.cpp)
       {"ORIENTATION",
        S::Model,
-       {{"NAME", true, V::Required}, {"SYSTEM", false, V::Required}},
+       {{"NAME", true, V::Required},
+        {"SYSTEM", false, V::Required},
+        {"DEFINITION", false, V::Required}},
        &DeckReader::on_orientation,
        kData},
       {"TRANSFORM",

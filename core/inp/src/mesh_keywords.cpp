@@ -40,17 +40,42 @@ void DeckReader::on_heading(const KeywordLine&) {
   }
 }
 
+namespace {
+
+// CalculiX reads a node's coordinates from fields 2-4 and defaults a missing or blank one to 0
+// (a line with the id alone places the node at the origin); it ignores any later field. Styk
+// ignores a later field only when it is blank or zero, so that no coordinate is lost to a
+// stray comma unnoticed.
+Vec3 node_coordinates(const DataLine& line) {
+  Vec3 x{0.0, 0.0, 0.0};
+  for (std::size_t i = 1; i < line.fields.size(); ++i) {
+    const bool coordinate = i <= 3;
+    const std::string what = coordinate
+                                 ? std::string(1, static_cast<char>('x' + i - 1)) + " coordinate"
+                                 : "after z, ignored";
+    if (line.fields[i].empty()) continue;
+    const double value = real_field(line, i, what);
+    if (coordinate) {
+      x[i - 1] = value;
+    } else if (value != 0.0) {
+      throw InputError(line.where, "*NODE data line has " + std::to_string(line.fields.size()) +
+                                       " fields, expected node id, x, y, z; field " +
+                                       std::to_string(i + 1) + " (" + line.fields[i] +
+                                       ") would be ignored, as CalculiX ignores it: check the "
+                                       "commas of this line");
+    }
+  }
+  return x;
+}
+
+}  // namespace
+
 void DeckReader::on_node(const KeywordLine& kw) {
   NodeSet* set = kw.find("NSET") ? &nset(set_name(kw, "NSET"), kw.where) : nullptr;
   while (std::optional<DataLine> line = next_data_line()) {
     if (files_.empty() || files_.back() != line->where.file) files_.push_back(line->where.file);
-    // CalculiX: a line with the id alone places the node at the origin.
-    expect_fields(*line, 1, 4, "node id, x, y, z (missing coordinates default to 0)");
     const Id id = id_field(*line, 0, "node id");
-    Vec3 x{0.0, 0.0, 0.0};
-    for (std::size_t i = 1; i < line->fields.size(); ++i)
-      x[i - 1] =
-          real_field(*line, i, std::string(1, static_cast<char>('x' + i - 1)) + " coordinate");
+    const Vec3 x = node_coordinates(*line);
     const int existing = model_.node_index(id);
     if (existing >= 0) {
       const auto [f, l] = node_lines_[existing];

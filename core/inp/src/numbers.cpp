@@ -2,6 +2,7 @@
 
 #include <charconv>
 #include <cmath>
+#include <string>
 #include <system_error>
 
 namespace styk::inp {
@@ -17,19 +18,33 @@ std::string_view without_plus(std::string_view text) {
   return text;
 }
 
+// CalculiX reads numbers with Fortran's list-directed input, where D is an exponent letter like
+// E ("1.d0", "2.5D-3"): the text with its one D or d read as e, or empty when it has none.
+std::string with_e_exponent(std::string_view text) {
+  const std::size_t d = text.find_first_of("dD");
+  if (d == std::string_view::npos || d == 0 || text.find_first_of("dD", d + 1) != std::string_view::npos)
+    return {};
+  std::string e(text);
+  e[d] = 'e';
+  return e;
+}
+
 // Converts text; returns an empty string on success, otherwise what is wrong with it.
 std::string to_real(std::string_view text, double& value) {
   if (text.empty()) return "empty, expected a number";
   const std::string_view digits = without_plus(text);
-  const auto [end, ec] = std::from_chars(digits.data(), digits.data() + digits.size(), value);
-  if (ec == std::errc::result_out_of_range) return "out of range for a double, read " + quote(text);
-  if (ec != std::errc() || end != digits.data() + digits.size()) {
-    std::string why = "expected a number, read " + quote(text);
-    if (text.find_first_of("dD") != std::string_view::npos &&
-        text.find_first_of("0123456789") != std::string_view::npos)
-      why += " (Fortran 'D' exponents are not supported; write E)";
-    return why;
+  auto [end, ec] = std::from_chars(digits.data(), digits.data() + digits.size(), value);
+  if (ec == std::errc() && end != digits.data() + digits.size()) {
+    const std::string e = with_e_exponent(digits);
+    if (!e.empty()) {
+      const auto parsed = std::from_chars(e.data(), e.data() + e.size(), value);
+      ec = parsed.ec;
+      end = parsed.ptr == e.data() + e.size() ? digits.data() + digits.size() : digits.data();
+    }
   }
+  if (ec == std::errc::result_out_of_range) return "out of range for a double, read " + quote(text);
+  if (ec != std::errc() || end != digits.data() + digits.size())
+    return "expected a number, read " + quote(text);
   if (!std::isfinite(value)) return "expected a finite number, read " + quote(text);
   return {};
 }

@@ -38,6 +38,15 @@ void DeckReader::read_output_parameters(const KeywordLine& kw, OutputRequest& re
     request.totals_only = value == "ONLY";
   }
   if (const Parameter* global = kw.find("GLOBAL")) request.global = yes_no(*global, kw);
+  // CalculiX: OUTPUT=2D|3D chooses whether the .frd shows plane, axisymmetric, beam and shell
+  // elements as drawn or as their 3D expansion. Styk never expands them (its results hold the
+  // elements as defined), so both values describe what it writes.
+  if (const Parameter* output = kw.find("OUTPUT")) {
+    const std::string value = normalize_name(output->value);
+    if (value != "2D" && value != "3D")
+      throw InputError(kw.where, "OUTPUT=" + output->value + " of " + kw.label() +
+                                     ": expected 2D or 3D");
+  }
   for (const char* name : {"FREQUENCY", "FREQUENCYF"})
     if (const Parameter* frequency = kw.find(name)) {
       const std::int64_t n = integer_value(frequency->value, std::string(name) + "=", kw.where);

@@ -51,6 +51,13 @@ void DeckReader::on_solid_section(const KeywordLine& kw) {
   // The material axes: an *ORIENTATION, which may be defined later (checked in assign_sections).
   if (const Parameter* orientation = kw.find("ORIENTATION"))
     section.orientation = normalize_name(orientation->value);
+  // CalculiX: OFFSET moves the mid-plane of a plane element's 3D expansion; 0 is the default, and
+  // Styk's plane elements are not expanded, so only 0 means what the deck says.
+  if (const Parameter* offset = kw.find("OFFSET");
+      offset && real_value(offset->value, "OFFSET=", kw.where) != 0.0)
+    throw InputError(kw.where, "OFFSET=" + offset->value +
+                                   " on *SOLID SECTION is not supported; Styk reads OFFSET=0 "
+                                   "(plane elements are not expanded into 3D)");
   if (const std::optional<DataLine> line = single_data_line(kw, false, "thickness")) {
     expect_fields(*line, 1, 1, "thickness");
     const double t = real_field(*line, 0, "thickness");
