@@ -128,9 +128,10 @@ JointReport spline_study(const ElementRegistry& registry, const JointOptions& op
   return report;
 }
 
-// The hub's largest element-mean Mises stress at 1000 N m as the mesh is refined: where it sits
-// (centre z, r), its integration-point peak, and the largest element mean at least 5 mm (in the
-// r-z plane) from the re-entrant corner where the arm (r = 40) meets the flange (z = 100).
+// The hub's largest element-mean Mises stress at 1000 N m as the mesh is refined, and with the
+// flange at the shoulder instead of the shaft's end (the lost figure decides): where the peak sits
+// (element centre z, r), the largest integration-point Mises stress of that element, the rim's
+// displacement. Headlines: the finest mesh and the flange at the shoulder.
 void p3g_mesh_series(const ElementRegistry& registry, const JointOptions& options,
                      JointReport& report) {
   struct Density {
@@ -150,9 +151,10 @@ void p3g_mesh_series(const ElementRegistry& registry, const JointOptions& option
                  {"default, flange at the shoulder", {{"flange-at", "shoulder"}}}};
   DataTable table{"hub-mises-mesh",
                   {"mesh", "elements", "hub_mises_MPa", "ip_mises_MPa", "peak_z_mm", "peak_r_mm",
-                   "away_from_corner_MPa"},
+                   "rim_displacement_mm"},
                   {}};
-  const auto away = [](const Vec3& c) { return std::hypot(radius(c) - 40.0, c[2] - 100.0) > 5.0; };
+  std::vector<StressPeak> peaks;
+  std::vector<double> rims;
   for (std::size_t k = 0; k < densities.size(); ++k) {
     std::map<std::string, std::string> args = p3g_args(options.coarse);
     for (const auto& [key, value] : densities[k].args) args[key] = value;
@@ -160,12 +162,55 @@ void p3g_mesh_series(const ElementRegistry& registry, const JointOptions& option
     const SolvedModel s = build_and_solve("p3g-joint", args, registry, options,
                                           "120 deg sector, 1000 N m, " + densities[k].name, report);
     const IncrementResult& inc = s.results.increments.back();
-    const StressPeak peak = element_mises_peak(s.model, inc, "HUB");
-    const double rest = largest_element_mises(s.model, inc, "HUB", away);
+    peaks.push_back(element_mises_peak(s.model, inc, "HUB"));
+    double rim = 0;
+    for (int n : s.model.nsets.at("FLANGE_RIM").nodes)
+      rim = std::max(rim, std::hypot(inc.U[n][0], inc.U[n][1], inc.U[n][2]));
+    rims.push_back(rim);
+    const StressPeak& peak = peaks.back();
     table.rows.push_back({double(k), double(s.model.element_count()), peak.mean, peak.point,
-                          peak.centre[2], radius(peak.centre), rest});
+                          peak.centre[2], radius(peak.centre), rim});
   }
   report.tables.push_back(table);
+  const std::size_t finest = densities.size() - 2, shoulder = densities.size() - 1;
+  report.headlines.push_back({"hub_ip_mises",
+                              "Largest integration-point Mises of the hub's peak element, 1000 N m",
+                              peaks[0].point, "MPa", "141", ""});
+  report.headlines.push_back({"hub_mises_refined",
+                              "Hub element-mean Mises, finest mesh (" + densities[finest].name + ")",
+                              peaks[finest].mean, "MPa", "141", ""});
+  report.headlines.push_back({"hub_ip_mises_refined",
+                              "Its integration-point peak, finest mesh", peaks[finest].point, "MPa",
+                              "141", ""});
+  report.headlines.push_back({"hub_mises_flange_shoulder",
+                              "Hub element-mean Mises with the flange at the shoulder",
+                              peaks[shoulder].mean, "MPa", "141", ""});
+  report.headlines.push_back({"rim_displacement_flange_shoulder",
+                              "Rim displacement with the flange at the shoulder", rims[shoulder],
+                              "mm", "0.41", ""});
+  std::string series;
+  for (std::size_t k = 0; k + 1 < densities.size(); ++k)
+    series += (k ? ", " : "") + fixed(peaks[k].mean, 1) + " (" + fixed(peaks[k].point, 1) + ")";
+  report.findings.push_back(
+      "Hub Mises against the published 141 MPa, measured (table hub-mises-mesh). Where: the "
+      "largest element mean sits at r = " +
+      fixed(radius(peaks[0].centre), 1) + ", z = " + fixed(peaks[0].centre[2], 1) +
+      ": the arm's outer surface (r 40) over a lobe, next to the hub's free face z = 80, where "
+      "the lobes' pressure bends the hub's wall (7.75 thick over a lobe: 40 - 32.25) hoopwise. "
+      "Mesh: refining the hub raises it, element mean (integration-point peak) " +
+      series +
+      " MPa: the element mean converges from below towards the surface value, away from 141; the "
+      "thesis' full model (9500 elements) has the density of this sector (3 x " +
+      fixed(table.rows[0][1], 0) +
+      "). Evaluation point: an integration point or an extrapolated node only reads higher than "
+      "the element mean. Geometry: the flange's place on the hub is in the lost figure; with the "
+      "flange at the shoulder (the arm at the shaft's end) the peak moves to the bore over a lobe "
+      "at z = " +
+      fixed(peaks[shoulder].centre[2], 1) + ": " + fixed(peaks[shoulder].mean, 1) +
+      " MPa, but the rim displacement drops to " + fixed(rims[shoulder], 3) +
+      " mm against the published 0.41. Neither place reproduces both published values; the "
+      "builder keeps the flange at the shaft's end (rim displacement " +
+      fixed(rims[0], 3) + " mm) and the hub Mises difference is the stand-in hub geometry's.");
 }
 
 JointReport p3g_study(const ElementRegistry& registry, const JointOptions& options) {
