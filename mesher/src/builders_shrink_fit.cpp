@@ -244,12 +244,6 @@ FitCase read_fit_case(const BuilderParams& p, const ElementRegistry& registry) {
   c.notch.relief_length = p.positive("relief-length");
   if (c.notch.groove_lip + c.notch.groove_width >= kSleeveRadius - kShaftRadius)
     p.fail("--groove-lip + --groove-width must stay below the sleeve's wall 5");
-  if (c.notch.notch == Notch::FaceGroove &&
-      2 * c.notch.groove_rows(c.mesh.fit_rows) >= c.mesh.fit_rows)
-    p.fail("--groove-depth " + fmt_number(c.notch.groove_depth) + " takes " +
-           std::to_string(c.notch.groove_rows(c.mesh.fit_rows)) + " of the " +
-           std::to_string(c.mesh.fit_rows) +
-           " fit rows at each end: the grooves must leave rows between them");
   if (c.notch.relief_depth >= kSleeveRadius - kShaftRadius ||
       c.notch.relief_length > 0.5 * (kFitEnd - kFitStart))
     p.fail("--relief-depth must stay below the sleeve's wall 5 and --relief-length at most half "
@@ -268,6 +262,12 @@ FitCase read_fit_case(const BuilderParams& p, const ElementRegistry& registry) {
   c.mesh.sleeve_rings = p.count("sleeve-rings");
   c.mesh.fit_rows = p.count("fit-rows");
   c.mesh.end_rows = p.count("end-rows");
+  if (c.notch.notch == Notch::FaceGroove &&
+      2 * c.notch.groove_rows(c.mesh.fit_rows) >= c.mesh.fit_rows)
+    p.fail("--groove-depth " + fmt_number(c.notch.groove_depth) + " takes " +
+           std::to_string(c.notch.groove_rows(c.mesh.fit_rows)) + " of the " +
+           std::to_string(c.mesh.fit_rows) +
+           " fit rows at each end: the grooves must leave rows between them");
   c.alpha = p.positive("alpha");
   c.dT = p.number("dT");
   c.mu_text = p.text("mu");
