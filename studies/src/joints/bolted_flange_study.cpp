@@ -282,11 +282,12 @@ void sensitivity_runs(const ElementRegistry& registry, const JointOptions& optio
       "points the wrong way. Each candidate changed alone from the 15 kN / 5 mm run (bolt force "
       "change from the preload to 8 MPa " +
       fixed(base_change, 3) + " kN, leak " + fixed(base.leak, 1) + " MPa): " + summary +
-      " (table sensitivity: candidate 0 = as built, 1-5 in this order). The bolt force falls "
-      "even without penetration or end-cap thrust: the bore pressure dilates the neck and the "
-      "fluid lifts the ring's inner part, which turns the ring about the gasket's outer edge and "
-      "moves the bolt head (outside the gasket, on PCD 130) towards the gasket. A stiffer ring "
-      "turns less: the fall shrinks and the leak pressure rises towards the published 16 MPa. "
+      " (table sensitivity: candidate 0 = as built, 1-5 in this order; without penetration no "
+      "leak is defined, 0 there). The bolt force falls without penetration and without the "
+      "end-cap thrust as well, so neither is its cause; the loads turn the ring about the "
+      "gasket's outer edge, which moves the bolt head (outside the gasket, on PCD 130) towards "
+      "the gasket, and a stiffer ring turns less: the fall shrinks and the leak pressure rises "
+      "towards the published 16 MPa. "
       "Measured cause: the stand-in ring (20 thick; the thesis' figure with the ring, neck and "
       "hub is lost) is more flexible than the thesis' flange.");
 }
@@ -348,8 +349,8 @@ JointReport bolted_flange_study(const ElementRegistry& registry, const JointOpti
       fixed(runs[0].leak / 16, 2) +
       " of the thesis' pressure. The bolt force falls with the pressure instead of rising (" +
       fixed(runs[0].bolt.front(), 2) + " kN after preload, " + fixed(bolt_at(runs[0], p_check), 2) +
-      " kN at 8 MPa), so the gasket unloads faster than with a rising bolt force; the next "
-      "finding measures why.");
+      " kN at 8 MPa), so the gasket unloads faster than with a rising bolt force; the finding "
+      "\"Why the bolt force falls\" measures why.");
   report.findings.push_back("The 3.5 mm gasket leaks at " + fixed(runs[2].leak, 2) +
                             " MPa against " + fixed(runs[0].leak, 2) +
                             " MPa for 5 mm: the thickness has little effect, as published.");
