@@ -137,13 +137,14 @@ void mesh_bolted_flange(Mesh& mesh, const std::string& type, const FlangeLayout&
     throw std::invalid_argument(
         "bolted flange: the ring needs two layers (gasket and head contact layers differ)");
   if (m.gasket_layers < 1 || m.neck_layers < 1 || m.outer_rings < 1 || m.shank_layers < 1 ||
-      m.head_layers < 1 || !(m.gasket_half > 0))
+      m.head_layers < 1 || !(m.gasket_half > 0) ||
+      !(m.ring_thickness > 0))
     throw std::invalid_argument("bolted flange: counts must be >= 1, the gasket thicker than 0");
-  const double z_bottom = m.gasket_half, z_top = z_bottom + G::kRingThickness;
+  const double z_bottom = m.gasket_half, z_top = z_bottom + m.ring_thickness;
   const double z_neck = z_top + G::kNeckHeight, z_head = z_top + G::kHeadHeight;
   const auto bottom_plan = [](double) { return 0.0; };
   const auto top_plan = [](double) { return 1.0; };
-  const auto ring_plan = [=](double z) { return (z - z_bottom) / G::kRingThickness; };
+  const auto ring_plan = [=](double z) { return (z - z_bottom) / m.ring_thickness; };
 
   // Inner region: the neck wall's radial lines (r 25..30 at the top) and the rest up to the box;
   // at the bottom (and in the gasket) the gasket_rings elements are of equal width.

@@ -52,6 +52,9 @@ struct FlangeParams {
   // The 45 deg sector around one whole bolt with a cyclic symmetry tie (N = 8) instead of the
   // 22.5 deg half with symmetry planes.
   bool cyclic = false;
+  // The pipe's end-cap thrust p pi r_i^2 as a tension on the neck top (no: the pipe's axial load
+  // is taken elsewhere, e.g. a pipe held at both ends; for measuring what the thrust does).
+  bool end_cap = true;
 };
 
 FlangeParams read_params(const BuilderParams& p) {
@@ -65,6 +68,8 @@ FlangeParams read_params(const BuilderParams& p) {
         "--neck-rings must be smaller than --gasket-rings (the neck wall is part of the gasket's "
         "width)");
   f.layout.ring_layers = p.count("ring-layers", 2);
+  f.layout.ring_thickness = p.positive("ring-thickness");
+  f.end_cap = p.choice("end-cap", {"yes", "no"}) == "yes";
   f.layout.neck_layers = p.count("neck-layers");
   f.layout.gasket_layers = p.count("gasket-layers");
   f.layout.outer_rings = p.count("outer-rings");
@@ -119,11 +124,11 @@ double sector_bolt_force(const Results& results, const std::vector<int>& bolt_en
 // (the cyclic sector: the whole shank over twice that area).
 double estimated_shortening(const FlangeParams& f, double sector_force) {
   const double share = f.cyclic ? 2.0 : 1.0;
-  const double grip = f.layout.gasket_half + G::kRingThickness;
+  const double grip = f.layout.gasket_half + f.layout.ring_thickness;
   const double bolt = share * 0.5 * 3.14159265358979323846 * G::kShankRadius * G::kShankRadius;
   const double gasket =
       share * 0.5 * G::kSector * (G::kGasketOuter * G::kGasketOuter - G::kBore * G::kBore);
-  const double compliance = grip / (bolt * f.young) + G::kRingThickness / (gasket * f.young) +
+  const double compliance = grip / (bolt * f.young) + f.layout.ring_thickness / (gasket * f.young) +
                             f.layout.gasket_half / (gasket * f.young_gasket);
   return sector_force * compliance;
 }
@@ -181,7 +186,7 @@ void mesh_flange(Mesh& mesh, const ElementRegistry& registry, const FlangeParams
     mesh.add_to_surface(kCyclicSlaveFaces, faces_on_half_plane(mesh, -G::kSector, tol));
     mesh.add_to_surface(kCyclicMasterFaces, faces_on_half_plane(mesh, G::kSector, tol));
   }
-  const double z_neck = f.layout.gasket_half + G::kRingThickness + G::kNeckHeight;
+  const double z_neck = f.layout.gasket_half + f.layout.ring_thickness + G::kNeckHeight;
   std::vector<int> walls = mesh.element_sets.at("FLANGE");
   walls.insert(walls.end(), mesh.element_sets.at("GASKET").begin(),
                mesh.element_sets.at("GASKET").end());
@@ -275,7 +280,7 @@ Step pressure_step(Model& model, const Mesh& mesh, const FlangeParams& f) {
   pressure.procedure.initial_increment = 1.0 / increments;
   pressure.procedure.fixed_increments = true;
   pressure_on(pressure, mesh, "BORE", f.pressure);
-  pressure_on(pressure, mesh, "NECK_TOP", -kNeckTension * f.pressure);
+  if (f.end_cap) pressure_on(pressure, mesh, "NECK_TOP", -kNeckTension * f.pressure);
   pressure.outputs = model.steps.back().outputs;
   if (f.penetration) add_pressure_penetration(model, mesh, f.pressure, pressure);
   return pressure;
@@ -294,12 +299,14 @@ BuildResult bolted_flange(const BuilderParams& p, const ElementRegistry& registr
           std::string(f.cyclic ? "1/16 model (45 deg sector around one bolt, cyclic symmetry, N = "
                                  "8; half joint), "
                                : "1/32 model (22.5 deg sector, half joint), ") +
-          f.family + ": flange D50/D165 x 20, neck D60/D50 x 30, gasket D50/D108 x " +
+          f.family + ": flange D50/D165 x " + fmt_number(f.layout.ring_thickness) +
+          ", neck D60/D50 x 30, gasket D50/D108 x " +
           fmt_number(2 * f.layout.gasket_half) + " (E " + fmt_number(f.young_gasket) +
           "), M16 on PCD 130, mu = " + f.mu_text + "; preload " + fmt_number(f.preload / 1000) +
           " kN (" + fmt_number(bolt_force / 1000) + " kN in the " +
           (f.cyclic ? "sector's bolt" : "half bolt of the sector") + "), then " +
           fmt_number(f.pressure) + " MPa inside" +
+          (f.end_cap ? "" : " without the end-cap thrust") +
           (f.penetration ? ", penetrating the opened gasket interface" : "") +
           ". Published: leak at 16 MPa (experiment 16.5)",
       {{"FLANGE", "STEEL_FLANGE", f.young, f.poisson, {}},
@@ -348,6 +355,10 @@ void add_bolted_flange_builder(std::vector<BuilderInfo>& all) {
          "Styk-only; leak when it reaches the gasket's outer edge): yes, no, auto = yes except "
          "for the CalculiX families C3D8 and C3D20"},
         {"gasket-thickness", "5", "gasket thickness (the model holds half; variant 3.5)"},
+        {"ring-thickness", "20", "flange ring thickness (stand-in; the thesis' figure is lost)"},
+        {"end-cap", "yes",
+         "yes: the end-cap thrust p pi 25^2 pulls the neck top (2.2727 p); no: left out (the "
+         "pipe's axial load taken elsewhere)"},
         {"sector", "no",
          "yes: the 45 deg sector around one whole bolt with *TIE, CYCLIC SYMMETRY (N = 8) "
          "instead of the 22.5 deg half with symmetry planes (the bolt's plane keeps its mirror "

@@ -1,6 +1,7 @@
 // Builder of the SPEC §4.5 P3G polygon joint (DIN 32711: D 60, n 3, e 2.25), full model: shaft
 // 120 long (z = 0 fixed; round Ø65 up to z = 80, the polygon over the hub), hub z = 80..120 =
-// arm Ø80 x 20 + flange Ø155 x 20 at the shaft's end; the hub's bore is the polygon, meshed with
+// arm Ø80 x 20 + flange Ø155 x 20 at the shaft's end (--flange-at shoulder: the flange next to
+// the round part, the arm at the shaft's end); the hub's bore is the polygon, meshed with
 // coincident nodes, frictionless; 1000 N m on the flange rim.
 //
 // Section: a hexagonal core (sides centred on v = 60 k, alternately on the polygon's flats and
@@ -92,11 +93,18 @@ BuildResult p3g_joint(const BuilderParams& p, const ElementRegistry& registry) {
   Mesh& mesh = r.mesh;
   const std::string type = base_type(registry, fam);
   const int n = m.around / 6;
-  const double row = (kFlangeStart - kHubStart) / m.arm_rows;
+  // The flange's place on the hub is in the thesis' lost figure: at the shaft's end (z 100-120,
+  // the arm next to the shoulder) or at the shoulder (z 80-100, the arm at the shaft's end).
+  const bool flange_at_shoulder = p.choice("flange-at", {"end", "shoulder"}) == "shoulder";
+  const double flange_z0 = flange_at_shoulder ? kHubStart : kFlangeStart;
+  const double arm_z0 = flange_at_shoulder ? kFlangeStart : kHubStart;
+  const double hub_half = kFlangeStart - kHubStart;
+  const int first_rows = flange_at_shoulder ? m.flange_rows : m.arm_rows;
+  const double row = hub_half / first_rows;
   const AxialSegment round{0, kHubStart, m.shaft_rows,
                            1.0 / continuing_grading(row, kHubStart, m.shaft_rows)};
-  const AxialSegment arm{kHubStart, kFlangeStart, m.arm_rows, 1.0};
-  const AxialSegment flange{kFlangeStart, kShaftLength, m.flange_rows, 1.0};
+  const AxialSegment arm{arm_z0, arm_z0 + hub_half, m.arm_rows, 1.0};
+  const AxialSegment flange{flange_z0, flange_z0 + hub_half, m.flange_rows, 1.0};
   const double flange_grading = kFlangeRadius / kArmRadius;
   // The faces along the polygon inside the round part, both sides: a C3D28 layer on the
   // contact surface closes through them (docs/mesher.md).
@@ -104,6 +112,7 @@ BuildResult p3g_joint(const BuilderParams& p, const ElementRegistry& registry) {
   const std::string round_polygon = "__ROUND_POLYGON";
   for (const AxialSegment& seg : {round, arm, flange}) {
     const bool hub = seg.z0 >= kHubStart;
+    const bool is_flange = hub && seg.z0 == flange_z0;
     mesh_hexagon_core(mesh, type, m.core, n, seg, "SHAFT");
     for (int k = 0; k < 6; ++k) {
       const auto spec = [&](int radial, double grading, const char* elset) {
@@ -121,7 +130,7 @@ BuildResult p3g_joint(const BuilderParams& p, const ElementRegistry& registry) {
       }
       mesh_block(mesh, curve_ring(polygon(k), circle(k, kArmRadius, 0.5, n), seg),
                  spec(m.hub_rings, 1, "HUB"));
-      if (seg.z0 < kFlangeStart) continue;
+      if (!is_flange) continue;
       const Block rim = mesh_block(
           mesh, curve_ring(circle(k, kArmRadius, 0.5, n), circle(k, kFlangeRadius, 0, n), seg),
           spec(m.flange_rings, flange_grading, "HUB"));
@@ -152,7 +161,8 @@ BuildResult p3g_joint(const BuilderParams& p, const ElementRegistry& registry) {
       mesh,
       "SPEC 4.5 P3G polygon joint (DIN 32711, D 60, n 3, e 2.25), " + fam +
           ": shaft 120 (round D65 to z 80, z 0 fixed), hub z 80-120 = arm D80 x 20 + flange "
-          "D155 x 20, frictionless bore; " +
+          "D155 x 20 (flange at the " +
+          std::string(flange_at_shoulder ? "shoulder" : "shaft's end") + "), frictionless bore; " +
           fmt_number(torque) + " N m on the flange rim" +
           (sector ? " (120 deg sector with cyclic symmetry, N = 3: a third of it)" : "") +
           ". Published: max displacement 0.41 mm at the flange rim, max "
@@ -162,12 +172,12 @@ BuildResult p3g_joint(const BuilderParams& p, const ElementRegistry& registry) {
   add_contact(r.model, "POLYGON", "HUB_BORE", "SHAFT_POLYGON", std::nullopt);
 
   if (!sector) {
-    add_joint_torque_step(r, registry, fam, torque, 0.5 * (kFlangeStart + kShaftLength));
+    add_joint_torque_step(r, registry, fam, torque, flange_z0 + 0.5 * hub_half);
     return r;
   }
   const SectorBoundary boundary = sector_boundary(mesh, kJointSectors, 1e-7 * mesh.size());
   add_cyclic_symmetry(r.model, boundary);
-  add_joint_torque_step(r, registry, fam, torque, 0.5 * (kFlangeStart + kShaftLength), &boundary);
+  add_joint_torque_step(r, registry, fam, torque, flange_z0 + 0.5 * hub_half, &boundary);
   return r;
 }
 
@@ -188,6 +198,9 @@ void add_p3g_joint_builder(std::vector<BuilderInfo>& all) {
         {"hub-rings", "10", "radial elements of the hub from the bore to Ø80"},
         {"flange-rings", "28", "radial elements of the flange, Ø80 to Ø155 (graded)"},
         {"core", "25", "circumradius of the shaft's hexagonal core"},
+        {"flange-at", "end",
+         "where the flange sits on the hub (lost figure): end (z 100-120, the shaft's end) or "
+         "shoulder (z 80-100, next to the round part)"},
         {"torque", "1000", "torque on the flange rim (N m)"},
         sector_param(kJointSectors),
         {"young", "200000", "Young's modulus E (MPa)"},

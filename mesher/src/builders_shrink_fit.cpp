@@ -3,6 +3,9 @@
 // O-grid (a square core and two ring blocks per quarter); the full model is four quarters merged.
 // Step 1 heats the shaft by dT (alpha = 2e-5: interference 0.02 on the radius); the next steps push
 // the sleeve axially (load case axial) or twist it (load case torque), one step per load level.
+// The notched variants I and II (SPEC §4.2, Fig 4.20-4.23; their geometry is in the thesis' lost
+// figures) are stand-ins: I cuts a relief groove into each end face of the sleeve next to the bore,
+// II turns the sleeve's outer diameter down towards both end faces; both soften the fit's edges.
 #include <algorithm>
 #include <cmath>
 #include <cstdlib>
@@ -30,10 +33,75 @@ struct FitMesh {
   double core = 0.5;  // core half-width / shaft radius
 };
 
+// The notched variants' stand-in geometry (the thesis' Fig 4.20 / 4.22 are lost). Variant I: a
+// relief groove cut axially into each end face of the sleeve, `groove_width` wide radially at
+// `groove_lip` outside the bore and `groove_depth` deep (rounded to whole fit rows, so the
+// sleeve's bore keeps the shaft's node rows): the bore's edge becomes a flexible lip. Variant II:
+// the sleeve's outer radius falls linearly from R_o over the last `relief_length` at each end to
+// R_o - `relief_depth` at the end faces.
+enum class Notch { None, FaceGroove, SleeveRelief };
+struct NotchShape {
+  Notch notch = Notch::None;
+  double groove_lip = 1.5, groove_width = 1.0, groove_depth = 5.0;
+  double relief_depth = 2.5, relief_length = 5.0;
+
+  double sleeve_outer_radius(double z) const {
+    if (notch != Notch::SleeveRelief) return kSleeveRadius;
+    const double to_edge = std::min(z - kFitStart, kFitEnd - z);
+    return kSleeveRadius - relief_depth * std::max(0.0, 1 - to_edge / relief_length);
+  }
+  // Variant I: fit rows each groove takes (at least one, leaving at least one between them).
+  int groove_rows(int fit_rows) const {
+    const double row = (kFitEnd - kFitStart) / fit_rows;
+    return std::max(1, static_cast<int>(std::lround(groove_depth / row)));
+  }
+};
+
+// The sleeve's block between the wall fractions f0 and f1 (r = R_i + f (R_o(z) - R_i)) and the
+// heights z0, z1, turned by `angle` over `sweep`.
+BlockMap sleeve_block(const NotchShape& notch, double f0, double f1, double z0, double z1,
+                      double angle, double sweep) {
+  return [=](const Vec3& xi) {
+    const double height = z0 + (z1 - z0) * 0.5 * (xi[2] + 1);
+    const double f = f0 + (f1 - f0) * 0.5 * (xi[0] + 1), a = angle + sweep * 0.5 * (xi[1] + 1);
+    const double r = kShaftRadius + f * (notch.sleeve_outer_radius(height) - kShaftRadius);
+    return Vec3{r * std::cos(a), r * std::sin(a), height};
+  };
+}
+
+// The sleeve: one block, or (variant I) three radial bands (lip, groove, rest) times three axial
+// segments with the groove band left out of the two end segments.
+void mesh_sleeve(Mesh& mesh, const std::string& type, const FitMesh& m, const NotchShape& notch,
+                 double angle, double sweep, int around) {
+  if (notch.notch != Notch::FaceGroove) {
+    const Block b =
+        mesh_block(mesh, sleeve_block(notch, 0, 1, kFitStart, kFitEnd, angle, sweep),
+                   {type, {m.sleeve_rings, around, m.fit_rows}, {1, 1, 1}, "SLEEVE"});
+    mesh.add_to_surface("SLEEVE_TOP", b.side_faces(2, +1));
+    return;
+  }
+  const double wall = kSleeveRadius - kShaftRadius;
+  const double f_lip = notch.groove_lip / wall, f_groove = f_lip + notch.groove_width / wall;
+  const double bands[4] = {0, f_lip, f_groove, 1};
+  const int band_rings[3] = {1, 1, std::max(1, m.sleeve_rings - 2)};
+  const int g = notch.groove_rows(m.fit_rows);
+  const double h = g * (kFitEnd - kFitStart) / m.fit_rows;
+  const double z[4] = {kFitStart, kFitStart + h, kFitEnd - h, kFitEnd};
+  const int rows[3] = {g, m.fit_rows - 2 * g, g};
+  for (int band = 0; band < 3; ++band)
+    for (int seg = 0; seg < 3; ++seg) {
+      if (band == 1 && seg != 1) continue;  // the grooves
+      const Block b = mesh_block(
+          mesh, sleeve_block(notch, bands[band], bands[band + 1], z[seg], z[seg + 1], angle, sweep),
+          {type, {band_rings[band], around, rows[seg]}, {1, 1, 1}, "SLEEVE"});
+      if (seg == 2) mesh.add_to_surface("SLEEVE_TOP", b.side_faces(2, +1));
+    }
+}
+
 // A sector of the shaft and the sleeve from `angle` over `sweep` (at most 90 deg) with `around`
 // elements around (even): the quarter of models A and B, or model C's thin sector.
-void mesh_sector(Mesh& mesh, const std::string& type, const FitMesh& m, double angle, double sweep,
-                 int around) {
+void mesh_sector(Mesh& mesh, const std::string& type, const FitMesh& m, const NotchShape& notch,
+                 double angle, double sweep, int around) {
   const int n = around / 2;
   const auto shaft = [](double) { return kShaftRadius; };
   const std::vector<SectionPatch> o_grid = sector_o_grid(m.core, sweep);
@@ -43,15 +111,7 @@ void mesh_sector(Mesh& mesh, const std::string& type, const FitMesh& m, double a
     for (int part = 0; part < 3; ++part)
       mesh_block(mesh, prism(o_grid[part], z[k], z[k + 1], shaft, angle),
                  {type, {part == 0 ? n : m.shaft_rings, n, rows[k]}, {1, 1, 1}, "SHAFT"});
-  // The sleeve in units of its inner radius: s from 1 to R_o / R_i.
-  const double outer = kSleeveRadius / kShaftRadius;
-  const SectionPatch sleeve = [outer, sweep](double s, double t) {
-    const double r = 1 + s * (outer - 1), a = sweep * t;
-    return Vec3{r * std::cos(a), r * std::sin(a), 0};
-  };
-  const Block b = mesh_block(mesh, prism(sleeve, kFitStart, kFitEnd, shaft, angle),
-                             {type, {m.sleeve_rings, around, m.fit_rows}, {1, 1, 1}, "SLEEVE"});
-  mesh.add_to_surface("SLEEVE_TOP", b.side_faces(2, +1));
+  mesh_sleeve(mesh, type, m, notch, angle, sweep, around);
 }
 
 std::vector<double> number_list(const BuilderParams& p, const std::string& name) {
@@ -152,6 +212,7 @@ struct FitCase {
   int thin_around = 2;  // model C: elements around
   double sweep = 0.5 * kPi;  // angle of a quarter, or of model C's sector
   FitMesh mesh;
+  NotchShape notch;
   double alpha = 0, dT = 0;
   std::optional<Friction> friction;
 };
@@ -173,6 +234,23 @@ FitCase read_fit_case(const BuilderParams& p, const ElementRegistry& registry) {
   c.sector = p.choice("sector", {"no", "yes"}) == "yes";
   if (c.sector && !c.full) p.fail("--sector yes needs --model B (model A is already a quarter)");
   c.fit = p.choice("fit", {"thermal", "clearance"});
+  const std::string notch = to_upper(p.choice("notch", {"none", "I", "II"}));
+  c.notch.notch =
+      notch == "I" ? Notch::FaceGroove : notch == "II" ? Notch::SleeveRelief : Notch::None;
+  c.notch.groove_lip = p.positive("groove-lip");
+  c.notch.groove_width = p.positive("groove-width");
+  c.notch.groove_depth = p.positive("groove-depth");
+  c.notch.relief_depth = p.positive("relief-depth");
+  c.notch.relief_length = p.positive("relief-length");
+  if (c.notch.groove_lip + c.notch.groove_width >= kSleeveRadius - kShaftRadius)
+    p.fail("--groove-lip + --groove-width must stay below the sleeve's wall 5");
+  if (c.notch.relief_depth >= kSleeveRadius - kShaftRadius ||
+      c.notch.relief_length > 0.5 * (kFitEnd - kFitStart))
+    p.fail("--relief-depth must stay below the sleeve's wall 5 and --relief-length at most half "
+           "the sleeve's length 10");
+  if (c.notch.notch == Notch::SleeveRelief && (c.load_case == "torque" || c.load_case == "rotation"))
+    p.fail("--notch II turns the sleeve's outer diameter down at its ends, where load case " +
+           c.load_case + " acts on the outer circle of radius 15: use --notch none or I");
   c.mesh.around = p.count("around", 2);
   if (c.mesh.around % 2 != 0) p.fail("--around must be even (two O-grid blocks per quarter)");
   c.thin_around = p.count("sector-around", 2);
@@ -184,6 +262,12 @@ FitCase read_fit_case(const BuilderParams& p, const ElementRegistry& registry) {
   c.mesh.sleeve_rings = p.count("sleeve-rings");
   c.mesh.fit_rows = p.count("fit-rows");
   c.mesh.end_rows = p.count("end-rows");
+  if (c.notch.notch == Notch::FaceGroove &&
+      2 * c.notch.groove_rows(c.mesh.fit_rows) >= c.mesh.fit_rows)
+    p.fail("--groove-depth " + fmt_number(c.notch.groove_depth) + " takes " +
+           std::to_string(c.notch.groove_rows(c.mesh.fit_rows)) + " of the " +
+           std::to_string(c.mesh.fit_rows) +
+           " fit rows at each end: the grooves must leave rows between them");
   c.alpha = p.positive("alpha");
   c.dT = p.number("dT");
   c.mu_text = p.text("mu");
@@ -349,7 +433,7 @@ BuildResult shrink_fit(const BuilderParams& p, const ElementRegistry& registry) 
   BuildResult r;
   Mesh& mesh = r.mesh;
   for (int quarter = 0; quarter < (c.full ? 4 : 1); ++quarter)
-    mesh_sector(mesh, c.base, c.mesh, quarter * 0.5 * kPi, c.sweep,
+    mesh_sector(mesh, c.base, c.mesh, c.notch, quarter * 0.5 * kPi, c.sweep,
                 c.thin ? c.thin_around : c.mesh.around);
   merge_coincident_nodes(mesh);
   if (c.sector) cut_sector(mesh, kFitSectors, 0.0);
@@ -417,6 +501,15 @@ void add_shrink_fit_builder(std::vector<BuilderInfo>& all) {
         {"sector-around", "2",
          "model C: elements around the thin sector (even; 2 = 15 deg with --around 12)"},
         {"fit", "thermal", "thermal (heat the shaft by dT) or clearance (*CLEARANCE -alpha dT r)"},
+        {"notch", "none",
+         "none (plain), I (a relief groove in each end face of the sleeve, leaving a lip at the "
+         "bore) or II (the sleeve's outer diameter turned down towards both ends); SPEC 4.2 "
+         "variants I/II, stand-in geometry"},
+        {"groove-lip", "1.5", "variant I: the lip's thickness between the bore and the groove"},
+        {"groove-width", "1", "variant I: the groove's radial width"},
+        {"groove-depth", "5", "variant I: the groove's axial depth (rounded to whole fit rows)"},
+        {"relief-depth", "2.5", "variant II: how far the outer radius falls at the end faces"},
+        {"relief-length", "5", "variant II: the length of each turned-down end"},
         {"mu", "auto", "friction coefficient (auto: 0.2 axial, 0.4 torque; 'rough')"},
         {"pressures", "52.5,72", "axial pressures on the sleeve's top annulus, one step each"},
         {"torques", "300,850", "torques on the sleeve in Nm, one step each (1000: capacity lost)"},

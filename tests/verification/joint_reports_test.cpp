@@ -46,6 +46,11 @@ void expect_measured(const studies::JointReport& r, const std::string& key, doub
 // frictionless one). Axial capacity after the 72 MPa push inside the hand band 27.9-30.7 kN
 // (mu pi d l p, p = 111-122 MPa); model B's torque at full slip and at 1.5 deg inside
 // 559-614 N m (mu pi d^2 l p / 2).
+// Notched variants I and II (SPEC §4.2, Fig 4.20-4.23: geometry lost, no published number;
+// stand-ins: I a relief groove in each end face of the sleeve, II the sleeve turned down at its
+// ends): both relieve the fit's edge, so the edge pressure and the largest pressure along the fit
+// of each lie below the plain fit's (asserted), and the figures are the measured coarse ones to
+// 0.5 % like the rest.
 TEST(JointReports, ShrinkFit) {
   const studies::JointReport r = coarse_report("shrink-fit");
   EXPECT_NEAR(r.figure("elongation"), 0.1268, 0.005 * 0.1268);
@@ -71,8 +76,26 @@ TEST(JointReports, ShrinkFit) {
   expect_measured(r, "axial_capacity", 28.5705);
   expect_measured(r, "torque_full_slip", 569.4);
   expect_measured(r, "torque_end", 568.9);
-  EXPECT_EQ(r.tables.size(), 3u);
-  EXPECT_EQ(r.charts.size(), 2u);
+  for (const char* variant : {"_notchI", "_notchII"}) {
+    EXPECT_LT(r.figure(std::string("pressure_edge") + variant), r.figure("pressure_edge"))
+        << variant;
+    EXPECT_LT(r.figure(std::string("pressure_max") + variant), r.figure("pressure_max"))
+        << variant;
+  }
+  expect_measured(r, "shaft_mises", 126.469);
+  expect_measured(r, "sleeve_mises", 294.752);
+  expect_measured(r, "pressure_edge_notchI", 35.1428);
+  expect_measured(r, "pressure_max_notchI", 133.119);
+  expect_measured(r, "pressure_mid_notchI", 91.9832);
+  expect_measured(r, "shaft_mises_notchI", 125.037);
+  expect_measured(r, "sleeve_mises_notchI", 324.12);
+  expect_measured(r, "pressure_edge_notchII", 109.473);
+  expect_measured(r, "pressure_max_notchII", 112.798);
+  expect_measured(r, "pressure_mid_notchII", 112.798);
+  expect_measured(r, "shaft_mises_notchII", 123.521);
+  expect_measured(r, "sleeve_mises_notchII", 310.519);
+  EXPECT_EQ(r.tables.size(), 4u);
+  EXPECT_EQ(r.charts.size(), 3u);
 }
 
 // SPEC §4.6 with pressure penetration. Published leak 16 MPa (15 kN) and 12.5-13 (10 kN): the
@@ -80,6 +103,10 @@ TEST(JointReports, ShrinkFit) {
 // of the 5 mm one ("gasket thickness has little effect"), and Rötscher's p_crit =
 // 8 x 15.5 kN / 6857.8 mm^2 = 18.08 MPa to 0.01. The bolt force falls with p on this stand-in
 // (the measured cause of the lower leak, docs/joints/bolted-flange.md): asserted negative.
+// The candidates for that trend, each changed alone: it stays negative without pressure
+// penetration and without the end-cap thrust (neither is its cause), and a thicker ring (30, 40
+// instead of 20) makes it less negative and the leak pressure higher, towards the published 16
+// MPa (the ring's stiffness is). Leak pressures are increments' pressures: to round-off.
 TEST(JointReports, BoltedFlange) {
   const studies::JointReport r = coarse_report("bolted-flange");
   EXPECT_NEAR(r.figure("p_crit_roetscher"), 18.08, 0.01);
@@ -96,6 +123,22 @@ TEST(JointReports, BoltedFlange) {
   // The coarse neck has one element layer: mid-neck and corner are the same element.
   expect_measured(r, "gauge_mises", 122.29);
   expect_measured(r, "neck_corner_mises", 122.29);
+  EXPECT_LT(r.figure("bolt_force_change_8MPa_no_penetration"), 0.0);
+  EXPECT_LT(r.figure("bolt_force_change_8MPa_no_end_cap"), 0.0);
+  EXPECT_GT(r.figure("bolt_force_change_8MPa_ring30"), r.figure("bolt_force_change_8MPa"));
+  EXPECT_GT(r.figure("bolt_force_change_8MPa_ring40"), r.figure("bolt_force_change_8MPa_ring30"));
+  EXPECT_GT(r.figure("leak_15kN_ring30"), r.figure("leak_15kN"));
+  EXPECT_GE(r.figure("leak_15kN_ring40"), r.figure("leak_15kN_ring30"));
+  EXPECT_LE(r.figure("leak_15kN_ring40"), 16.0 + 1e-9);
+  expect_measured(r, "bolt_force_change_8MPa_no_penetration", -1.20391);
+  expect_measured(r, "bolt_force_change_8MPa_no_end_cap", -1.7405);
+  expect_measured(r, "bolt_force_change_8MPa_ring30", -0.790474);
+  expect_measured(r, "bolt_force_change_8MPa_ring40", -0.165087);
+  expect_measured(r, "bolt_force_change_8MPa_steel_gasket", -2.27345);
+  EXPECT_NEAR(r.figure("leak_15kN_no_end_cap"), 16.0, 1e-6);
+  EXPECT_NEAR(r.figure("leak_15kN_ring30"), 14.0, 1e-6);
+  EXPECT_NEAR(r.figure("leak_15kN_ring40"), 15.0, 1e-6);
+  EXPECT_NEAR(r.figure("leak_15kN_steel_gasket"), 11.0, 1e-6);
 }
 
 // SPEC §4.3: published 58 / 42 / 35 MPa for mu = 0 / 0.2 / 0.4. Asserted: the stress falls with
@@ -163,6 +206,10 @@ TEST(JointReports, Spline) {
 // 36 elements around against the default 48), the contact recedes (more than half the bore lifts
 // off) and, frictionless without interference, the lifted share does not depend on the torque
 // (500 and 1000 N m equal to 1e-9: the problem is positively homogeneous in the load).
+// The hub Mises' measured cause (docs/joints/p3g.md): refining the hub raises the element-mean
+// peak (it converges from below, away from 141), the integration-point peak of that element lies
+// above its mean, and with the flange at the shoulder the peak falls while the rim displacement
+// falls too (below the default's): asserted as inequalities, the figures to 0.5 %.
 TEST(JointReports, P3g) {
   const studies::JointReport r = coarse_report("p3g");
   EXPECT_NEAR(r.figure("rim_displacement"), 0.41, 0.041);
@@ -173,6 +220,16 @@ TEST(JointReports, P3g) {
   expect_measured(r, "rim_displacement", 0.3849);
   expect_measured(r, "hub_mises", 124.8);
   expect_measured(r, "shaft_mises", 88.57);
+  EXPECT_GT(r.figure("hub_mises_refined"), r.figure("hub_mises"));
+  EXPECT_GT(r.figure("hub_ip_mises"), r.figure("hub_mises"));
+  EXPECT_GT(r.figure("hub_ip_mises_refined"), r.figure("hub_mises_refined"));
+  EXPECT_LT(r.figure("hub_mises_flange_shoulder"), r.figure("hub_mises"));
+  EXPECT_LT(r.figure("rim_displacement_flange_shoulder"), r.figure("rim_displacement"));
+  expect_measured(r, "hub_ip_mises", 168.79);
+  expect_measured(r, "hub_mises_refined", 131.084);
+  expect_measured(r, "hub_ip_mises_refined", 171.966);
+  expect_measured(r, "hub_mises_flange_shoulder", 117.523);
+  expect_measured(r, "rim_displacement_flange_shoulder", 0.36285);
 }
 
 TEST(JointReports, UnknownJointIsRefused) {

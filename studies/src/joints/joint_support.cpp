@@ -79,19 +79,29 @@ double largest_mises(const Model& model, const IncrementResult& increment, const
   return largest;
 }
 
+StressPeak element_mises_peak(const Model& model, const IncrementResult& increment,
+                              const std::string& elset,
+                              const std::function<bool(const Vec3& centre)>& where) {
+  StressPeak peak;
+  for (int e : model.elsets.at(elset).elements) {
+    const Vec3 centre = centre_of(model, e);
+    if (where && !where(centre)) continue;
+    Tensor6 mean{};
+    double point = 0;
+    const int first = increment.ip_offset[e], end = increment.ip_offset[e + 1];
+    for (int i = first; i < end; ++i) {
+      for (int c = 0; c < 6; ++c) mean[c] += increment.S[i][c] / (end - first);
+      point = std::max(point, mises(increment.S[i]));
+    }
+    if (end > first && mises(mean) > peak.mean) peak = {mises(mean), point, centre};
+  }
+  return peak;
+}
+
 double largest_element_mises(const Model& model, const IncrementResult& increment,
                              const std::string& elset,
                              const std::function<bool(const Vec3& centre)>& where) {
-  double largest = 0;
-  for (int e : model.elsets.at(elset).elements) {
-    if (where && !where(centre_of(model, e))) continue;
-    Tensor6 mean{};
-    const int first = increment.ip_offset[e], end = increment.ip_offset[e + 1];
-    for (int i = first; i < end; ++i)
-      for (int c = 0; c < 6; ++c) mean[c] += increment.S[i][c] / (end - first);
-    if (end > first) largest = std::max(largest, mises(mean));
-  }
-  return largest;
+  return element_mises_peak(model, increment, elset, where).mean;
 }
 
 const IncrementResult& end_of_step(const Results& results, int step) {

@@ -45,6 +45,17 @@ double largest_element_mises(const Model& model, const IncrementResult& incremen
                              const std::string& elset,
                              const std::function<bool(const Vec3& centre)>& where = {});
 
+// Where the largest element-mean Mises stress of `elset` sits: its value, the element's centre and
+// the largest integration-point Mises stress of that element.
+struct StressPeak {
+  double mean = 0.0;
+  double point = 0.0;
+  Vec3 centre{0, 0, 0};
+};
+StressPeak element_mises_peak(const Model& model, const IncrementResult& increment,
+                              const std::string& elset,
+                              const std::function<bool(const Vec3& centre)>& where = {});
+
 // The last increment of step `step` (1-based); std::runtime_error when the step has none.
 const IncrementResult& end_of_step(const Results& results, int step);
 

@@ -1,7 +1,8 @@
 // `styk study shrink-fit`: SPEC §4.2. Model A (quarter, mu 0.2): the heating step's Tab 4.1 and
 // pressure along the fit, then the axial pushes 52.5 and 72 MPa and the axial friction capacity;
 // model B as the 90 deg cyclic sector (mu 0.4): the sleeve's rim turned to 1.5 deg, the torque and
-// the slipping share against the hand capacity mu pi d^2 l p / 2.
+// the slipping share against the hand capacity mu pi d^2 l p / 2. The notched variants I and II
+// (stand-ins for the lost Fig 4.20/4.22) are heated frictionless beside the plain fit.
 #include <algorithm>
 #include <cmath>
 #include <map>
@@ -95,6 +96,97 @@ void add_fit_figures(const FitAnswer& f, const std::string& mu, JointReport& rep
                                : ": on this mesh the largest value is not at an edge."));
 }
 
+// The largest element-mean Mises stress of the shaft and of the sleeve after the heating step.
+struct FitStress {
+  double shaft = 0, sleeve = 0;
+};
+
+FitStress fit_stress(const SolvedModel& solved) {
+  const IncrementResult& fit = end_of_step(solved.results, 1);
+  return {largest_element_mises(solved.model, fit, "SHAFT"),
+          largest_element_mises(solved.model, fit, "SLEEVE")};
+}
+
+// The plain fit's pressures are already in the report (add_fit_figures): its stresses only.
+void add_stress_figures(const std::string& key, const std::string& name, const FitStress& s,
+                        const std::string& published, JointReport& report) {
+  report.headlines.push_back({"shaft_mises" + key,
+                              name + ": largest element-mean Mises in the shaft (mu 0)", s.shaft,
+                              "MPa", published, ""});
+  report.headlines.push_back({"sleeve_mises" + key,
+                              name + ": largest element-mean Mises in the sleeve (mu 0)", s.sleeve,
+                              "MPa", published, ""});
+}
+
+void add_variant_figures(const std::string& key, const std::string& name, const FitAnswer& f,
+                         const FitStress& s, const std::string& published, JointReport& report) {
+  report.headlines.push_back({"pressure_edge" + key,
+                              name + ": contact pressure at the sleeve's edge (mu 0)", f.edge,
+                              "MPa", published, ""});
+  report.headlines.push_back({"pressure_max" + key, name + ": largest contact pressure (mu 0)",
+                              f.peak, "MPa", "", ""});
+  report.headlines.push_back({"pressure_mid" + key, name + ": contact pressure at mid-sleeve (mu 0)",
+                              f.mid, "MPa", "", "111-122 (Lamé, plain fit)"});
+  add_stress_figures(key, name, s, published, report);
+}
+
+// Variants I (a relief groove in each end face of the sleeve, leaving a lip at the bore) and II
+// (the sleeve turned down towards its end faces), heated frictionless like the plain fit `plain`.
+void notched_variants(const ElementRegistry& registry, const JointOptions& options,
+                      const SolvedModel& plain_model, const FitAnswer& plain, JointReport& report) {
+  std::map<std::string, std::string> args = mesh_args(options.coarse);
+  args["model"] = "A";
+  args["load-case"] = "fit";
+  args["mu"] = "0";
+  args["notch"] = "I";
+  const SolvedModel one = build_and_solve("shrink-fit", args, registry, options,
+                                          "Variant I (quarter, mu 0): heating", report);
+  args["notch"] = "II";
+  const SolvedModel two = build_and_solve("shrink-fit", args, registry, options,
+                                          "Variant II (quarter, mu 0): heating", report);
+  const FitAnswer f1 = fit_answer(one), f2 = fit_answer(two);
+  const FitStress s0 = fit_stress(plain_model), s1 = fit_stress(one), s2 = fit_stress(two);
+  const std::string plots = "Mises plots only (Fig 4.21 / 4.23)";
+  add_stress_figures("", "Plain fit", s0, "", report);
+  add_variant_figures("_notchI", "Variant I", f1, s1, plots, report);
+  add_variant_figures("_notchII", "Variant II", f2, s2, plots, report);
+
+  DataTable along{"notched-pressure", {"variant", "z_mm", "pressure_MPa"}, {}};
+  const FitAnswer* answers[3] = {&plain, &f1, &f2};
+  for (int v = 0; v < 3; ++v)
+    for (std::size_t i = 0; i < answers[v]->z.size(); ++i)
+      along.rows.push_back({double(v), answers[v]->z[i], answers[v]->p[i]});
+  report.tables.push_back(along);
+  charts::Chart chart{"Contact pressure along the fit after heating, mu 0 (model A)",
+                      {"z (mm)", false, {}, {}},
+                      {"contact pressure (MPa)", false, 0.0, {}},
+                      {line("plain", plain.z, plain.p, 0),
+                       line("variant I: grooves in the sleeve's faces", f1.z, f1.p, 3),
+                       line("variant II: sleeve turned down at its ends", f2.z, f2.p, 4),
+                       guide("Lamé, plane stress 111", plain.z.front(), plain.z.back(), kLameLow,
+                             1)}};
+  report.charts.push_back({"notched-pressure",
+                           "Contact pressure along the fit after the frictionless heating: the "
+                           "plain fit against the notched variants I and II (stand-in geometry).",
+                           {{chart}, 1, 1200, 700}});
+  const auto change = [&](double v) { return fixed(100 * (v / plain.edge - 1), 1) + " %"; };
+  report.findings.push_back(
+      "Notched variants (the thesis' Fig 4.20 / 4.22 with their geometry are lost and show only "
+      "Mises plots, so these are stand-ins; no published number). Variant I, a relief groove "
+      "1 wide and 5 deep in each end face of the sleeve, 1.5 outside the bore: edge pressure " +
+      fixed(f1.edge, 1) + " MPa against the plain fit's " + fixed(plain.edge, 1) + " MPa (" +
+      change(f1.edge) + "), largest " + fixed(f1.peak, 1) + " MPa, mid-sleeve " +
+      fixed(f1.mid, 1) + " MPa: the lip at the bore gives way at the edge. Variant II, the "
+      "sleeve's outer diameter turned down from 30 to 25 over the last 5 mm at each end: edge "
+      "pressure " +
+      fixed(f2.edge, 1) + " MPa (" + change(f2.edge) + "), largest " + fixed(f2.peak, 1) +
+      " MPa, mid-sleeve " + fixed(f2.mid, 1) +
+      " MPa. Largest element-mean Mises, shaft / sleeve: plain " + fixed(s0.shaft, 1) + " / " +
+      fixed(s0.sleeve, 1) + ", I " + fixed(s1.shaft, 1) + " / " + fixed(s1.sleeve, 1) + ", II " +
+      fixed(s2.shaft, 1) + " / " + fixed(s2.sleeve, 1) +
+      " MPa (Fig 4.21 / 4.23 show these fields as plots only).");
+}
+
 void model_a(const ElementRegistry& registry, const JointOptions& options, JointReport& report) {
   std::map<std::string, std::string> args = mesh_args(options.coarse);
   args["model"] = "A";
@@ -111,6 +203,7 @@ void model_a(const ElementRegistry& registry, const JointOptions& options, Joint
   const FitAnswer f0 = fit_answer(free_fit), f2 = fit_answer(a);
   add_fit_figures(f0, "0", report);
   add_fit_figures(f2, "0.2", report);
+  notched_variants(registry, options, free_fit, f0, report);
   report.findings.push_back(
       "Tab 4.1 is reproduced frictionless; with mu = 0.2 already acting during the heating the "
       "sleeve holds the shaft's axial growth under it (elongation " +

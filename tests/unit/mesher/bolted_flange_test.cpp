@@ -210,6 +210,8 @@ TEST(BoltedFlangeParameters, BadValuesAreNamed) {
   fails({{"preload", "-3"}}, "--preload");
   fails({{"pressure", "-1"}}, "--pressure");
   fails({{"preload-by", "guess"}}, "--preload-by");
+  fails({{"ring-thickness", "0"}}, "--ring-thickness");
+  fails({{"end-cap", "maybe"}}, "--end-cap");
 }
 
 // The mesher never solves: asked to calibrate without a solve from its caller, the builder

@@ -77,6 +77,15 @@ std::vector<ContactCase> cases() {
   // Shaft pi 10^2 60 + sleeve pi (15^2 - 10^2) 20; 7.5 deg chords for linear faces.
   const double fit_volume = kPi * (100 * 60 + 125 * 20);
   all("shrink-fit", {}, 3072, 144, fit_volume / 4, 5e-3, 1e-5);
+  // §4.2 notched variants (stand-ins, docs/mesher.md). I: a groove r 11.5-12.5, 5 deep (3 of the
+  // 12 fit rows) in each end face of the sleeve; the sleeve as lip 1 + groove 1 + outer 2 rings,
+  // the groove ring only over the middle 6 rows: 2496 shaft + 12 x (12 + 6 + 2 x 12) = 3000.
+  // II: the outer radius 12.5 -> 15 linearly over 5 at each end, the plain mesh: it removes
+  // 2 x pi (15^2 x 5 - (2/3)(15^3 - 12.5^3)) = 354.17 pi (quadratic faces follow the taper).
+  all("shrink-fit", {{"notch", "I"}}, 3000, 144,
+      (fit_volume - 2 * kPi * (12.5 * 12.5 - 11.5 * 11.5) * 5) / 4, 5e-3, 1e-5);
+  all("shrink-fit", {{"notch", "II"}}, 3072, 144,
+      (fit_volume - 2 * kPi * (225.0 * 5 - 2.0 / 3 * (3375 - 1953.125))) / 4, 5e-3, 1e-5);
   // §4.2 model B: full, 12288 elements, 1152 contact elements (576 + 576).
   for (const char* fam : {"C3D8", "C3D21", "C3D28"})
     out.push_back(

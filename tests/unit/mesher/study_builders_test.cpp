@@ -150,5 +150,37 @@ TEST_F(StudyBuilders, ShrinkFitSectorHasItsSymmetryPlanes) {
   EXPECT_THROW(build(registry_, "shrink-fit", odd), InputError);
 }
 
+// The notched variants' settings that cannot be meshed are refused by name: a groove as wide as
+// the wall, grooves that meet in the middle (coarse: 4 fit rows of 5, a 10 deep groove takes 2
+// at each end), a relief deeper than the wall, and variant II with a load on the outer circle
+// its turned-down end no longer has.
+TEST_F(StudyBuilders, ShrinkFitNotchBadValuesAreNamed) {
+  const std::map<std::string, std::string> coarse = {
+      {"element", "C3D21"},  {"model", "A"},    {"load-case", "fit"},
+      {"around", "4"},       {"shaft-rings", "2"},
+      {"sleeve-rings", "2"}, {"fit-rows", "4"}, {"end-rows", "2"}};
+  auto fails = [&](std::map<std::string, std::string> extra, const std::string& needle) {
+    std::map<std::string, std::string> args = coarse;
+    for (const auto& [k, v] : extra) args[k] = v;
+    try {
+      build(registry_, "shrink-fit", args);
+    } catch (const InputError& e) {
+      EXPECT_NE(std::string(e.what()).find(needle), std::string::npos) << e.what();
+      return;
+    }
+    ADD_FAILURE() << "no error for " << needle;
+  };
+  fails({{"notch", "III"}}, "--notch");
+  fails({{"notch", "I"}, {"groove-width", "4"}}, "--groove-lip + --groove-width");
+  fails({{"notch", "I"}, {"groove-depth", "10"}}, "--groove-depth 10 takes 2 of the 4 fit rows");
+  fails({{"notch", "II"}, {"relief-depth", "5"}}, "--relief-depth");
+  fails({{"notch", "II"}, {"model", "B"}, {"load-case", "rotation"}}, "--notch II");
+  std::map<std::string, std::string> one = coarse;
+  one["notch"] = "I";
+  // Shaft: core 2 x 2 + two rings of 2 x 2 = 12 per row, 2 + 4 + 2 rows; sleeve (groove 1 of the
+  // 4 rows at each end): lip 4 x 4, groove 4 x 2, outer ring (at least 1) 4 x 4.
+  EXPECT_EQ(build(registry_, "shrink-fit", one).model.element_count(), 12 * 8 + 16 + 8 + 16);
+}
+
 }  // namespace
 }  // namespace styk
