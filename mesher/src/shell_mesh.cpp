@@ -49,6 +49,8 @@ void check_spec(const ShellMeshSpec& spec) {
 Mesh mesh_shell_patch(const PatchMap& map, const ShellMeshSpec& spec,
                       const ElementRegistry& registry, bool closed_u) {
   check_spec(spec);
+  if (closed_u && spec.divisions_u < 3)
+    throw InputError({}, "shell mesh: a closed patch needs at least 3 divisions around it");
   const int nodes_per_element = shell_node_count(spec.type, registry);
   const int order = nodes_per_element == 4 ? 1 : 2;
   const std::vector<double> u = grid_parameters(spec.divisions_u, spec.grading_u, order);

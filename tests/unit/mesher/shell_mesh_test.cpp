@@ -136,7 +136,7 @@ TEST(ShellMesh, HemisphereWithAHole) {
 }
 
 // Refusals: a type that is no shell, no divisions, a hemisphere without a hole, a panel beyond
-// 360 degrees.
+// 360 degrees, a closed cylinder of 2 elements around.
 TEST(ShellMesh, BadInputIsRefusedByName) {
   const auto message = [](const std::function<void()>& f) {
     try {
@@ -161,6 +161,10 @@ TEST(ShellMesh, BadInputIsRefusedByName) {
   EXPECT_NE(message([] {
               shell_cylindrical_panel(1, 1, 400, spec("S4", 2, 2), registry());
             }).find("the angle must lie in (0, 360] degrees"),
+            std::string::npos);
+  EXPECT_NE(message([] {
+              shell_cylindrical_panel(1, 1, 360, spec("S4", 2, 2), registry());
+            }).find("a closed patch needs at least 3 divisions around it"),
             std::string::npos);
 }
 

@@ -32,7 +32,7 @@ struct ShellMeshSpec {
 
 // Meshes `map` into shells. closed_u: map(1, v) == map(-1, v), the seam nodes are shared.
 // Throws InputError (no location) for a type that is no shell of the registry, divisions < 1
-// or gradings <= 0.
+// (< 3 around a closed patch) or gradings <= 0.
 Mesh mesh_shell_patch(const PatchMap& map, const ShellMeshSpec& spec,
                       const ElementRegistry& registry, bool closed_u = false);
 
