@@ -111,6 +111,7 @@ render::RenderOptions make_options(const RenderArgs& args, bool has_results) {
   o.mode = render::parse_display_mode(args.mode);
   o.field = args.field;
   o.averaging = render::parse_averaging(args.averaging);
+  o.shell_fibre = render::parse_shell_fibre(args.fibre);
   o.bands = args.bands;
   o.smooth = args.smooth;
   if (args.contact_only && args.all_faces)
@@ -201,26 +202,6 @@ int render_job(const RenderArgs& args, const render::RenderJob& job, const std::
   return 0;
 }
 
-// Shells are not drawn yet: a model of shells only is refused, shells among other elements are
-// named on stderr, so that a picture never leaves them out silently.
-void check_shells_drawable(const Model& model, const ElementRegistry& registry,
-                           const std::string& input) {
-  int shells = 0;
-  for (const Element& element : model.elements) {
-    const TElement* formulation = registry.find(element.type);
-    shells += formulation && formulation->section_measure() == SectionMeasure::Shell ? 1 : 0;
-  }
-  if (shells == 0) return;
-  const std::string what = std::to_string(shells) + " shell element" + (shells == 1 ? "" : "s");
-  if (shells == model.element_count())
-    throw InputError({input, 0}, "styk render does not draw shell elements yet (the model has " +
-                                     what +
-                                     " and nothing else); export them for ParaView with "
-                                     "styk export --vtu");
-  std::cerr << "styk render: " << what << " of " << input
-            << " are not drawn (styk render does not draw shells yet; styk export --vtu does)\n";
-}
-
 }  // namespace
 
 int render_command(const RenderArgs& args) {
@@ -252,7 +233,6 @@ int render_command(const RenderArgs& args) {
                        "holds only the mesh");
     contents.model = read_inp(args.input, registry);
   }
-  check_shells_drawable(contents.model, registry, args.input);
   try {
     render::RenderOptions options = make_options(args, results_file);
     if (contents.model.source.empty())

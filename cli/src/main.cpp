@@ -67,6 +67,7 @@ int main(int argc, char** argv) {
   render_cmd->add_option("--inc", render.increment, "Increment within the step (default: last)")->check(CLI::NonNegativeNumber);
   render_cmd->add_option("--field", render.field, "Contour field: U, U.x, RF.mag, S.mises, S.p1, S.11, E.22, ... (default: none)");
   render_cmd->add_option("--averaging", render.averaging, "Stress/strain averaging: none, I, II, centroid (default: II)");
+  render_cmd->add_option("--fibre", render.fibre, "Shells: the fibre whose stress/strain is drawn: bottom, middle, top (default: top)");
   render_cmd->add_option("--bands", render.bands, "Contour colours, 2..24 (default: 12)")->check(CLI::Range(2, 24));
   render_cmd->add_flag("--smooth", render.smooth, "Continuous colours instead of bands");
   render_cmd->add_flag("--contact-only", render.contact_only,

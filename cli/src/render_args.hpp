@@ -13,6 +13,7 @@ struct RenderArgs {
   int increment = 0;             // 0 = last increment of the step
   std::string field;             // e.g. S.mises, U, U.z, RF.mag, S.p1, E.11; empty = mesh colours
   std::string averaging = "II";  // none | I | II | centroid (stress and strain fields)
+  std::string fibre = "top";     // bottom | middle | top: the shells' stress / strain fibre
   int bands = 12;                // 2..24 contour colours
   bool smooth = false;           // continuous colours instead of bands
   bool contact_only = false;     // with a contact field: draw only the faces carrying it

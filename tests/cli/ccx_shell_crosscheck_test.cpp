@@ -125,19 +125,29 @@ TEST(CcxShellCrossCheck, PlateUnderPressure) {
   }
 }
 
-// `styk render` does not draw shells yet: a model of shells only is refused by name, never drawn
-// as an empty picture.
-TEST(ShellCli, RenderRefusesAModelOfShellsOnly) {
+// `styk render` draws shells (docs/render.md "Shells"): the mesh of a deck of shells only, and
+// the results on a chosen fibre; an unknown fibre is refused by name, nothing written.
+TEST(ShellCli, RenderDrawsAModelOfShellsOnly) {
   const std::string dir = scratch_dir("shell_render");
   long centre = 0;
   std::ofstream(dir + "/plate.inp") << plate_deck("S8R", 2, centre);
-  const CommandResult r = run_command(styk_executable() + " render plate.inp -o plate.png", dir);
-  EXPECT_NE(r.exit_code, 0);
-  EXPECT_NE(r.err.find("styk render does not draw shell elements yet (the model has 4 shell "
-                       "elements and nothing else)"),
+  const CommandResult mesh = run_command(styk_executable() + " render plate.inp -o mesh.png", dir);
+  EXPECT_EQ(mesh.exit_code, 0) << mesh.err;
+  EXPECT_TRUE(std::filesystem::exists(dir + "/mesh.png"));
+  const CommandResult solve = run_command(styk_executable() + " solve plate.inp", dir);
+  ASSERT_EQ(solve.exit_code, 0) << solve.err;
+  const CommandResult bottom = run_command(
+      styk_executable() + " render plate.styk.h5 --field S.mises --fibre bottom -o bottom.png",
+      dir);
+  EXPECT_EQ(bottom.exit_code, 0) << bottom.err;
+  EXPECT_TRUE(std::filesystem::exists(dir + "/bottom.png"));
+  const CommandResult bad = run_command(
+      styk_executable() + " render plate.styk.h5 --field S.mises --fibre side -o side.png", dir);
+  EXPECT_EQ(bad.exit_code, 1);
+  EXPECT_NE(bad.err.find("unknown shell fibre 'side'; use bottom, middle or top"),
             std::string::npos)
-      << r.err;
-  EXPECT_FALSE(std::filesystem::exists(dir + "/plate.png"));
+      << bad.err;
+  EXPECT_FALSE(std::filesystem::exists(dir + "/side.png"));
 }
 
 }  // namespace

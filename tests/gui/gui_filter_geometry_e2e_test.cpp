@@ -3,7 +3,7 @@
 // one from the picked elements (undoable); Clear filter draws everything again; Model > Line and
 // Model > Plane add their parts through their dialogs; Model > Mesh block with curved edges: "fill
 // midpoints" writes the straight midpoints, a folding arc is refused in the dialog, a quarter
-// cylinder wall is meshed.
+// cylinder wall is meshed; a plane of shells and a line of beams with their sections.
 #include <QAction>
 #include <QApplication>
 #include <QCheckBox>
@@ -192,6 +192,63 @@ class GuiFilterGeometry : public QObject {
     window_->document().layers().set_visible("STAY", false);
     window_->set_filter({});
     QCOMPARE(bar_pixels().first, 0);
+  }
+
+  // Shells and beams through the Plane and Line dialogs: a plane of S8R in space (x y z points)
+  // with a shell section and an offset, a line of B31 with a PIPE section; both drawn (the view
+  // changes in thousands of pixels when their layers are hidden). STYK_GUI_SCREENSHOTS=DIR writes
+  // the view (gui-shells-beams.png).
+  void shellAndBeamDialogs() {
+    gui::FormDialog* plane = open_dialog(*window_, "action_plane");
+    QVERIFY(plane);
+    set_text(plane, "name", "ROOF");
+    set_text(plane, "corners", "0 -2 1  10 -2 1  10 2 4  0 2 4");
+    set_text(plane, "divisions", "4 2");
+    set_text(plane, "type", "S8R");
+    set_text(plane, "material", "MAT");
+    set_text(plane, "thickness", "0.4");
+    set_text(plane, "offset", "0.7");
+    plane->accept();
+    QVERIFY(plane->isVisible());  // the offset is refused in the dialog
+    QVERIFY2(plane->error_text().contains("offset"), qPrintable(plane->error_text()));
+    set_text(plane, "offset", "-0.5");
+    plane->accept();
+    QVERIFY2(!plane->isVisible(), qPrintable(plane->error_text()));
+    const Model& m = window_->document().model();
+    QVERIFY(m.find_elset("ROOF"));
+    QCOMPARE(m.find_elset("ROOF")->elements.size(), std::size_t(8));
+    QCOMPARE(m.elements[m.find_elset("ROOF")->elements[0]].type, std::string("S8R"));
+
+    gui::FormDialog* line = open_dialog(*window_, "action_line");
+    QVERIFY(line);
+    set_text(line, "name", "MAST");
+    set_text(line, "start", "5 -4 0");
+    set_text(line, "end", "5 -4 6");
+    set_text(line, "divisions", "3");
+    set_text(line, "material", "MAT");
+    set_text(line, "type", "B31");
+    set_text(line, "shape", "PIPE");
+    set_text(line, "dimensions", "0.4 0.1");
+    set_text(line, "direction", "1 0 0");
+    line->accept();
+    QVERIFY2(!line->isVisible(), qPrintable(line->error_text()));
+    QVERIFY(m.find_elset("MAST"));
+    QVERIFY(m.sections.back().beam.has_value());
+
+    window_->set_filter({});
+    window_->view()->set_named_view("iso");
+    window_->view()->fit();
+    const QImage shown = window_->view()->grabFramebuffer();
+    const QString shots = qEnvironmentVariable("STYK_GUI_SCREENSHOTS");
+    if (!shots.isEmpty()) shown.save(shots + "/gui-shells-beams.png");
+    window_->document().layers().set_visible("ROOF", false);
+    window_->document().layers().set_visible("MAST", false);
+    window_->set_filter({});
+    const QImage hidden = window_->view()->grabFramebuffer();
+    int changed = 0;
+    for (int y = 0; y < shown.height(); ++y)
+      for (int x = 0; x < shown.width(); ++x) changed += shown.pixel(x, y) != hidden.pixel(x, y);
+    QVERIFY2(changed > 3000, qPrintable(QString::number(changed)));
   }
 
   void cleanupTestCase() { window_.reset(); }

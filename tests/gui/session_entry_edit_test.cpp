@@ -115,7 +115,8 @@ TEST_F(EntryEditTest, BoundaryGroupsAreFoundEditedMovedAndUndone) {
   EXPECT_EQ(refusal([&] {
               boundary_edit_command(model, first, {"", 11, 11, 0.0, 0});
             }),
-            "first dof 11 does not fit the static step ONE: it takes dofs 1, 2, 3 (x, y, z)");
+            "first dof 11 does not fit the static step ONE: it takes dofs 1, 2, 3 (x, y, z) and 4, "
+            "5, 6 (rotations about x, y, z)");
   EXPECT_EQ(
       refusal([&] {
         boundary_edit_command(model, {EntryKind::ModelBoundaries, -1, {}, 5}, {"", 1, 1, 0.0, -1});

@@ -141,8 +141,8 @@ TEST_F(ValidationTest, LoadAndBoundaryDialogsRefuseBadInput) {
   EXPECT_EQ(refusal([&] { boundary_command(m, {"BLOCK_XMIN", 3, 1, 0.0, -1}); }),
             "last dof must not be below the first dof");
   EXPECT_EQ(refusal([&] { boundary_command(m, {"BLOCK_XMIN", 0, 3, 0.0, -1}); }),
-            "first dof must be 1, 2, 3 (x, y, z), 11 (temperature) or 9 (electric potential), "
-            "not 0");
+            "first dof must be 1, 2, 3 (x, y, z), 4, 5, 6 (rotations), 11 (temperature) or 9 "
+            "(electric potential), not 0");
   EXPECT_EQ(refusal([&] { cload_command(m, {"BLOCK_XMAX", 3, -1.0, false, 0}); }),
             "the model has no step: add a step first");
   EXPECT_EQ(refusal([&] { step_command(m, {"S", 2.0, 1.0}); }),

@@ -128,5 +128,23 @@ TEST_F(BeamRender, NodalFieldsAreInterpolatedAlongTheAxis) {
   EXPECT_GT(tip, root + 4);
 }
 
+// Section forces are fields (docs/render.md): SF.2 of the arm is the tip load's shear, -5000 at
+// every station by statics (the arm carries -5000 along z at its tip), so the scale over the arm
+// spans -5000 .. -5000 (1e-6 relative); SM.3 (torque) of the arm is 0 (to 1e-6 of the arm's
+// largest bending moment, 5000 x 2500).
+TEST_F(BeamRender, SectionForcesAreFields) {
+  render::RenderOptions o;
+  o.width = 320, o.height = 240;
+  o.field = "SF.2";
+  o.layers = {"ARM"};
+  const render::RenderJob shear(model_, registry_, &increment_, o);
+  EXPECT_NEAR(shear.colors().min, -5000.0, 5e-3);
+  EXPECT_NEAR(shear.colors().max, -5000.0, 5e-3);
+  o.field = "SM.3";
+  const render::RenderJob torque(model_, registry_, &increment_, o);
+  EXPECT_NEAR(torque.colors().min, 0.0, 1e-6 * 5000.0 * 2500.0);
+  EXPECT_NEAR(torque.colors().max, 0.0, 1e-6 * 5000.0 * 2500.0);
+}
+
 }  // namespace
 }  // namespace styk::render_test

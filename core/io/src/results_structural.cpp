@@ -1,6 +1,7 @@
 #include "results_structural.hpp"
 
 #include <algorithm>
+#include <cmath>
 #include <cstdint>
 #include <limits>
 #include <stdexcept>
@@ -155,6 +156,56 @@ void read_beam_sections(hid_t mesh, const SourceLoc& where, Model& model) {
     Section section;
     section.elset = elsets[i];
     section.beam = beam;
+    section.where = where;
+    const int index = static_cast<int>(model.sections.size());
+    model.sections.push_back(std::move(section));
+    for (int e : set->elements) model.elements[e].section = index;
+  }
+}
+
+void write_shell_sections(hid_t mesh, const Model& model) {
+  std::vector<std::string> elsets;
+  std::vector<double> thickness, offset;
+  std::vector<std::int64_t> points;
+  for (const Section& section : model.sections) {
+    if (!section.shell || !section.thickness) continue;
+    elsets.push_back(section.elset);
+    thickness.push_back(*section.thickness);
+    offset.push_back(section.shell->offset);
+    points.push_back(section.shell->section_points);
+  }
+  if (elsets.empty()) return;
+  const h5::Handle group = h5::create_group(mesh, "shell_sections");
+  h5::write_strings(group.get(), "elsets", elsets);
+  h5::write_dataset(group.get(), "thickness", H5T_IEEE_F64LE, H5T_NATIVE_DOUBLE, thickness.data(),
+                    elsets.size(), 0);
+  h5::write_dataset(group.get(), "offset", H5T_IEEE_F64LE, H5T_NATIVE_DOUBLE, offset.data(),
+                    elsets.size(), 0);
+  h5::write_int64(group.get(), "section_points", points);
+}
+
+void read_shell_sections(hid_t mesh, const SourceLoc& where, Model& model) {
+  if (!h5::has_link(mesh, "shell_sections")) return;
+  const h5::Handle group = h5::open_group(mesh, "shell_sections");
+  const std::string label = "/model/shell_sections";
+  const std::vector<std::string> elsets = h5::read_strings(group.get(), "elsets");
+  std::vector<double> thickness, offset;
+  std::vector<std::int64_t> points;
+  h5::read_int64(group.get(), "section_points", points);
+  const std::uint64_t rows = h5::read_doubles(group.get(), "thickness", 0, thickness);
+  if (h5::read_doubles(group.get(), "offset", 0, offset) != rows || elsets.size() != rows ||
+      points.size() != rows)
+    corrupt(label + ": its datasets differ in length");
+  for (std::uint64_t i = 0; i < rows; ++i) {
+    if (!(thickness[i] > 0) || !(std::abs(offset[i]) <= 0.5) || points[i] < 1 || points[i] % 2 == 0)
+      corrupt(label + " row " + std::to_string(i) +
+              ": thickness must be > 0, |offset| <= 0.5 and section points odd");
+    const ElementSet* set = model.find_elset(elsets[i]);
+    if (set == nullptr) corrupt(label + " names element set " + elsets[i] + ", not in the file");
+    Section section;
+    section.elset = elsets[i];
+    section.thickness = thickness[i];
+    section.shell = ShellSection{offset[i], static_cast<int>(points[i]), true};
     section.where = where;
     const int index = static_cast<int>(model.sections.size());
     model.sections.push_back(std::move(section));

@@ -1,7 +1,8 @@
 // The structural part of the results file (docs/results.md): per increment the nodal rotations
 // UR and reaction moments RM of models whose nodes carry rotations, and the section forces SF and
 // moments SM of beam elements at their stations; in /model the beam sections (shape, dimensions,
-// first section axis, integration), which the renderer extrudes. All written only when present,
+// first section axis, integration) and the shell sections (thickness, offset), which the renderer
+// extrudes. All written only when present,
 // so the files of solid models are unchanged; files without them read as empty fields.
 #pragma once
 
@@ -30,5 +31,12 @@ void write_beam_sections(hid_t mesh, const Model& model);
 // Rebuilds those sections (elset, shape, dimensions, direction, integration; no material) and
 // assigns them to the elements of their sets. The element sets must have been read.
 void read_beam_sections(hid_t mesh, const SourceLoc& where, Model& model);
+
+// Group "shell_sections" under `mesh` with one row per *SHELL SECTION (elset, thickness, offset,
+// section points; none: no group), so that the renderer draws the shells' thickness.
+void write_shell_sections(hid_t mesh, const Model& model);
+
+// Rebuilds those sections (no material) and assigns them to the elements of their sets.
+void read_shell_sections(hid_t mesh, const SourceLoc& where, Model& model);
 
 }  // namespace styk::io

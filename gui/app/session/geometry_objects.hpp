@@ -5,8 +5,14 @@
 // points (side 1-2, 2-3, 3-4, 4-1) for curved sides, in the x-y plane (z = 0: the plane elements'
 // plane), meshed by mesher::mesh_patch into CPS4/CPE4 or CPS8/CPE8 with divisions and grading
 // along side 1-2 (u) and side 1-4 (v). With a material it gets a section of the given thickness.
+// A plane of shells (S4, S4R, S8, S8R, S9, S9R: a type whose form is Shell) may lie anywhere in
+// space; it is meshed by mesher::mesh_shell_patch (node sets NAME_SIDE1..4 too: sides 1-2, 2-3,
+// 3-4, 4-1), its normal the right-hand normal of the corner order, and its section is a *SHELL
+// SECTION (thickness, OFFSET).
 // Line: a straight line a -> b divided into graded T3D2 trusses (mesher::mesh_line); with a
-// material it gets a section whose first data value is the cross-section area.
+// material it gets a section whose first data value is the cross-section area. A line of beams
+// (B31, B31R: 2 nodes; B32, B32R: 3 nodes, the middle one at mid-length) gets a *BEAM SECTION
+// (RECT, CIRC, PIPE or BOX with its dimensions, and the approximate first section axis).
 //
 // Created names (NAME upper-case): element set NAME and node set NAME (every node). Nodes are
 // never merged with the model's (a separate body, like the other parts).
@@ -29,9 +35,10 @@ struct PlaneInput {
   int divisions_v = 4;       // along side 1-4
   double grading_u = 1.0;    // last / first element length
   double grading_v = 1.0;
-  std::string type = "CPS4";  // CPS4, CPE4 (4-node) or CPS8, CPE8 (8-node)
+  std::string type = "CPS4";  // CPS4, CPE4 (4-node), CPS8, CPE8 (8-node) or a shell type
   std::string material;       // non-empty: a section of NAME with this material
   double thickness = 1.0;     // the section's thickness
+  double offset = 0.0;        // shells: the reference surface's offset, -0.5..0.5 (OFFSET=)
 };
 
 struct LineInput {
@@ -41,7 +48,11 @@ struct LineInput {
   int divisions = 4;
   double grading = 1.0;  // last / first element length (from a to b)
   std::string material;  // non-empty: a section of NAME with this material
-  double area = 1.0;     // the section's cross-section area
+  double area = 1.0;     // the section's cross-section area (trusses)
+  std::string type = "T3D2";       // T3D2, or a beam: B31, B31R, B32, B32R
+  std::string shape = "RECT";      // beams: RECT, CIRC, PIPE, BOX
+  std::vector<double> dimensions;  // beams: the *BEAM SECTION's first data line
+  Vec3 direction{0.0, 0.0, -1.0};  // beams: the approximate first section axis
 };
 
 void check_plane(const PlaneInput& input, const Model& model, const ElementRegistry& registry);

@@ -53,7 +53,7 @@ void check_dof(int dof, const std::string& label) {
 bool dof_fits_step(int dof, StepKind kind) {
   switch (kind) {
     case StepKind::Static:
-      return dof >= 1 && dof <= 3;
+      return dof >= 1 && dof <= 6;
     case StepKind::HeatTransfer:
       return dof == 11;
     case StepKind::ElectricConduction:
@@ -90,13 +90,15 @@ std::string takes(StepKind kind) {
     case StepKind::Static:
       break;
   }
-  return "dofs 1, 2, 3 (x, y, z)";
+  return "dofs 1, 2, 3 (x, y, z) and 4, 5, 6 (rotations about x, y, z)";
 }
 }  // namespace
 
 void check_field_dof(const Model& model, int step, int dof, const std::string& label) {
-  if (dof != 9 && dof != 11 && (dof < 1 || dof > 3))
-    refuse(label + " must be 1, 2, 3 (x, y, z), 11 (temperature) or 9 (electric potential), not " +
+  if (!is_flux_dof(dof) && (dof < 1 || dof > 6))
+    refuse(label +
+           " must be 1, 2, 3 (x, y, z), 4, 5, 6 (rotations), 11 (temperature) or 9 (electric "
+           "potential), not " +
            std::to_string(dof));
   for (int s = 0; s < static_cast<int>(model.steps.size()); ++s) {
     if (step >= 0 && s != step) continue;
@@ -107,6 +109,8 @@ void check_field_dof(const Model& model, int step, int dof, const std::string& l
              takes(st.kind));
   }
 }
+
+bool is_flux_dof(int dof) { return dof == 9 || dof == 11; }
 
 void check_finite(double value, const std::string& label) {
   if (!std::isfinite(value)) refuse(label + " must be a finite number");

@@ -21,12 +21,16 @@ const Surface& existing_surface(const Model& model, const std::string& name);
 // step < 0 means "every step" where `model_level_allowed`; otherwise a 0-based existing step.
 void check_step(const Model& model, int step, bool model_level_allowed);
 void check_dof(int dof, const std::string& label);
-// The dofs a step of `kind` takes: 1..3 displacements (static), 11 temperature (steady heat),
-// 9 electric potential (electric conduction).
+// The dofs a step of `kind` takes: 1..3 displacements and 4..6 rotations (static; rotations at
+// nodes of beams and shells, which the solver checks), 11 temperature (steady heat), 9 electric
+// potential (electric conduction).
 bool dof_fits_step(int dof, StepKind kind);
 // A dof of a boundary condition or load in step `step` (< 0: held in every step, so it must fit
 // every step), refused with what the step takes.
 void check_field_dof(const Model& model, int step, int dof, const std::string& label);
+// Whether a dof is a scalar field's (11 temperature, 9 electric potential): its loads are fluxes
+// (*CFLUX, *CECUR) and a boundary condition on it is one dof.
+bool is_flux_dof(int dof);
 // "static", "heat transfer", "electric conduction": the step dialog's names of a StepKind.
 std::string step_kind_name(StepKind kind);
 // The StepKind of a step_kind_name(); InputError for another text.

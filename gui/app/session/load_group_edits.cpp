@@ -22,7 +22,7 @@ auto& boundaries_in(M& m, int step) {
 }
 template <typename M>
 auto& loads_in(M& m, int step, int dof) {
-  return dof <= 3 ? m.steps.at(step).cloads : m.steps.at(step).cfluxes;
+  return !is_flux_dof(dof) ? m.steps.at(step).cloads : m.steps.at(step).cfluxes;
 }
 template <typename M>
 auto& pressures_in(M& m, int step) {
@@ -104,7 +104,7 @@ std::unique_ptr<Command> boundary_edit_command(const Model& model, const Entry& 
   check_field_dof(model, in.step, in.first_dof, "first dof");
   check_field_dof(model, in.step, in.last_dof, "last dof");
   if (in.last_dof < in.first_dof) refuse("last dof must not be below the first dof");
-  if (in.first_dof > 3 && in.last_dof != in.first_dof)
+  if (is_flux_dof(in.first_dof) && in.last_dof != in.first_dof)
     refuse("a temperature (11) or potential (9) is one dof: give it as first and last dof");
   check_finite(in.value, "value");
   std::vector<Boundary> added;
@@ -129,7 +129,7 @@ std::unique_ptr<Command> cload_edit_command(const Model& model, const Entry& ent
   std::vector<ConcentratedLoad> added;
   for (int n : nodes) added.push_back({n, in.dof, each, {}});
   const bool was_flux = entry.kind == EntryKind::StepFluxes;
-  const bool same = entry.index == in.step && was_flux == (in.dof > 3);
+  const bool same = entry.index == in.step && was_flux == is_flux_dof(in.dof);
   const int from_dof = was_flux ? 11 : 1;
   return replace_entries<ConcentratedLoad>(
       "Edit load on " + nodes_name(in.nset, g), load_list(entry.index, from_dof),

@@ -75,6 +75,7 @@ void Scene::rebuild(const Document& document, const DisplaySettings& settings) {
       colors = render::ColorScale{range[0], range[1], settings.bands, settings.smooth};
     } else {
       field = render::evaluate_field(model, *increment, settings.field, settings.averaging);
+      field->shell_fibre = settings.shell_fibre;
       range = render::field_range(*skin, *field);
       colors = render::color_scale_for(*field, range, settings.bands, settings.smooth);
     }
@@ -170,6 +171,14 @@ void Scene::update_title() {
     const render::NumberFormat format = render::number_format(colors_);
     const std::string name = point_field_ ? point_field_->name : field_->name;
     const bool averaged = field_ && field_->uses_averaging;
+    // Shells coloured by their fibre tensors name the fibre.
+    bool shells = false;
+    for (const render::SkinModel::LayerSkin& layer : skin_->layers())
+      shells = shells || !layer.shells.empty();
+    const std::string fibre =
+        shells && field_ && field_->tensor_value && !field_->station_values
+            ? "shells: " + render::shell_fibre_name(settings_.shell_fibre) + " fibre"
+            : std::string();
     if (field_ && !field_->categories.empty()) {
       title_lines_.push_back("Field: " + name);
     } else {
@@ -180,11 +189,13 @@ void Scene::update_title() {
                      " integration points"
            : averaged ? "  Averaging: " + render::averaging_name(settings_.averaging)
                       : std::string()) +
-          "  Min: " + format(range[0]) + "  Max: " + format(range[1]));
+          (fibre.empty() ? "" : "  (" + fibre + ")") + "  Min: " + format(range[0]) +
+          "  Max: " + format(range[1]));
     }
     legend_heading_ = point_field_ ? name + " (integration points)"
-                      : averaged   ? name + " (" + render::averaging_name(settings_.averaging) + ")"
-                                   : name;
+                      : averaged   ? name + " (" + render::averaging_name(settings_.averaging) +
+                                       (fibre.empty() ? "" : ", " + fibre) + ")"
+                                 : name;
   } else {
     title_lines_.push_back("Mesh: " + std::to_string(model_->elements.size()) + " elements, " +
                            std::to_string(model_->coords.size()) + " nodes");

@@ -27,6 +27,8 @@ struct DisplaySettings {
   int increment = -1;  // index into Results::increments; -1 = the last
   std::string field;   // "" = layer colours; else a render::field_names() entry, e.g. "S.mises"
   render::Averaging averaging = render::Averaging::MethodII;
+  // The fibre whose stress / strain colours the shells (docs/render.md "Shells").
+  render::ShellFibre shell_fibre = render::ShellFibre::Top;
   int bands = render::kDefaultBands;
   bool smooth = false;
   bool deformed = true;    // with results

@@ -129,7 +129,7 @@ std::unique_ptr<Command> boundary_command(const Model& model, const BoundaryInpu
   check_field_dof(model, in.step, in.first_dof, "first dof");
   check_field_dof(model, in.step, in.last_dof, "last dof");
   if (in.last_dof < in.first_dof) refuse("last dof must not be below the first dof");
-  if (in.first_dof > 3 && in.last_dof != in.first_dof)
+  if (is_flux_dof(in.first_dof) && in.last_dof != in.first_dof)
     refuse("a temperature (11) or potential (9) is one dof: give it as first and last dof");
   check_finite(in.value, "value");
   std::vector<Boundary> entries;
@@ -149,7 +149,7 @@ std::unique_ptr<Command> cload_command(const Model& model, const CloadInput& in)
   const double each = in.split ? in.value / static_cast<double>(set.nodes.size()) : in.value;
   std::vector<ConcentratedLoad> loads;
   for (int n : set.nodes) loads.push_back({n, in.dof, each, {}});
-  if (in.dof <= 3) return make_add_cloads(in.step, std::move(loads), "Load " + set.name);
+  if (!is_flux_dof(in.dof)) return make_add_cloads(in.step, std::move(loads), "Load " + set.name);
   const std::string what = in.dof == 11 ? "Heat flow" : "Current";
   return make_model_edit(
       what + " into " + set.name,

@@ -1,6 +1,9 @@
 #include "geometry_dialogs.hpp"
 
 #include <algorithm>
+#include <vector>
+
+#include <QRegularExpression>
 
 #include "dialog_fields.hpp"
 #include "session/geometry_objects.hpp"
@@ -31,31 +34,65 @@ FormDialog* make_filter_dialog(const Model& model, const ElementDisplayFilter& c
   return d;
 }
 
+namespace {
+
+// 4 points as "x y" (8 numbers, z = 0) or "x y z" (12 numbers: shells in space).
+std::vector<Vec3> points(const FormDialog& f, const QString& key, const QString& label) {
+  const QString text = QString::fromStdString(f.text(key)).trimmed();
+  const auto fields = text.split(QRegularExpression("[,\\s]+"), Qt::SkipEmptyParts);
+  const int per_point = fields.size() == 12 ? 3 : 2;
+  const std::vector<double> v = numbers(f, key, label, 4 * per_point);
+  std::vector<Vec3> out;
+  for (int k = 0; k < 4; ++k)
+    out.push_back({v[per_point * k], v[per_point * k + 1], per_point == 3 ? v[3 * k + 2] : 0.0});
+  return out;
+}
+
+// The registry's types of one kind, sorted: shells (form Shell) or 3D beams with 2 or 3 nodes.
+QStringList registry_types(const ElementRegistry& registry, bool shells) {
+  QStringList out;
+  for (const std::string& name : registry.names()) {
+    const TElement* f = registry.find(name);
+    const bool fits = shells
+                          ? f->form() == ElementForm::Shell
+                          : f->section_measure() == SectionMeasure::Beam && f->active_dofs()[2] &&
+                                (f->node_count() == 2 || f->node_count() == 3);
+    if (fits) out << QString::fromStdString(name);
+  }
+  out.sort();
+  return out;
+}
+
+}  // namespace
+
 FormDialog* make_plane_dialog(Document& doc, QWidget* parent) {
   auto* d = new FormDialog(
       "Plane",
       "A patch in the x-y plane from 4 corners (counter-clockwise), optionally curved by 4 "
       "mid-side points (sides 1-2, 2-3, 3-4, 4-1), meshed with plane quads: divisions and grading "
       "(last/first element length) along side 1-2 and side 1-4. Creates the element set and node "
-      "set NAME; with a material, a section of the given thickness.",
+      "set NAME; with a material, a section of the given thickness. Shells (S4 ... S9R) may lie "
+      "anywhere: give the points as x y z; their section is a *SHELL SECTION with the offset "
+      "(-0.5 .. 0.5 thicknesses from the mid-surface), node sets NAME_SIDE1..4 mark the sides.",
       parent);
   d->add_text("name", "Name", "PLATE");
-  d->add_text("corners", "Corners x y (4 points)", "0 0  10 0  10 5  0 5");
-  d->add_text("midside", "Mid-side points x y (4 points, optional)", "");
+  d->add_text("corners", "Corners x y or x y z (4 points)", "0 0  10 0  10 5  0 5");
+  d->add_text("midside", "Mid-side points x y or x y z (4 points, optional)", "");
   d->add_text("divisions", "Divisions side 1-2, side 1-4", "4 2");
   d->add_text("grading", "Grading side 1-2, side 1-4", "1 1");
-  d->add_choice("type", "Element type", {"CPS4", "CPE4", "CPS8", "CPE8"});
+  d->add_choice("type", "Element type",
+                QStringList{"CPS4", "CPE4", "CPS8", "CPE8"} + registry_types(doc.registry(), true));
   d->add_choice("material", "Section material",
                 QStringList{"(none)"} + material_names(doc.model()));
   d->add_text("thickness", "Thickness", "1");
+  d->add_text("offset", "Shell offset (-0.5 .. 0.5)", "0");
   d->set_accept([&doc](const FormDialog& f) {
     PlaneInput in;
     in.name = f.text("name");
-    const std::vector<double> c = numbers(f, "corners", "Corners", 8);
-    for (int k = 0; k < 4; ++k) in.points.push_back({c[2 * k], c[2 * k + 1], 0.0});
+    in.points = points(f, "corners", "Corners");
     if (!f.text("midside").empty()) {
-      const std::vector<double> m = numbers(f, "midside", "Mid-side points", 8);
-      for (int k = 0; k < 4; ++k) in.points.push_back({m[2 * k], m[2 * k + 1], 0.0});
+      const std::vector<Vec3> m = points(f, "midside", "Mid-side points");
+      in.points.insert(in.points.end(), m.begin(), m.end());
     }
     const std::vector<int> n = whole_numbers(f, "divisions", "Divisions", 2);
     const std::vector<double> g = numbers(f, "grading", "Grading", 2);
@@ -66,6 +103,7 @@ FormDialog* make_plane_dialog(Document& doc, QWidget* parent) {
     in.type = f.text("type");
     in.material = f.text("material") == "(none)" ? std::string() : f.text("material");
     in.thickness = f.real("thickness", "Thickness");
+    in.offset = f.real("offset", "Shell offset");
     doc.apply(plane_command(doc.model(), in, doc.registry()));
   });
   return d;
@@ -74,9 +112,10 @@ FormDialog* make_plane_dialog(Document& doc, QWidget* parent) {
 FormDialog* make_line_dialog(Document& doc, QWidget* parent) {
   auto* d = new FormDialog(
       "Line",
-      "A straight line from the start to the end point divided into graded T3D2 trusses (grading: "
-      "last/first element length). Creates the element set and node set NAME; with a material, "
-      "a section of the given cross-section area.",
+      "A straight line from the start to the end point divided into graded T3D2 trusses or beams "
+      "(grading: last/first element length). Creates the element set and node set NAME; with a "
+      "material, a section: the cross-section area of a truss, or a *BEAM SECTION (RECT: a b; "
+      "CIRC: r; PIPE: r t; BOX: a b t1 t2 t3 t4) with its first section axis.",
       parent);
   d->add_text("name", "Name", "BAR");
   d->add_text("start", "Start point x y z", "0 0 0");
@@ -85,7 +124,12 @@ FormDialog* make_line_dialog(Document& doc, QWidget* parent) {
   d->add_text("grading", "Grading (last/first)", "1");
   d->add_choice("material", "Section material",
                 QStringList{"(none)"} + material_names(doc.model()));
-  d->add_text("area", "Cross-section area", "1");
+  d->add_text("area", "Cross-section area (trusses)", "1");
+  d->add_choice("type", "Element type",
+                QStringList{"T3D2"} + registry_types(doc.registry(), false));
+  d->add_choice("shape", "Beam section", {"RECT", "CIRC", "PIPE", "BOX"});
+  d->add_text("dimensions", "Beam section dimensions", "1 1");
+  d->add_text("direction", "First section axis x y z", "0 0 -1");
   d->set_accept([&doc](const FormDialog& f) {
     LineInput in;
     in.name = f.text("name");
@@ -97,6 +141,16 @@ FormDialog* make_line_dialog(Document& doc, QWidget* parent) {
     in.grading = f.real("grading", "Grading");
     in.material = f.text("material") == "(none)" ? std::string() : f.text("material");
     in.area = f.real("area", "Cross-section area");
+    in.type = f.text("type");
+    in.shape = f.text("shape");
+    if (in.type != "T3D2") {
+      const QString dims = QString::fromStdString(f.text("dimensions")).trimmed();
+      const int count =
+          static_cast<int>(dims.split(QRegularExpression("[,\\s]+"), Qt::SkipEmptyParts).size());
+      in.dimensions = numbers(f, "dimensions", "Beam section dimensions", std::max(count, 1));
+      const std::vector<double> n = numbers(f, "direction", "First section axis", 3);
+      in.direction = {n[0], n[1], n[2]};
+    }
     doc.apply(line_command(doc.model(), in, doc.registry()));
   });
   return d;

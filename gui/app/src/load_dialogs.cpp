@@ -41,7 +41,8 @@ FormDialog* boundary_dialog(Document& doc, QWidget* parent, const Entry* group) 
   const BoundaryInput in = group ? boundary_input_of(m, *group) : BoundaryInput{};
   auto* d = new FormDialog(group ? "Edit boundary condition" : "Boundary condition",
                            "Prescribes dofs first..last of every node of a node set: 1 = x, "
-                           "2 = y, 3 = z in static steps; 11 = temperature in heat transfer "
+                           "2 = y, 3 = z, 4-6 = rotations about x, y, z (nodes of beams and "
+                           "shells) in static steps; 11 = temperature in heat transfer "
                            "steps, 9 = electric potential in electric conduction steps (first = "
                            "last).",
                            parent);
@@ -67,12 +68,14 @@ FormDialog* cload_dialog(Document& doc, QWidget* parent, const Entry* group) {
   CloadInput in{"", 3, -100.0, true, 0};
   if (group) in = cload_input_of(m, *group);
   auto* d = new FormDialog(group ? "Edit concentrated load" : "Concentrated load",
-                           "*CLOAD on every node of a node set (direction 1, 2, 3) in a static "
-                           "step; in a heat transfer step direction 11 is a nodal heat flow "
+                           "*CLOAD on every node of a node set (direction 1, 2, 3; moments about "
+                           "x, y, z: 4, 5, 6 at nodes of beams and shells) in a static step; in a "
+                           "heat transfer step direction 11 is a nodal heat flow "
                            "(*CFLUX), in an electric conduction step 9 a nodal current (*CECUR).",
                            parent);
   d->add_choice("nset", "Node set", nset_choices(m, g), q(in.nset));
-  d->add_text("dof", "Direction (1, 2, 3; 11 heat flow; 9 current)", QString::number(in.dof));
+  d->add_text("dof", "Direction (1, 2, 3; moments 4, 5, 6; 11 heat flow; 9 current)",
+              QString::number(in.dof));
   d->add_text("value", "Value", QString::number(in.value));
   d->add_check("split", "Value is the total, divided among the nodes", in.split);
   d->add_choice("step", "Step", step_names(m, false),

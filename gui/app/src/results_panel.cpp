@@ -22,6 +22,9 @@ ResultsPanel::ResultsPanel(QWidget* parent) : QWidget(parent) {
   averaging_ = new QComboBox;
   averaging_->setObjectName("averaging");
   averaging_->addItems({"II", "I", "none", "centroid"});
+  fibre_ = new QComboBox;
+  fibre_->setObjectName("fibre");
+  fibre_->addItems({"top", "middle", "bottom"});
   bands_ = new QSpinBox;
   bands_->setObjectName("bands");
   bands_->setRange(render::kMinBands, render::kMaxBands);
@@ -60,6 +63,7 @@ ResultsPanel::ResultsPanel(QWidget* parent) : QWidget(parent) {
   form->addRow("Increment", increment_);
   form->addRow("Field", field_);
   form->addRow("Averaging", averaging_);
+  form->addRow("Shell fibre", fibre_);
   form->addRow("Colours", bands_);
   form->addRow(QString(), smooth_);
   form->addRow(QString(), ip_values_);
@@ -84,6 +88,7 @@ ResultsPanel::ResultsPanel(QWidget* parent) : QWidget(parent) {
     emit changed();
   });
   connect(averaging_, &QComboBox::currentIndexChanged, this, &ResultsPanel::changed);
+  connect(fibre_, &QComboBox::currentIndexChanged, this, &ResultsPanel::changed);
   connect(bands_, &QSpinBox::valueChanged, this, &ResultsPanel::changed);
   for (QCheckBox* c : {smooth_, deformed_, auto_scale_, ip_values_, unrolled_})
     connect(c, &QCheckBox::toggled, this, &ResultsPanel::changed);
@@ -152,6 +157,7 @@ DisplaySettings ResultsPanel::settings(render::DisplayMode mode) const {
   s.increment = increment_->currentIndex();
   s.field = field_->currentIndex() <= 0 ? std::string() : field_->currentText().toStdString();
   s.averaging = render::parse_averaging(averaging_->currentText().toStdString());
+  s.shell_fibre = render::parse_shell_fibre(fibre_->currentText().toStdString());
   s.bands = bands_->value();
   s.smooth = smooth_->isChecked();
   s.ip_values = ip_values_->isChecked();

@@ -46,6 +46,7 @@ class ResultsPanel : public QWidget {
   QString wanted_field_;
   QComboBox* increment_ = nullptr;
   QComboBox* field_ = nullptr;
+  QComboBox* fibre_ = nullptr;  // the shells' fibre: top, middle, bottom
   QComboBox* averaging_ = nullptr;
   QSpinBox* bands_ = nullptr;
   QCheckBox* smooth_ = nullptr;

@@ -110,7 +110,8 @@ class BeamColouring {
     if (!field_) return;
     if (field_->tensor_value && !field_->point_offset.empty()) {
       const int first = field_->point_offset[e], last = field_->point_offset[e + 1];
-      stations_ = stations_of(f, last - first);
+      // Section forces: one value per station (4 fibre points per station otherwise).
+      stations_ = stations_of(f, (field_->station_values ? 4 : 1) * (last - first));
       fibres_ = !stations_.empty();
     }
     const int* conn = model.element_nodes(e);
@@ -129,6 +130,11 @@ class BeamColouring {
       const std::array<double, 4> around = fibre_weights(shape_, x);
       const int first = field_->point_offset[e_];
       Tensor6 t{};
+      if (field_->station_values) {
+        for (std::size_t s = 0; s < stations_.size(); ++s)
+          for (int c = 0; c < 6; ++c) t[c] += along[s] * field_->point_tensors[first + s][c];
+        return field_->tensor_value(t);
+      }
       for (std::size_t s = 0; s < stations_.size(); ++s)
         for (int k = 0; k < 4; ++k) {
           const Tensor6& p = field_->point_tensors[first + 4 * s + k];

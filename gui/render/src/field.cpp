@@ -254,6 +254,26 @@ std::string averaging_name(Averaging averaging) {
   return "?";
 }
 
+ShellFibre parse_shell_fibre(const std::string& name) {
+  const std::string t = lower(name);
+  if (t == "bottom") return ShellFibre::Bottom;
+  if (t == "middle") return ShellFibre::Middle;
+  if (t == "top") return ShellFibre::Top;
+  throw InputError({}, "unknown shell fibre '" + name + "'; use bottom, middle or top");
+}
+
+std::string shell_fibre_name(ShellFibre fibre) {
+  switch (fibre) {
+    case ShellFibre::Bottom:
+      return "bottom";
+    case ShellFibre::Middle:
+      return "middle";
+    case ShellFibre::Top:
+      return "top";
+  }
+  return "?";
+}
+
 std::vector<std::string> field_names() {
   std::vector<std::string> names;
   for (const char* v : {"U", "RF", "UR", "RM"})
@@ -267,12 +287,53 @@ std::vector<std::string> field_names() {
     }
   }
   for (const std::string& name : contact_field_names()) names.push_back(name);
+  for (const char* v : {"SF", "SM"})
+    for (const char* s : {"1", "2", "3"}) names.push_back(std::string(v) + "." + s);
   names.push_back("ERR");
   for (const char* v : {"NT", "RFL", "EPOT", "RECUR"}) names.push_back(v);
   for (const char* v : {"HFL", "ECD"})
     for (const char* s : {"mag", "x", "y", "z"}) names.push_back(std::string(v) + "." + s);
   return names;
 }
+
+namespace {
+
+// Section forces SF or moments SM of beams and shells (docs/results.md): component 1..3 per
+// station, drawn over the beams' axes and the shells' surfaces like the fibre tensors.
+ScalarField section_resultant_field(const Model& model, const IncrementResult& inc,
+                                    const std::string& quantity, const std::string& suffix) {
+  const int component = suffix == "1" ? 0 : suffix == "2" ? 1 : suffix == "3" ? 2 : -1;
+  if (component < 0)
+    throw InputError({}, "unknown field '" + quantity + "." + suffix + "'; " + quantity +
+                             " has the components " + quantity + ".1, " + quantity + ".2, " +
+                             quantity + ".3");
+  const std::vector<Vec3>& data = quantity == "SF" ? inc.SF : inc.SM;
+  if (data.empty() || inc.station_offset.size() != model.elements.size() + 1)
+    throw InputError({}, "step " + std::to_string(inc.step) + " increment " +
+                             std::to_string(inc.increment) + " holds no " + quantity +
+                             " (section forces and moments of beams and shells); it holds: " +
+                             drawable_data(model, inc));
+  ScalarField field;
+  field.name = quantity + "." + suffix;
+  field.description = field.name + (quantity == "SF" ? ", section force" : ", section moment");
+  field.location = FieldLocation::Node;
+  field.values.assign(model.coords.size(), 0.0);
+  field.defined.assign(model.coords.size(), 0);
+  for (std::size_t e = 0; e < model.elements.size(); ++e) {
+    if (inc.station_offset[e + 1] <= inc.station_offset[e]) continue;
+    const int* nodes = model.element_nodes(static_cast<int>(e));
+    for (int k = 0; k < model.elements[e].node_count; ++k) field.defined[nodes[k]] = 1;
+  }
+  field.point_offset.assign(inc.station_offset.begin(), inc.station_offset.end());
+  for (const Vec3& v : data) field.point_tensors.push_back(Tensor6{v[0], v[1], v[2], 0, 0, 0});
+  field.tensor_value = [](const Tensor6& t) { return t[0]; };
+  if (component > 0)
+    for (Tensor6& t : field.point_tensors) t[0] = t[component];
+  field.station_values = true;
+  return field;
+}
+
+}  // namespace
 
 ScalarField evaluate_field(const Model& model, const IncrementResult& inc, const std::string& name,
                            Averaging averaging, const std::string& contact_pair) {
@@ -338,6 +399,8 @@ ScalarField evaluate_field(const Model& model, const IncrementResult& inc, const
     field.values = inc.ERR;
     return field;
   }
+  if (quantity == "SF" || quantity == "SM")
+    return section_resultant_field(model, inc, quantity, suffix);
   if (quantity == "S" || quantity == "E") {
     const bool stress = quantity == "S";
     const TensorFunction f = tensor_function(suffix, stress);
@@ -347,11 +410,13 @@ ScalarField evaluate_field(const Model& model, const IncrementResult& inc, const
                                        : TensorArrays{&inc.E_element_nodes, &inc.E_nodal_I,
                                                       &inc.E_nodal_II, &inc.E_centroid, &inc.E};
     ScalarField field = tensor_field(model, inc, stress ? "S" : "E", arrays, f, averaging);
-    // Beams are coloured from their fibre tensors (beam_geometry.hpp).
-    const bool beams = std::any_of(model.sections.begin(), model.sections.end(),
-                                   [](const Section& s) { return s.beam.has_value(); });
+    // Beams and shells are coloured from their fibre tensors (beam_geometry.hpp,
+    // shell_geometry.hpp).
+    const bool fibres =
+        std::any_of(model.sections.begin(), model.sections.end(),
+                    [](const Section& s) { return s.beam.has_value() || s.shell.has_value(); });
     const std::vector<Tensor6>& points = stress ? inc.S : inc.E;
-    if (beams && !points.empty() && inc.ip_offset.size() == model.elements.size() + 1) {
+    if (fibres && !points.empty() && inc.ip_offset.size() == model.elements.size() + 1) {
       field.point_offset = inc.ip_offset;
       field.point_tensors = points;
       field.tensor_value = f;

@@ -9,6 +9,7 @@
 #include "beam_geometry.hpp"
 #include "face_shape.hpp"
 #include "line_geometry.hpp"
+#include "shell_geometry.hpp"
 #include "styk/core/vec3.hpp"
 
 namespace styk::render {
@@ -367,6 +368,8 @@ SkinModel::SkinModel(const Model& model, const ElementRegistry& registry,
     for (int e : skin.elements) {
       if (is_drawn_beam(model, *formulations_[e], e))
         skin.beams.push_back(e);
+      else if (is_drawn_shell(*formulations_[e]))
+        skin.shells.push_back(e);
       else if (is_line_element(*formulations_[e]))
         skin.lines.push_back(e);
     }
@@ -390,10 +393,11 @@ SkinModel::SkinModel(const Model& model, const ElementRegistry& registry,
       lo[k] = std::min(lo[k], model.coords[n][k]), hi[k] = std::max(hi[k], model.coords[n][k]);
   }
   if (seen) {
-    // Beam sections reach beyond their nodes.
+    // Beam sections and shell thicknesses reach beyond their nodes.
     double radius = 0.0;
     for (const LayerSkin& layer : layers_)
-      radius = std::max(radius, largest_beam_section_radius(model, layer.beams));
+      radius = std::max({radius, largest_beam_section_radius(model, layer.beams),
+                         largest_shell_reach(model, layer.shells)});
     double d2 = 0.0;
     for (int k = 0; k < 3; ++k) {
       lo[k] -= radius, hi[k] += radius;
@@ -437,6 +441,10 @@ FrameGeometry build_geometry(const SkinModel& skin, const GeometryRequest& rq) {
     if (!layer.beams.empty() && rq.beam_sections) {
       add_beam_elements(skin, layer, rq, g);
       g.closed = false;  // the tubes are drawn without back-face culling
+    }
+    if (!layer.shells.empty()) {
+      add_shell_elements(skin, layer, rq, g);
+      g.closed = false;  // nor are the shells
     }
     if (!rq.points) continue;
     for (int node : layer.nodes) {
@@ -498,16 +506,45 @@ bool face_carries(const SkinModel& skin, const ScalarField& field, const SkinFac
   return field.carries(face.element, face.face, nodes, outward);
 }
 
+namespace {
+
+// With a field drawn on shells from their point tensors: per node, whether a visible element
+// other than such a shell uses it (a node of shells only is not drawn with its nodal value).
+std::vector<char> nodes_drawn_by_value(const SkinModel& skin,
+                                       const std::vector<char>& fibre_shell) {
+  const Model& model = skin.model();
+  std::vector<char> used(model.coords.size(), 0);
+  for (const SkinModel::LayerSkin& layer : skin.layers())
+    for (int e : layer.elements) {
+      if (fibre_shell[e]) continue;
+      const int* nodes = model.element_nodes(e);
+      for (int k = 0; k < model.elements[e].node_count; ++k) used[nodes[k]] = 1;
+    }
+  return used;
+}
+
+}  // namespace
+
 std::array<double, 2> field_range(const SkinModel& skin, const ScalarField& field) {
   double lo = std::numeric_limits<double>::max(), hi = -lo;
   const auto visit = [&](double v) { lo = std::min(lo, v), hi = std::max(hi, v); };
   const Model& model = skin.model();
+  // Shells coloured by their fibre tensors: their values on the fibre, below.
+  std::vector<char> fibre_shell(model.elements.size(), 0);
+  if (field.tensor_value && !field.point_offset.empty())
+    for (const SkinModel::LayerSkin& layer : skin.layers()) {
+      for (int e : layer.shells) fibre_shell[e] = 1;
+      if (field.station_values)  // beams too: their nodes hold no section force
+        for (int e : layer.beams) fibre_shell[e] = 1;
+    }
   if (field.location == FieldLocation::Node) {
+    const std::vector<char> by_value = nodes_drawn_by_value(skin, fibre_shell);
     for (int n : skin.visible_nodes())
-      if (field.defined_at(n)) visit(field.values[n]);
+      if (field.defined_at(n) && by_value[n]) visit(field.values[n]);
   } else {
     for (const SkinModel::LayerSkin& layer : skin.layers())
       for (int e : layer.elements) {
+        if (fibre_shell[e]) continue;
         if (field.location == FieldLocation::Element) {
           visit(field.values[e]);
           continue;
@@ -520,6 +557,8 @@ std::array<double, 2> field_range(const SkinModel& skin, const ScalarField& fiel
   for (const SkinModel::LayerSkin& layer : skin.layers()) {
     const std::array<double, 2> beams = beam_field_range(skin, layer.beams, field);
     if (beams[0] <= beams[1]) visit(beams[0]), visit(beams[1]);
+    const std::array<double, 2> shells = shell_field_range(skin, layer.shells, field);
+    if (shells[0] <= shells[1]) visit(shells[0]), visit(shells[1]);
   }
   if (lo > hi) return {0.0, 0.0};
   return {lo, hi};

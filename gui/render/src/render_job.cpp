@@ -201,6 +201,7 @@ void RenderJob::evaluate_fields(std::unique_ptr<ScalarField> revolved) {
                        "--unroll lays out a field that lives on surfaces (contact output: "
                        "CPRESS, CSHEAR, CSLIP, CGAP, CSTATUS), not " +
                            field_->name);
+    field_->shell_fibre = options_.shell_fibre;
     range = field_range(*skin_, *field_);
     colors_ = color_scale_for(*field_, range, options_.bands, options_.smooth);
   }
@@ -277,8 +278,18 @@ void RenderJob::choose_field_faces() {
 
 std::string RenderJob::legend_heading() const {
   if (point_field_) return point_field_->name + " (integration points)";
-  return field_->name +
-         (field_->uses_averaging ? " (" + averaging_name(options_.averaging) + ")" : "");
+  const std::string fibre = shell_fibre_text();
+  return field_->name + (field_->uses_averaging ? " (" + averaging_name(options_.averaging) +
+                                                      (fibre.empty() ? "" : ", " + fibre) + ")"
+                                                : "");
+}
+
+std::string RenderJob::shell_fibre_text() const {
+  if (!field_ || !field_->tensor_value || field_->point_offset.empty() || field_->station_values)
+    return "";
+  for (const SkinModel::LayerSkin& layer : skin_->layers())
+    if (!layer.shells.empty()) return "shells: " + shell_fibre_name(field_->shell_fibre) + " fibre";
+  return "";
 }
 
 void RenderJob::build_map() {
@@ -374,7 +385,9 @@ std::vector<std::string> RenderJob::title_lines() const {
                            " integration points"
         : field_->uses_averaging ? "  Averaging: " + averaging_name(options_.averaging)
                                  : std::string();
-    lines.push_back("Field: " + (point_field_ ? point_field_->name : field_->name) + where + pair +
+    const std::string fibre = shell_fibre_text();
+    lines.push_back("Field: " + (point_field_ ? point_field_->name : field_->name) + where +
+                    (fibre.empty() ? "" : "  (" + fibre + ")") + pair +
                     "  Min: " + format(field_min_max_[0]) + "  Max: " + format(field_min_max_[1]) +
                     (options_.range
                          ? "  (scale " + format(colors_.min) + " to " + format(colors_.max) + ")"

@@ -29,6 +29,13 @@ enum class Averaging { None, MethodI, MethodII, Centroid };
 Averaging parse_averaging(const std::string& text);
 std::string averaging_name(Averaging averaging);
 
+// The fibre of a shell whose values colour it (docs/render.md "Shells"): the output points of a
+// shell are its surface Gauss points at the bottom, middle and top fibre (docs/elements.md).
+enum class ShellFibre { Bottom = 0, Middle = 1, Top = 2 };
+// "bottom", "middle", "top"; parse_shell_fibre throws InputError for another name.
+std::string shell_fibre_name(ShellFibre fibre);
+ShellFibre parse_shell_fibre(const std::string& name);
+
 // Where the values of a field live.
 enum class FieldLocation {
   Node,         // values[node index]
@@ -67,14 +74,19 @@ struct ScalarField {
   // normal is `outward`, is coloured.
   bool carries(int element, int face, const std::vector<int>& nodes, const Vec3& outward) const;
 
-  // Stress and strain fields of models with beams: the tensors at every output point of the
-  // increment (IncrementResult::S or E, element e's points at point_offset[e] ..) and the function
-  // that turns a tensor into the field value. Beams are drawn from these (interpolated over their
-  // sections, then evaluated), since averaging at their nodes would lose the bending stress.
-  // Empty otherwise.
+  // Stress and strain fields of models with beams or shells: the tensors at every output point of
+  // the increment (IncrementResult::S or E, element e's points at point_offset[e] ..) and the
+  // function that turns a tensor into the field value. Beams are drawn from these (interpolated
+  // over their sections, then evaluated), since averaging at their nodes would lose the bending
+  // stress. Empty otherwise. Shells are drawn from them too, on the fibre `shell_fibre`.
   std::vector<int> point_offset;
   std::vector<Tensor6> point_tensors;
   std::function<double(const Tensor6&)> tensor_value;
+  ShellFibre shell_fibre = ShellFibre::Top;
+  // Section forces and moments (SF.*, SM.*): point_tensors hold one value per station (the
+  // increment's station_offset; component in slot 0), not per fibre point. Such a field has a
+  // value at the nodes of beams and shells alone (`defined`); other elements show neutral grey.
+  bool station_values = false;
 };
 
 // Every field name evaluate_field() accepts, for messages and `--help`.

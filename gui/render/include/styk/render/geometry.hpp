@@ -67,6 +67,7 @@ class SkinModel {
     std::vector<SkinFace> faces;  // their skin
     std::vector<int> lines;       // the line elements among them (no faces: drawn as bars)
     std::vector<int> beams;       // the beams with a *BEAM SECTION: drawn as extruded sections
+    std::vector<int> shells;      // the shells: drawn as surfaces with their thickness
     std::vector<int> nodes;       // their nodes, ascending
   };
 
@@ -104,8 +105,8 @@ class SkinModel {
 struct GeometryRequest {
   const std::vector<Vec3>* displacement = nullptr;  // per node; nullptr = undeformed
   double scale = 0.0;                               // deformation scale factor
-  // Per node rotations (the increment's UR; models with beams): the drawn beam sections turn by
-  // them times `scale`. nullptr: sections keep their undeformed orientation.
+  // Per node rotations (the increment's UR; models with beams or shells): the drawn beam sections
+  // and shell fibres turn by them times `scale`. nullptr: they keep their undeformed orientation.
   const std::vector<Vec3>* rotation = nullptr;
   const ScalarField* field = nullptr;               // nullptr = layer colours
   const ColorScale* colors = nullptr;               // required with a field
@@ -128,7 +129,9 @@ FrameGeometry build_geometry(const SkinModel& skin, const GeometryRequest& reque
 bool face_carries(const SkinModel& skin, const ScalarField& field, const SkinFace& face);
 
 // Minimum and maximum of a field over the visible elements (their nodes where the field is
-// defined, element nodes or elements, as the field is located). {0, 0} when nothing is visible.
+// defined, element nodes or elements, as the field is located). Shells coloured by point tensors
+// count with the values drawn on their fibre (ScalarField::shell_fibre), beams with their
+// sections' values, not with their nodal averages. {0, 0} when nothing is visible.
 std::array<double, 2> field_range(const SkinModel& skin, const ScalarField& field);
 
 }  // namespace styk::render

@@ -68,6 +68,8 @@ struct RenderOptions {
   ElementFilter filter;
   std::string model_name;  // title block; empty: the model's source file name
   int samples = 4;         // multisampling of the scene's edges, 1..16 (1 = none)
+  // The fibre whose stress / strain colours the shells (docs/render.md "Shells").
+  ShellFibre shell_fibre = ShellFibre::Top;
   // > 0: draw the axisymmetric elements as the body they stand for, swept about the y axis
   // through this many degrees (revolve.hpp); segments 0 = one per 15 degrees.
   double revolve_degrees = 0.0;
@@ -109,6 +111,8 @@ class RenderJob {
   void choose_field_faces();
   std::vector<std::string> title_lines() const;
   std::string legend_heading() const;
+  // "top fibre" etc. when the field colours shells by their fibre tensors; "" otherwise.
+  std::string shell_fibre_text() const;
   GeometryRequest request(double fraction) const;
   Camera fit(const PixelRect& area) const;
   void build_map();
