@@ -46,6 +46,7 @@ int solve_command(const SolveArgs& args) {
   SolveOptions options;
   options.threads = args.threads;
   options.force = parse_solver(args.solver);
+  options.memory_limit_gb = args.memory_limit_gb;
   AnalysisReport report;
   const Results results = run_static_analysis(model, registry, options, &progress, &report);
 

@@ -11,6 +11,7 @@ struct SolveArgs {
   std::string output_dir = ".";
   std::string solver = "auto";  // auto | cholmod | iterative
   int threads = 0;
+  double memory_limit_gb = 0.0;  // 0: 80 % of the physical memory
   bool quiet = false;
 };
 int solve_command(const SolveArgs& args);

@@ -16,9 +16,14 @@ int run_reporting_errors(const std::function<int()>& command) {
   } catch (const NotConvergedError& e) {
     std::cerr << "not converged: " << e.what() << "\n";
     return kNotConverged;
+  } catch (const ResourceLimitError& e) {
+    std::cerr << "resource limit: " << e.what() << "\n";
+    return kResourceLimit;
   } catch (const std::bad_alloc&) {
-    std::cerr << "internal error: out of memory\n";
-    return kInternalError;
+    std::cerr << "resource limit: out of memory (the model needs more memory than this machine "
+                 "can give; a coarser mesh, a symmetric part of the model or the iterative "
+                 "solver need less)\n";
+    return kResourceLimit;
   } catch (const std::exception& e) {
     std::cerr << "internal error: " << e.what() << "\n";
     return kInternalError;

@@ -11,6 +11,7 @@ enum ExitCode : int {
   kNotConverged = 2,   // NotConvergedError
   kInternalError = 3,  // anything else: a bug in Styk
   kUnverifiable = 4,   // `styk check`: a results file written before checksums, otherwise sound
+  kResourceLimit = 5,  // ResourceLimitError or std::bad_alloc: the model does not fit in memory
 };
 
 // Runs a command, turning the exception types of Styk into exit codes and one message on stderr.

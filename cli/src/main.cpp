@@ -29,6 +29,10 @@ int main(int argc, char** argv) {
       ->check(CLI::IsMember({"auto", "cholmod", "iterative"}));
   solve_cmd->add_option("--threads", solve.threads, "Threads for assembly and recovery (0 = all cores)")
       ->check(CLI::NonNegativeNumber);
+  solve_cmd->add_option("--memory-limit", solve.memory_limit_gb,
+                        "GB the direct solver's factor may take (default: 80 % of the memory); "
+                        "above it auto switches to the iterative solver, cholmod stops")
+      ->check(CLI::PositiveNumber);
   solve_cmd->add_flag("-q,--quiet", solve.quiet, "No progress lines on stderr");
 
   InfoArgs info;

@@ -160,7 +160,7 @@ Results run_static_analysis(const Model& model, const ElementRegistry& registry,
   };
   assemble();
 
-  const SolverContext context{model, prepared, phases, threads};
+  const SolverContext context{model, prepared, phases, threads, options.memory_limit_gb};
   std::unique_ptr<LinearSolver> solver;
   LinearSolverKind solver_kind = LinearSolverKind::Automatic;
   std::vector<int> solver_prescribed;

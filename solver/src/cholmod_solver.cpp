@@ -23,7 +23,7 @@ namespace styk::solver_detail {
 namespace {
 
 std::string format(const char* pattern, double a, double b = 0.0, double c = 0.0) {
-  char buffer[160];
+  char buffer[320];
   std::snprintf(buffer, sizeof buffer, pattern, a, b, c);
   return buffer;
 }
@@ -235,12 +235,16 @@ class CholmodSolver final : public LinearSolver {
     L_ = CholmodFactor(L, CholmodFactorDeleter{c});
     // Refuse a factor that cannot fit before trying (the supernodal factor is ~8 bytes/entry).
     const double factor_bytes = 8.0 * c->lnz;
-    const double memory = physical_memory_bytes();
-    if (memory > 0.0 && factor_bytes > 0.8 * memory)
-      throw FactorTooLarge(
-          format("the Cholesky factor of this model needs %.1f GB, more than the %.1f GB of memory "
-                 "here; use *STATIC, SOLVER=ITERATIVE",
-                 factor_bytes / 1e9, memory / 1e9));
+    const bool given = context_.memory_limit_gb > 0.0;
+    const double limit = given ? context_.memory_limit_gb * 1e9 : 0.8 * physical_memory_bytes();
+    if (limit > 0.0 && factor_bytes > limit)
+      throw FactorTooLarge(format(given ? "the Cholesky factor of this model needs %.3g GB, more "
+                                          "than the memory limit of %.3g GB (--memory-limit); use "
+                                          "the iterative solver (*STATIC, SOLVER=ITERATIVE)"
+                                        : "the Cholesky factor of this model needs %.3g GB, more "
+                                          "than the %.3g GB (80 %% of the memory) here; use the "
+                                          "iterative solver (*STATIC, SOLVER=ITERATIVE)",
+                                  factor_bytes / 1e9, limit / 1e9));
   }
 
   void factorise() {
@@ -251,9 +255,9 @@ class CholmodSolver final : public LinearSolver {
         std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
     if (c->status == CHOLMOD_NOT_POSDEF) throw singular_at(static_cast<long>(L_->minor));
     if (c->status == CHOLMOD_OUT_OF_MEMORY)
-      throw std::runtime_error(
-          "CHOLMOD ran out of memory in the factorisation; use "
-          "*STATIC, SOLVER=ITERATIVE");
+      throw ResourceLimitError(
+          "CHOLMOD ran out of memory in the factorisation; use the iterative solver (*STATIC, "
+          "SOLVER=ITERATIVE)");
     if (c->status < CHOLMOD_OK)
       throw std::runtime_error("CHOLMOD factorisation failed with status " +
                                std::to_string(c->status));

@@ -249,7 +249,7 @@ Results run_contact_analysis(const Model& model, const ElementRegistry& registry
     kinematic.apply(K);
   };
   assemble();
-  const SolverContext context{model, prepared, phases, threads};
+  const SolverContext context{model, prepared, phases, threads, options.memory_limit_gb};
   const ContactOperator B(prepared, constraints);
   const std::vector<char> touches_contact = contact_nodes(prepared, constraints);
 

@@ -15,6 +15,7 @@
 #include "prepared_model.hpp"
 #include "step_conditions.hpp"
 #include "stiffness_matrix.hpp"
+#include "styk/core/diagnostics.hpp"
 
 namespace styk::solver_detail {
 
@@ -47,13 +48,14 @@ struct SolverContext {
   const PreparedModel& prepared;
   const PhaseRecorder& phases;
   int threads = 1;
+  double memory_limit_gb = 0.0;  // SolveOptions::memory_limit_gb
 };
 
 // Thrown by a direct solver whose factor would not fit in memory (the analysis may then switch to
 // the iterative solver).
-class FactorTooLarge : public std::runtime_error {
+class FactorTooLarge : public ResourceLimitError {
  public:
-  using std::runtime_error::runtime_error;
+  using ResourceLimitError::ResourceLimitError;
 };
 
 class LinearSolver {

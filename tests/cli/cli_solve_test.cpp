@@ -44,6 +44,34 @@ TEST(Cli, SolveWritesResultsAndReportAndNothingElse) {
     EXPECT_NE(r.err.find(phase), std::string::npos) << phase << " missing in:\n" << r.err;
 }
 
+// Resource limits (docs/cli.md, exit code 5): the direct solver's factor is estimated from the
+// symbolic analysis before factorising. Under a 10 kB limit the cantilever's factor (about 1 MB)
+// does not fit: a forced direct solve stops with the estimate and writes nothing; the automatic
+// choice switches to the iterative solver and solves.
+TEST(Cli, MemoryLimitStopsTheDirectSolverBeforeFactorising) {
+  const std::string dir = scratch_dir("cli_memory_limit");
+  const CommandResult forced = run_command(
+      styk_executable() + " solve '" + kSample + "' --solver cholmod --memory-limit 1e-5 -o out",
+      dir);
+  EXPECT_EQ(forced.exit_code, 5) << forced.err;
+  EXPECT_NE(forced.err.find("resource limit: the Cholesky factor of this model needs"),
+            std::string::npos)
+      << forced.err;
+  EXPECT_NE(forced.err.find("more than the memory limit of 1e-05 GB (--memory-limit)"),
+            std::string::npos)
+      << forced.err;
+  EXPECT_NE(forced.err.find("SOLVER=ITERATIVE"), std::string::npos) << forced.err;
+  EXPECT_FALSE(fs::exists(dir + "/out/cantilever-c3d20.styk.h5"));
+  EXPECT_FALSE(fs::exists(dir + "/out/cantilever-c3d20.dat"));
+
+  const CommandResult automatic = run_command(
+      styk_executable() + " solve '" + kSample + "' --memory-limit 1e-5 -o auto", dir);
+  ASSERT_EQ(automatic.exit_code, 0) << automatic.err;
+  EXPECT_NE(automatic.err.find("switching to the iterative solver"), std::string::npos)
+      << automatic.err;
+  EXPECT_TRUE(fs::exists(dir + "/auto/cantilever-c3d20.styk.h5"));
+}
+
 TEST(Cli, InfoCountsTheModel) {
   const CommandResult r =
       run_command(styk_executable() + " info '" + kSample + "'", scratch_dir("cli_info"));

@@ -34,4 +34,11 @@ class NotConvergedError : public std::runtime_error {
   using std::runtime_error::runtime_error;
 };
 
+// The model does not fit the machine (or the limit the user set): the message names what was
+// needed and what was available, and what to do instead. Exit code 5.
+class ResourceLimitError : public std::runtime_error {
+ public:
+  using std::runtime_error::runtime_error;
+};
+
 }  // namespace styk

@@ -38,6 +38,10 @@ struct SolveOptions {
   // stresses within 7e-9 of the direct solution (53 iterations); 1e-7 -> 1e-10 / 9e-10 (59);
   // 1e-9 -> 4e-12 (72). 1e-7 keeps three orders of margin on the ~1e-6 goal on finer meshes.
   double iterative_tolerance = 1e-7;
+  // The most memory (GB) the direct solver's factor may take, judged from the symbolic analysis
+  // before factorising; 0 = 80 % of the machine's physical memory. Above it the automatic choice
+  // switches to the iterative solver and a forced direct solve stops with the estimate.
+  double memory_limit_gb = 0.0;
 };
 
 struct AnalysisReport {
