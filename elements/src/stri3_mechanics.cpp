@@ -62,6 +62,13 @@ Op3 curvature(const Frame& f, double xi, double eta) {
   return plate_columns<3>(dkt::curvature(f.x, T, xi, eta)) * f.L;
 }
 
+// Gradients of the curvatures per global element dof (rows d/dx1 of kappa11, kappa22, 2 kappa12,
+// then d/dx2).
+Eigen::Matrix<double, 6, 18> curvature_gradient(const Frame& f) {
+  const Eigen::Matrix<double, 12, 9> T = dkt::midside_rotations(f.x);
+  return plate_columns<6>(dkt::curvature_gradient(f.x, T)) * f.L;
+}
+
 // theta . e3 minus the membrane's in-plane rotation at (xi, eta) per global element dof.
 Row18 drilling(const Frame& f, double xi, double eta) {
   const Eigen::Matrix<double, 1, 6> omega = dkt::in_plane_rotation(f.x);
@@ -160,11 +167,18 @@ void Stri3::section_resultants(const ElementGeometry& g, const ElementMaterial& 
   const double t = s.thickness, zm = -s.offset * t;
   const Eigen::Vector3d membrane_strain = membrane(f) * u;
   const IntegrationRule& r = surface_rule();
-  forces.resize(r.size(), 3);
+  forces.resize(r.size(), 5);
   moments.resize(r.size(), 3);
+  // Transverse shear forces from the moments' equilibrium (constant on the element).
+  const Eigen::Matrix<double, 6, 1> dkappa = curvature_gradient(f) * u;
+  const Eigen::Vector3d dM1 = t * t * t / 12.0 * D0 * dkappa.head<3>();  // d M / d x1
+  const Eigen::Vector3d dM2 = t * t * t / 12.0 * D0 * dkappa.tail<3>();  // d M / d x2
+  const double Q13 = dM1(0) + dM2(2), Q23 = dM1(2) + dM2(1);
   for (int p = 0; p < r.size(); ++p) {
     const Eigen::Vector3d kappa = curvature(f, r.points[p][0], r.points[p][1]) * u;
-    forces.row(p) = (t * D0 * (membrane_strain + zm * kappa)).transpose();
+    forces.row(p).head<3>() = (t * D0 * (membrane_strain + zm * kappa)).transpose();
+    forces(p, 3) = Q13;
+    forces(p, 4) = Q23;
     moments.row(p) = (t * t * t / 12.0 * D0 * kappa).transpose();
   }
 }
