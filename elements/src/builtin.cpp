@@ -12,6 +12,7 @@
 #include "styk/elements/c3d8r.hpp"
 #include "styk/elements/plane_quads.hpp"
 #include "styk/elements/shell.hpp"
+#include "styk/elements/stri3.hpp"
 #include "styk/elements/t3d2.hpp"
 #include "styk/elements/tetrahedra.hpp"
 #include "styk/elements/wedges.hpp"
@@ -48,6 +49,7 @@ void register_builtin_elements(ElementRegistry& registry) {
   for (const ShellType type : {ShellType::S4, ShellType::S4R, ShellType::S8, ShellType::S8R,
                                ShellType::S9, ShellType::S9R})
     registry.add(std::make_unique<Shell>(type), source);
+  registry.add(std::make_unique<Stri3>(), source);
 }
 
 }  // namespace styk

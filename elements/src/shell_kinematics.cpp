@@ -50,10 +50,10 @@ Eigen::RowVectorXd covariant(const Gradients& d, int i, int j) {
   return 0.5 * (d.J.col(i).transpose() * d.U[j] + d.J.col(j).transpose() * d.U[i]);
 }
 
-// Lamina axes at a point: e3 along g1 x g2, e1 the projection of global x (z when x is within
-// 0.1 degree of the normal), e2 = e3 x e1.
-Eigen::Matrix3d lamina_axes(const Eigen::Matrix3d& J) {
-  const Eigen::Vector3d e3 = J.col(0).cross(J.col(1)).normalized();
+}  // namespace
+
+Eigen::Matrix3d lamina_axes_of_normal(const Eigen::Vector3d& normal) {
+  const Eigen::Vector3d e3 = normal.normalized();
   Eigen::Vector3d reference = Eigen::Vector3d::UnitX();
   if (std::abs(reference.dot(e3)) > std::cos(0.1 * M_PI / 180.0))
     reference = Eigen::Vector3d::UnitZ();
@@ -62,8 +62,6 @@ Eigen::Matrix3d lamina_axes(const Eigen::Matrix3d& J) {
   R << e1, e3.cross(e1), e3;
   return R;
 }
-
-}  // namespace
 
 std::string label(const TElement& element, const ElementGeometry& g) {
   return "element " + std::to_string(g.id) + " (" + element.name() + ")";
@@ -79,7 +77,7 @@ void simpson(int n, std::vector<double>& points, std::vector<double>& weights) {
   }
 }
 
-ShellSetup shell_setup(const Shell& shell, const ElementGeometry& g, const Material& material) {
+ShellSetup section_setup(const TElement& shell, const ElementGeometry& g, const Material& material) {
   const int n = shell.node_count();
   if (g.X.rows() != n || g.X.cols() != 3)
     throw InputError(g.where, label(shell, g) + ": has " + std::to_string(g.X.rows()) +
@@ -106,7 +104,12 @@ ShellSetup shell_setup(const Shell& shell, const ElementGeometry& g, const Mater
   s.D(0, 1) = s.D(1, 0) = c * s.poisson;
   s.D(2, 2) = s.shear;
   s.D(3, 3) = s.D(4, 4) = 5.0 / 6.0 * s.shear;  // transverse shear factor
+  return s;
+}
 
+ShellSetup shell_setup(const Shell& shell, const ElementGeometry& g, const Material& material) {
+  const int n = shell.node_count();
+  ShellSetup s = section_setup(shell, g, material);
   Eigen::VectorXd N(n);
   Eigen::MatrixXd dN(n, 3);
   const double scale = std::max(g.X.cwiseAbs().maxCoeff(), 1e-300);
@@ -133,7 +136,7 @@ void lamina_point(const Shell& shell, const ElementGeometry& g, const ShellSetup
     throw InputError(g.where, label(shell, g) + ": det J <= 0 at point " + std::to_string(point) +
                                   " (inverted, degenerate, or thicker than its curvature radius)");
   out.N = d.N;
-  out.R = lamina_axes(d.J);
+  out.R = lamina_axes_of_normal(d.J.col(0).cross(d.J.col(1)));
   // C(a, i) = e_a . g^i: the lamina components of the contravariant base vectors.
   const Eigen::Matrix3d C = out.R.transpose() * d.J.inverse().transpose();
 
@@ -176,7 +179,7 @@ void drilling_row(const Shell& shell, const ElementGeometry& g, const ShellSetup
                   double eta, Eigen::RowVectorXd& row, double& area) {
   Gradients d;
   gradients(shell, g, s, {xi, eta, 0.0}, d);
-  const Eigen::Matrix3d R = lamina_axes(d.J);
+  const Eigen::Matrix3d R = lamina_axes_of_normal(d.J.col(0).cross(d.J.col(1)));
   const Eigen::Matrix3d Jinv = d.J.inverse();
   const Eigen::Vector3d a1 = Jinv * R.col(0), a2 = Jinv * R.col(1);
   // (grad u) e1 = sum_j U_j (J^-1 e1)_j; omega = (e2 . (grad u) e1 - e1 . (grad u) e2) / 2.

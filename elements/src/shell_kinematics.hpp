@@ -26,6 +26,15 @@ struct ShellSetup {
   double z(double zeta) const { return thickness * (0.5 * zeta - offset); }
 };
 
+// Checks the node count, the *SHELL SECTION and the material (constant isotropic elasticity) of
+// any shell-like element and fills the section and material constants (no normals).
+ShellSetup section_setup(const TElement& element, const ElementGeometry& g,
+                         const Material& material);
+
+// Lamina axes for a surface normal: e3 along it, e1 the projection of global x (z when x is
+// within 0.1 degree of the normal), e2 = e3 x e1 (Abaqus' local shell directions).
+Eigen::Matrix3d lamina_axes_of_normal(const Eigen::Vector3d& normal);
+
 // Checks the geometry, the *SHELL SECTION and the material (constant isotropic elasticity) and
 // computes the nodal normals. Throws InputError naming the element.
 ShellSetup shell_setup(const Shell& shell, const ElementGeometry& g, const Material& material);

@@ -160,7 +160,7 @@ void Shell::section_resultants(const ElementGeometry& g, const ElementMaterial& 
   const IntegrationRule surface = quad_gauss_rule(surface_order(kind));
   std::vector<double> zeta, wz;
   shell_detail::simpson(s.section_points, zeta, wz);
-  forces.setZero(surface.size(), 3);
+  forces.setZero(surface.size(), 5);  // N11, N22, N12, Q13, Q23
   moments.setZero(surface.size(), 3);
   LaminaPoint lp;
   for (int p = 0; p < surface.size(); ++p)
@@ -170,7 +170,7 @@ void Shell::section_resultants(const ElementGeometry& g, const ElementMaterial& 
       const Eigen::Matrix<double, 5, 1> sigma = s.D * (lp.B * u);
       const double dz = 0.5 * s.thickness * wz[z];
       const double from_mid = 0.5 * s.thickness * zeta[z];
-      forces.row(p) += dz * sigma.head<3>().transpose();
+      forces.row(p) += dz * sigma.transpose();
       moments.row(p) += (dz * from_mid) * sigma.head<3>().transpose();
     }
 }

@@ -1,6 +1,7 @@
 #include "shell_warnings.hpp"
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <cstdio>
 #include <map>
@@ -52,8 +53,10 @@ int spurious_shell_modes(const TElement& element, RuleKind kind) {
   unit.young = 1.0;
   unit.poisson = 0.3;
   // A 2x2 patch of unit squares on a grid of (2 order + 1)^2 points; node a of an element sits at
-  // grid point (order (cell_x + (xi_a + 1) / 2), order (cell_y + (eta_a + 1) / 2)).
-  const int order = element.node_count() == 4 ? 1 : 2, side = 2 * order + 1;
+  // grid point (order (cell_x + (xi_a + 1) / 2), order (cell_y + (eta_a + 1) / 2)). Triangles
+  // (natural corners (0, 0), (1, 0), (0, 1)) cut each square into two along its diagonal.
+  const bool triangle = element.node_count() == 3;
+  const int order = element.node_count() <= 4 ? 1 : 2, side = 2 * order + 1;
   const int dofs = 6 * side * side;
   Eigen::MatrixXd K = Eigen::MatrixXd::Zero(dofs, dofs);
   std::vector<char> used(side * side, 0);
@@ -61,11 +64,9 @@ int spurious_shell_modes(const TElement& element, RuleKind kind) {
   g.X.setZero(element.node_count(), 3);
   g.section = &section;
   g.cross_section = 0.1;
-  for (int cell = 0; cell < 4; ++cell) {
+  const auto add_element = [&](const std::vector<std::array<int, 2>>& points) {
     std::vector<int> grid;
-    for (const Vec3& xi : element.natural_nodes()) {
-      const int i = order * (cell % 2) + static_cast<int>(std::lround(order * (xi[0] + 1.0) / 2.0));
-      const int j = order * (cell / 2) + static_cast<int>(std::lround(order * (xi[1] + 1.0) / 2.0));
+    for (const auto& [i, j] : points) {
       g.X.row(static_cast<Eigen::Index>(grid.size())) << static_cast<double>(i) / order,
           static_cast<double>(j) / order, 0.0;
       grid.push_back(j * side + i);
@@ -76,6 +77,19 @@ int spurious_shell_modes(const TElement& element, RuleKind kind) {
     for (std::size_t a = 0; a < grid.size(); ++a)
       for (std::size_t b = 0; b < grid.size(); ++b)
         K.block<6, 6>(6 * grid[a], 6 * grid[b]) += Ke.block<6, 6>(6 * a, 6 * b);
+  };
+  for (int cell = 0; cell < 4; ++cell) {
+    const int x0 = cell % 2, y0 = cell / 2;
+    if (triangle) {
+      add_element({{x0, y0}, {x0 + 1, y0}, {x0 + 1, y0 + 1}});
+      add_element({{x0, y0}, {x0 + 1, y0 + 1}, {x0, y0 + 1}});
+      continue;
+    }
+    std::vector<std::array<int, 2>> points;
+    for (const Vec3& xi : element.natural_nodes())
+      points.push_back({order * x0 + static_cast<int>(std::lround(order * (xi[0] + 1.0) / 2.0)),
+                        order * y0 + static_cast<int>(std::lround(order * (xi[1] + 1.0) / 2.0))});
+    add_element(points);
   }
   std::vector<int> kept;  // the grid points the type has (no centre nodes for 8-node elements)
   for (int p = 0; p < side * side; ++p)

@@ -21,7 +21,8 @@
 namespace styk::test {
 
 struct ShellGrid {
-  std::string type = "S8R";  // S4, S4R, S8, S8R, S9, S9R
+  std::string type = "S8R";  // S4, S4R, S8, S8R, S9, S9R, STRI3 (each cell cut into two
+                             // triangles along its diagonal from its first corner)
   int nx = 2, ny = 2;        // elements along the map's s and r
   // (s, r) in [0, 1]^2 -> position; the element normal is d/ds x d/dr.
   std::function<std::array<double, 3>(double s, double r)> map;
@@ -34,7 +35,11 @@ struct ShellGrid {
   std::string material_extra;  // e.g. "*DENSITY\n360.\n"
 };
 
-inline int grid_order(const ShellGrid& g) { return g.type[1] == '4' ? 1 : 2; }
+inline bool grid_triangles(const ShellGrid& g) { return g.type == "STRI3"; }
+
+inline int grid_order(const ShellGrid& g) {
+  return g.type[1] == '4' || grid_triangles(g) ? 1 : 2;
+}
 
 // The node id of grid point (i, j): row-major over the (order nx + 1) x (order ny + 1) grid.
 inline int grid_node(const ShellGrid& g, int i, int j) {
@@ -60,6 +65,11 @@ inline std::string shell_grid_deck(const ShellGrid& g) {
     for (int a = 0; a < g.nx; ++a) {
       const int I = p * a, J = p * b;
       const auto n = [&](int di, int dj) { return grid_node(g, I + di, J + dj); };
+      if (grid_triangles(g)) {
+        deck << id++ << ", " << n(0, 0) << ", " << n(1, 0) << ", " << n(1, 1) << "\n";
+        deck << id++ << ", " << n(0, 0) << ", " << n(1, 1) << ", " << n(0, 1) << "\n";
+        continue;
+      }
       deck << id++ << ", " << n(0, 0) << ", " << n(p, 0) << ", " << n(p, p) << ", " << n(0, p);
       if (p == 2) deck << ", " << n(1, 0) << ", " << n(2, 1) << ", " << n(1, 2) << ", " << n(0, 1);
       if (g.type[1] == '9') deck << ", " << n(1, 1);

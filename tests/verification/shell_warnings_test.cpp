@@ -53,17 +53,18 @@ TEST(ShellWarnings, ThinS8PlateWarnsOfShearLockingWithItsSlenderness) {
   // Thick (size / t = 2.5, 0.7 % too stiff): no warning.
   EXPECT_EQ(count_containing(plate_warnings("S8", 0.1), "are thin"), 0);
   // The 9-node and 4-node elements do not lock: silent at any thickness.
-  for (const char* type : {"S9", "S4", "S8R", "S9R"})
+  for (const char* type : {"S9", "S4", "S8R", "S9R", "STRI3"})
     EXPECT_EQ(count_containing(plate_warnings(type, 0.001), "are thin"), 0) << type;
 }
 
 TEST(ShellWarnings, SpuriousModesOfTheReducedRulesAreCounted) {
   // Flat 2x2 patch, measured: S9R four modes beyond the rigid motions; none for S4, S8, S9 and
-  // S8R (the single S8R element's two spurious modes do not survive in a patch).
+  // S8R (the single S8R element's two spurious modes do not survive in a patch), none for the
+  // discrete-Kirchhoff STRI3 (the patch's squares cut into two triangles each).
   EXPECT_EQ(
       count_containing(plate_warnings("S9R", 0.01), "have 4 zero-energy modes in a flat 2x2 patch"),
       1);
-  for (const char* type : {"S4", "S8", "S8R", "S9"})
+  for (const char* type : {"S4", "S8", "S8R", "S9", "STRI3"})
     EXPECT_EQ(count_containing(plate_warnings(type, 0.01), "zero-energy modes"), 0) << type;
 }
 

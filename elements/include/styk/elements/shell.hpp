@@ -25,9 +25,11 @@
 //
 // Output points (rule()): per surface Gauss point the bottom (zeta = -1), middle and top fibre,
 // in that order; S and E there are global tensor components (sigma33 = 0 in the lamina axes).
-// Section forces per surface point (section_resultants): SF = (N11, N22, N12) and
-// SM = (M11, M22, M12) per unit length in the lamina axes, M = integral of sigma z dz with z along
-// e3 from the mid-surface.
+// Section forces per surface point (section_resultants): SF = (N11, N22, N12, Q13, Q23) (Abaqus'
+// SF1-SF5 for shells: membrane forces, then the transverse shear forces, integrals of sigma13 and
+// sigma23 over the thickness; the results keep SF1-SF3 only) and SM = (M11, M22, M12) per unit
+// length in the lamina axes,
+// M = integral of sigma z dz with z along e3 from the mid-surface.
 #pragma once
 
 #include <string>
