@@ -11,6 +11,7 @@
 #include "styk/render/camera.hpp"
 #include "styk/render/color.hpp"
 #include "styk/render/color_scale.hpp"
+#include "styk/render/image.hpp"
 #include "styk/render/render_job.hpp"
 
 namespace styk::render_test {
