@@ -39,19 +39,24 @@ constexpr double kLength = 10.0, kWidth = 2.0, kThickness = 0.5;
 constexpr double kMoment = 1.0;                                             // per unit width
 constexpr double kFibreStress = 6.0 * kMoment / (kThickness * kThickness);  // 24
 
-// The plate deck: nodes (i, j) on a 6 x 3 grid, id j * 6 + i + 1. `offset`: the section's OFFSET.
-std::string plate_deck(double offset) {
+// The plate deck: nodes (i, j) on a 6 x 3 grid, id j * 6 + i + 1. `offset`: the section's OFFSET;
+// `triangles`: each cell split into two STRI3 along its diagonal instead of one S4.
+std::string plate_deck(double offset, bool triangles = false) {
   std::ostringstream out;
   out.precision(17);
   out << "*NODE, NSET=NALL\n";
   for (int j = 0; j <= 2; ++j)
     for (int i = 0; i <= 5; ++i)
       out << j * 6 + i + 1 << ", " << kLength * i / 5 << ", " << kWidth * j / 2 << ", 0\n";
-  out << "*ELEMENT, TYPE=S4, ELSET=PLATE\n";
+  out << "*ELEMENT, TYPE=" << (triangles ? "STRI3" : "S4") << ", ELSET=PLATE\n";
   for (int j = 0; j < 2; ++j)
     for (int i = 0; i < 5; ++i) {
-      const int a = j * 6 + i + 1;
-      out << j * 5 + i + 1 << ", " << a << ", " << a + 1 << ", " << a + 7 << ", " << a + 6 << "\n";
+      const int a = j * 6 + i + 1, id = j * 5 + i + 1;
+      if (triangles)
+        out << 2 * id - 1 << ", " << a << ", " << a + 1 << ", " << a + 7 << "\n"
+            << 2 * id << ", " << a << ", " << a + 7 << ", " << a + 6 << "\n";
+      else
+        out << id << ", " << a << ", " << a + 1 << ", " << a + 7 << ", " << a + 6 << "\n";
     }
   out << "*MATERIAL, NAME=STEEL\n*ELASTIC\n210000., 0.3\n"
       << "*SHELL SECTION, ELSET=PLATE, MATERIAL=STEEL" << (offset != 0 ? ", OFFSET=" : "");
@@ -65,9 +70,10 @@ std::string plate_deck(double offset) {
 
 class ShellRender : public ::testing::Test {
  protected:
-  void load(double offset, bool solve) {
-    const std::string deck = (test::test_scratch_dir("shell_render") / "plate.inp").string();
-    std::ofstream(deck) << plate_deck(offset);
+  void load(double offset, bool solve, bool triangles = false) {
+    const std::string deck =
+        (test::test_scratch_dir("shell_render") / (triangles ? "tri.inp" : "plate.inp")).string();
+    std::ofstream(deck) << plate_deck(offset, triangles);
     registry_ = make_test_registry(libraries_);
     model_ = read_inp(deck, registry_);
     if (!solve) return;
@@ -206,6 +212,76 @@ TEST_F(ShellRender, AResultsFileKeepsTheShellSections) {
   EXPECT_NEAR(frame.geometry.upper[2] + frame.geometry.origin[2], 0.0, 1e-6);
   EXPECT_NEAR(j.colors().min, kFibreStress, 1e-6 * kFibreStress);
   EXPECT_NEAR(j.colors().max, kFibreStress, 1e-6 * kFibreStress);
+}
+
+// The plate of STRI3 triangles (two per cell) is drawn as a slab like the S4 plate, each
+// triangle's faces a grid over the triangle (4 x 4 cells of the collapsed square, 2 triangles
+// each, the last row degenerate) and walls on its free edges: 20 triangles x 2 faces x 32 plus
+// the 14 outline edges x 4 segments x 2. Undeformed bounds: the whole plate, z = +-t/2.
+TEST_F(ShellRender, TriangularShellsAreDrawnWithTheirThickness) {
+  load(0.0, false, true);
+  render::RenderOptions o;
+  o.width = 320, o.height = 240;
+  o.deform.kind = render::DeformSpec::Kind::None;
+  const render::RenderJob j = job(o);
+  ASSERT_EQ(j.skin().layers().size(), 1u);
+  EXPECT_EQ(j.skin().layers()[0].shells.size(), 20u);
+  const Frame frame = j.frame();
+  const Vec3& origin = frame.geometry.origin;
+  EXPECT_NEAR(frame.geometry.lower[2] + origin[2], -0.5 * kThickness, 1e-6);
+  EXPECT_NEAR(frame.geometry.upper[2] + origin[2], 0.5 * kThickness, 1e-6);
+  EXPECT_NEAR(frame.geometry.lower[0] + origin[0], 0.0, 1e-6);
+  EXPECT_NEAR(frame.geometry.upper[0] + origin[0], kLength, 1e-6);
+  EXPECT_NEAR(frame.geometry.lower[1] + origin[1], 0.0, 1e-6);
+  EXPECT_NEAR(frame.geometry.upper[1] + origin[1], kWidth, 1e-6);
+  EXPECT_EQ(frame.geometry.triangles.size() / 3, std::size_t(20 * 2 * 16 * 2 + 14 * 4 * 2));
+}
+
+// Analytic truth (pure bending, file comment) on the DKT triangle, which represents a constant
+// curvature exactly (docs/elements.md "STRI3"): the fibre stresses the renderer interpolates from
+// the triangle's three surface points (a linear fit) are +24 / 0 / -24 on the top / middle /
+// bottom fibre over the whole plate (1e-6 of 24), and the deflection drawn grows towards the tip.
+TEST_F(ShellRender, TriangularShellsShowTheFieldOnTheChosenFibre) {
+  load(0.0, true, true);
+  const struct {
+    render::ShellFibre fibre;
+    double expected;
+  } cases[] = {{render::ShellFibre::Top, kFibreStress},
+               {render::ShellFibre::Middle, 0.0},
+               {render::ShellFibre::Bottom, -kFibreStress}};
+  for (const auto& c : cases) {
+    render::RenderOptions o;
+    o.width = 320, o.height = 240;
+    o.field = "S.11";
+    o.shell_fibre = c.fibre;
+    const render::RenderJob j = job(o);
+    const double tolerance = 1e-6 * kFibreStress;
+    EXPECT_NEAR(j.colors().min, c.expected, tolerance) << render::shell_fibre_name(c.fibre);
+    EXPECT_NEAR(j.colors().max, c.expected, tolerance) << render::shell_fibre_name(c.fibre);
+  }
+  render::RenderOptions o;
+  o.width = 640, o.height = 480;
+  o.field = "U.z";
+  o.view.name = "-y";
+  o.deform.kind = render::DeformSpec::Kind::Auto;
+  o.samples = 1;
+  const render::RenderJob j = job(o);
+  const Frame frame = j.frame();
+  render::OsmesaRenderer renderer(o.width, o.height);
+  const Image image = renderer.render(frame);
+  const double s = j.deformation_scale();
+  ASSERT_GT(s, 0.0);
+  const auto deformed = [&](int node, double dx) {
+    const Vec3& x = model_.coords[node];
+    const Vec3& u = increment_.U[node];
+    return Vec3{x[0] + s * u[0] + dx, x[1], x[2] + s * u[2]};
+  };
+  const int root = band_at(image, pixel_of(frame, deformed(0, 0.5)), frame.colors);
+  const int tip = band_at(image, pixel_of(frame, deformed(5, -0.3)), frame.colors);
+  ASSERT_GE(root, 0);
+  ASSERT_GE(tip, 0);
+  EXPECT_LE(tip, 1);
+  EXPECT_GE(root, 10);
 }
 
 }  // namespace

@@ -6,6 +6,7 @@
 #include <stdexcept>
 
 #include "session/input_checks.hpp"
+#include "session/object_support.hpp"
 #include "styk/core/beam_section.hpp"
 #include "styk/mesher/block_mesh.hpp"
 #include "styk/mesher/geometry_maps.hpp"
@@ -15,16 +16,12 @@
 namespace styk::gui {
 namespace {
 
+using namespace objects;
+
 bool is_plane_type(const std::string& type) {
   return type == "CPS4" || type == "CPE4" || type == "CPS8" || type == "CPE8";
 }
 int plane_order(const std::string& type) { return type == "CPS8" || type == "CPE8" ? 2 : 1; }
-
-// A shell type of the registry (its form is Shell: S4 ... S9R).
-bool is_shell_type(const std::string& type, const ElementRegistry& registry) {
-  const TElement* f = registry.find(type);
-  return f != nullptr && f->form() == ElementForm::Shell;
-}
 
 // A 3D beam type of the registry with 2 or 3 nodes (B31, B31R, B32, B32R).
 bool is_space_beam_type(const std::string& type, const ElementRegistry& registry) {
@@ -50,33 +47,6 @@ BeamSection beam_section_of(const LineInput& in) {
   return section;
 }
 
-void check_divisions(int d, const std::string& what, int most) {
-  if (d < 1) refuse(what + " divisions must be at least 1, not " + std::to_string(d));
-  if (d > most) refuse(what + " divisions must be at most " + std::to_string(most));
-}
-
-void check_grading(double g, const std::string& what) {
-  check_finite(g, what + " grading");
-  if (!(g > 0)) refuse(what + " grading must be > 0 (last / first element length; 1 = uniform)");
-}
-
-void check_object_names(const Model& model, const std::string& name, const std::string& what) {
-  check_name(name, what);
-  const std::string upper = to_upper(name);
-  if (model.find_elset(upper) || model.find_nset(upper))
-    refuse("a set " + upper + " exists already; choose another name");
-  check_set_names_free(model, upper);
-}
-
-void check_section(const Model& model, const std::string& material, double value,
-                   const std::string& what) {
-  if (material.empty()) return;
-  if (model.material_index(to_upper(material)) < 0)
-    refuse("no material " + to_upper(material) + " in the model");
-  check_finite(value, what);
-  if (!(value > 0)) refuse(what + " must be > 0");
-}
-
 // Twice the signed area of the corner polygon in the x-y plane (positive: counter-clockwise).
 double twice_area(const mesher::PatchMesh& mesh, const std::vector<int>& quad) {
   double sum = 0.0;
@@ -86,33 +56,6 @@ double twice_area(const mesher::PatchMesh& mesh, const std::vector<int>& quad) {
     sum += p[0] * q[1] - q[0] * p[1];
   }
   return sum;
-}
-
-// The mesh as a new part of `model` (element set and node set `name`), with a section when a
-// material is given (`value`: thickness or area; `shell` / `beam`: a *SHELL SECTION with that
-// OFFSET, a *BEAM SECTION).
-Model append_object(const Model& model, mesher::Mesh& mesh, const std::string& name,
-                    const std::string& material, double value,
-                    std::optional<double> shell = std::nullopt,
-                    std::optional<BeamSection> beam = std::nullopt) {
-  std::vector<int> all(mesh.nodes.size());
-  std::iota(all.begin(), all.end(), 0);
-  mesh.add_to_node_set(name, all);
-  Model result = model;
-  append_part(result, mesher::to_model(mesh));
-  if (!material.empty()) {
-    Section section;
-    section.elset = name;
-    section.material = to_upper(material);
-    section.material_index = result.material_index(section.material);
-    if (!beam) section.thickness = value;
-    if (shell) section.shell = ShellSection{*shell, 5, false};
-    section.beam = beam;
-    const int index = static_cast<int>(result.sections.size());
-    result.sections.push_back(section);
-    for (int e : result.elsets.at(name).elements) result.elements[e].section = index;
-  }
-  return result;
 }
 
 }  // namespace

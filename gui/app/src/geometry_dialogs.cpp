@@ -7,6 +7,7 @@
 
 #include "dialog_fields.hpp"
 #include "session/geometry_objects.hpp"
+#include "session/shell_surfaces.hpp"
 
 namespace styk::gui {
 
@@ -105,6 +106,62 @@ FormDialog* make_plane_dialog(Document& doc, QWidget* parent) {
     in.thickness = f.real("thickness", "Thickness");
     in.offset = f.real("offset", "Shell offset");
     doc.apply(plane_command(doc.model(), in, doc.registry()));
+  });
+  return d;
+}
+
+FormDialog* make_shell_surface_dialog(Document& doc, QWidget* parent) {
+  auto* d = new FormDialog(
+      "Shell surface",
+      "A curved surface meshed with shells (S4 ... S9R). Cylindrical panel: radius R about the y "
+      "axis, length along y from y = 0, the angle of arc symmetric about +z (360: a closed "
+      "cylinder). Hemisphere: radius R about the origin, pole on +z, a hole of the given angle "
+      "about the pole, over the sweep of longitude from +x (90: a quarter). Divisions: round the "
+      "arc or longitude (u) and along the panel or from the equator to the hole (v). Creates the "
+      "element set and node set NAME and the side sets NAME_SIDE1..4 (SIDE1: y = 0 or the "
+      "equator, SIDE3: y = length or the hole's rim); with a material, a *SHELL SECTION.",
+      parent);
+  const ShellSurfaceInput defaults;
+  d->add_text("name", "Name", "ROOF");
+  d->add_choice("kind", "Surface",
+                QStringList{QString::fromStdString(
+                                shell_surface_kind_name(ShellSurfaceKind::CylindricalPanel)),
+                            QString::fromStdString(
+                                shell_surface_kind_name(ShellSurfaceKind::Hemisphere))});
+  d->add_text("radius", "Radius", QString::number(defaults.radius));
+  d->add_text("length", "Panel: length along y", QString::number(defaults.length));
+  d->add_text("angle", "Panel: angle of arc (degrees)", QString::number(defaults.angle));
+  d->add_text("hole", "Hemisphere: hole about the pole (degrees)",
+              QString::number(defaults.hole));
+  d->add_text("sweep", "Hemisphere: sweep of longitude (degrees)",
+              QString::number(defaults.sweep));
+  d->add_text("divisions", "Divisions u, v", "8 8");
+  d->add_text("grading", "Grading u, v", "1 1");
+  d->add_choice("type", "Element type", registry_types(doc.registry(), true));
+  d->add_choice("material", "Section material",
+                QStringList{"(none)"} + material_names(doc.model()));
+  d->add_text("thickness", "Thickness", QString::number(defaults.thickness));
+  d->add_text("offset", "Shell offset (-0.5 .. 0.5)", "0");
+  d->set_accept([&doc](const FormDialog& f) {
+    ShellSurfaceInput in;
+    in.name = f.text("name");
+    in.kind = shell_surface_kind_of(f.text("kind"));
+    in.radius = f.real("radius", "Radius");
+    in.length = f.real("length", "Panel length");
+    in.angle = f.real("angle", "Panel angle");
+    in.hole = f.real("hole", "Hemisphere hole");
+    in.sweep = f.real("sweep", "Hemisphere sweep");
+    const std::vector<int> n = whole_numbers(f, "divisions", "Divisions", 2);
+    const std::vector<double> g = numbers(f, "grading", "Grading", 2);
+    in.divisions_u = n[0];
+    in.divisions_v = n[1];
+    in.grading_u = g[0];
+    in.grading_v = g[1];
+    in.type = f.text("type");
+    in.material = f.text("material") == "(none)" ? std::string() : f.text("material");
+    in.thickness = f.real("thickness", "Thickness");
+    in.offset = f.real("offset", "Shell offset");
+    doc.apply(shell_surface_command(doc.model(), in, doc.registry()));
   });
   return d;
 }

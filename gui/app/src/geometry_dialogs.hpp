@@ -18,5 +18,6 @@ FormDialog* make_filter_dialog(const Model& model, const ElementDisplayFilter& c
 
 FormDialog* make_plane_dialog(Document& document, QWidget* parent);
 FormDialog* make_line_dialog(Document& document, QWidget* parent);
+FormDialog* make_shell_surface_dialog(Document& document, QWidget* parent);
 
 }  // namespace styk::gui

@@ -127,6 +127,7 @@ void MainWindow::build_model_menu() {
   dialog_action("&Revolve...", "action_revolve", &make_revolve_dialog);
   dialog_action("P&lane...", "action_plane", &make_plane_dialog);
   dialog_action("L&ine...", "action_line", &make_line_dialog);
+  dialog_action("Shell s&urface...", "action_shell_surface", &make_shell_surface_dialog);
   model->addSeparator();
   dialog_action("C&ontact pair...", "action_contact", &make_new_contact_dialog);
   dialog_action("&Initial temperature...", "action_initial_temperature",

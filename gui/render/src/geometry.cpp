@@ -10,7 +10,6 @@
 #include "face_shape.hpp"
 #include "line_geometry.hpp"
 #include "shell_geometry.hpp"
-#include "styk/core/diagnostics.hpp"
 #include "styk/core/vec3.hpp"
 
 namespace styk::render {
@@ -369,13 +368,6 @@ SkinModel::SkinModel(const Model& model, const ElementRegistry& registry,
     for (int e : skin.elements) {
       if (is_drawn_beam(model, *formulations_[e], e))
         skin.beams.push_back(e);
-      else if (is_drawn_shell(*formulations_[e]) && formulations_[e]->node_count() == 3)
-        // The slab drawing maps a quadrilateral's (xi, eta) square; a triangle would be drawn
-        // from shape functions evaluated outside it.
-        throw InputError(model.elements[e].where,
-                         "styk render does not draw triangular shells (" +
-                             model.elements[e].type + ") yet; export the results to VTU "
-                             "(styk export --vtu) to view them");
       else if (is_drawn_shell(*formulations_[e]))
         skin.shells.push_back(e);
       else if (is_line_element(*formulations_[e]))

@@ -16,9 +16,23 @@ using Vector3 = Eigen::Vector3d;
 
 Vector3 vec(const Vec3& v) { return Vector3(v[0], v[1], v[2]); }
 
-// Grid segments per direction of a shell's faces: a 4-node shell's field is at most bilinear
-// (its Gauss points 2x2), a quadratic shell's is quadratic and its surface curved.
-int grid_segments(const TElement& f) { return f.node_count() == 4 ? 4 : 6; }
+// Grid segments per direction of a shell's faces: a 3- or 4-node shell's field is at most
+// bilinear (its Gauss points 2x2, or the triangle's 3), a quadratic shell's is quadratic and its
+// surface curved.
+int grid_segments(const TElement& f) { return f.node_count() <= 4 ? 4 : 6; }
+
+// A triangular shell (STRI3): its natural coordinates are those of the triangle xi, eta >= 0,
+// xi + eta <= 1, and it has three corners and edges.
+bool is_triangle(const TElement& f) { return f.node_count() == 3 || f.node_count() == 6; }
+int corner_count(const TElement& f) { return is_triangle(f) ? 3 : 4; }
+
+// The faces are drawn as a grid over the parameter square (u, v) in [0, 1]^2: the square
+// itself for a quadrilateral, collapsed onto the triangle for a triangle (its v = 1 side onto
+// the third corner, so the last row of cells are triangles), so one grid serves both shapes.
+std::array<double, 2> natural_at(const TElement& f, double u, double v) {
+  if (is_triangle(f)) return {u * (1.0 - v), v};
+  return {-1.0 + 2.0 * u, -1.0 + 2.0 * v};
+}
 
 // Thickness and offset of shell e (0 thickness when the model holds no section for it: a results
 // file written before shell sections were stored draws the reference surface alone).
@@ -83,12 +97,12 @@ class ShellColouring {
   // The field value at (xi, eta), where the shape functions are N.
   double value(double xi, double eta, const Eigen::VectorXd& N) const {
     if (fibres_) {
-      const std::vector<double> wx = lagrange(xs_, xi), wy = lagrange(ys_, eta);
+      const std::vector<double> weights = point_weights(xi, eta);
       const int first = field_->point_offset[e_];
       const int fibre = static_cast<int>(field_->shell_fibre);
       Tensor6 t{};
-      for (std::size_t k = 0; k < ix_.size(); ++k) {
-        const double w = wx[ix_[k]] * wy[iy_[k]];
+      for (std::size_t k = 0; k < weights.size(); ++k) {
+        const double w = weights[k];
         const int point =
             field_->station_values ? static_cast<int>(k) : 3 * static_cast<int>(k) + fibre;
         const Tensor6& p = field_->point_tensors[first + point];
@@ -113,9 +127,24 @@ class ShellColouring {
   }
 
  private:
+  // The weights of the surface points' values at (xi, eta): Lagrange interpolation through a
+  // tensor-product rule's points, or the linear function through a triangle's three points
+  // (exact for the DKT triangle's moments, which are linear, and its constant membrane forces).
+  std::vector<double> point_weights(double xi, double eta) const {
+    if (linear_) {
+      const Eigen::Vector3d w = linear_inverse_ * Eigen::Vector3d(1.0, xi, eta);
+      return {w(0), w(1), w(2)};
+    }
+    const std::vector<double> wx = lagrange(xs_, xi), wy = lagrange(ys_, eta);
+    std::vector<double> w;
+    for (std::size_t k = 0; k < ix_.size(); ++k) w.push_back(wx[ix_[k]] * wy[iy_[k]]);
+    return w;
+  }
+
   // The surface points of the rule whose size matches the element's output points (3 fibres
   // per surface point, rule order; one value per surface point for section forces): their
-  // distinct abscissae per direction.
+  // distinct abscissae per direction, or, for three points that are not a tensor product (the
+  // triangle's rule), the inverse of the matrix that fits a linear function through them.
   bool find_points(const TElement& f) {
     const int given = field_->point_offset[e_ + 1] - field_->point_offset[e_];
     const int points = field_->station_values ? 3 * given : given;
@@ -129,7 +158,13 @@ class ShellColouring {
       }
       xs_ = distinct(xi, ix_);
       ys_ = distinct(eta, iy_);
-      return xs_.size() * ys_.size() == ix_.size();  // a tensor-product rule
+      if (xs_.size() * ys_.size() == ix_.size()) return true;  // a tensor-product rule
+      if (xi.size() != 3) return false;
+      Eigen::Matrix3d fit;
+      fit << 1.0, 1.0, 1.0, xi[0], xi[1], xi[2], eta[0], eta[1], eta[2];
+      linear_inverse_ = fit.inverse();
+      linear_ = std::isfinite(linear_inverse_.sum());
+      return linear_;
     }
     return false;
   }
@@ -142,6 +177,8 @@ class ShellColouring {
   bool covered_ = true;
   std::vector<double> xs_, ys_;  // distinct Gauss abscissae along xi and eta
   std::vector<int> ix_, iy_;     // of each surface point
+  bool linear_ = false;          // three points fitted by a linear function (a triangle)
+  Eigen::Matrix3d linear_inverse_ = Eigen::Matrix3d::Zero();
 };
 
 Vertex vertex(const Vector3& p, const Vector3& normal, const Rgb& c, float t) {
@@ -225,7 +262,7 @@ SurfacePoint surface_point(const PlacedShell& s, double xi, double eta) {
 // The natural coordinates of the point at s in [0, 1] along edge k (corner k to corner k + 1).
 std::array<double, 2> edge_point(const TElement& f, int k, double s) {
   const Vec3& a = f.natural_nodes()[k];
-  const Vec3& b = f.natural_nodes()[(k + 1) % 4];
+  const Vec3& b = f.natural_nodes()[(k + 1) % corner_count(f)];
   return {(1 - s) * a[0] + s * b[0], (1 - s) * a[1] + s * b[1]};
 }
 
@@ -261,7 +298,7 @@ void add_faces(const PlacedShell& s, const ShellColouring& c, ShellBuilder& out)
     std::vector<std::uint32_t> grid;
     for (int j = 0; j <= m; ++j)
       for (int i = 0; i <= m; ++i) {
-        const double xi = -1.0 + 2.0 * i / m, eta = -1.0 + 2.0 * j / m;
+        const auto [xi, eta] = natural_at(*s.f, double(i) / m, double(j) / m);
         const SurfacePoint p = surface_point(s, xi, eta);
         grid.push_back(out.add(p.x + z * p.director, zeta * p.normal, c.t(xi, eta, p.N)));
       }
@@ -279,8 +316,9 @@ void add_faces(const PlacedShell& s, const ShellColouring& c, ShellBuilder& out)
 void add_edges(const PlacedShell& s, const ShellColouring& c, const std::array<bool, 4>& free,
                ShellBuilder& out) {
   const int m = grid_segments(*s.f);
-  const Vector3 centre = surface_point(s, 0.0, 0.0).x;
-  for (int k = 0; k < 4; ++k) {
+  const auto [xi_c, eta_c] = natural_at(*s.f, 0.5, is_triangle(*s.f) ? 1.0 / 3.0 : 0.5);
+  const Vector3 centre = surface_point(s, xi_c, eta_c).x;
+  for (int k = 0; k < corner_count(*s.f); ++k) {
     std::vector<SurfacePoint> points;
     std::vector<std::array<double, 2>> at;
     for (int i = 0; i <= m; ++i) {
@@ -311,21 +349,23 @@ void add_edges(const PlacedShell& s, const ShellColouring& c, const std::array<b
   }
 }
 
-// Per shell of the layer, which of its four edges no other shell of the layer shares (by their
-// corner nodes).
-std::vector<std::array<bool, 4>> free_edges(const Model& model, const std::vector<int>& shells) {
+// Per shell of the layer, which of its three or four edges no other shell of the layer shares
+// (by their corner nodes).
+std::vector<std::array<bool, 4>> free_edges(const SkinModel& skin, const std::vector<int>& shells) {
+  const Model& model = skin.model();
+  const auto corners = [&](int e) { return corner_count(*skin.formulations()[e]); };
   std::map<std::pair<int, int>, int> count;
   const auto key = [&](int e, int k) {
     const int* conn = model.element_nodes(e);
-    const int a = conn[k], b = conn[(k + 1) % 4];
+    const int a = conn[k], b = conn[(k + 1) % corners(e)];
     return std::make_pair(std::min(a, b), std::max(a, b));
   };
   for (const int e : shells)
-    for (int k = 0; k < 4; ++k) ++count[key(e, k)];
+    for (int k = 0; k < corners(e); ++k) ++count[key(e, k)];
   std::vector<std::array<bool, 4>> out;
   for (const int e : shells) {
     std::array<bool, 4> free{};
-    for (int k = 0; k < 4; ++k) free[k] = count[key(e, k)] == 1;
+    for (int k = 0; k < corners(e); ++k) free[k] = count[key(e, k)] == 1;
     out.push_back(free);
   }
   return out;
@@ -340,7 +380,7 @@ bool is_drawn_shell(const TElement& formulation) {
 void add_shell_elements(const SkinModel& skin, const SkinModel::LayerSkin& layer,
                         const GeometryRequest& request, FrameGeometry& g) {
   const Model& model = skin.model();
-  const std::vector<std::array<bool, 4>> free = free_edges(model, layer.shells);
+  const std::vector<std::array<bool, 4>> free = free_edges(skin, layer.shells);
   for (std::size_t i = 0; i < layer.shells.size(); ++i) {
     const int e = layer.shells[i];
     const TElement& f = *skin.formulations()[e];
@@ -377,7 +417,7 @@ std::array<double, 2> shell_field_range(const SkinModel& skin, const std::vector
     Eigen::MatrixXd dN(f.node_count(), 3);
     for (int j = 0; j <= m; ++j)
       for (int i = 0; i <= m; ++i) {
-        const double xi = -1.0 + 2.0 * i / m, eta = -1.0 + 2.0 * j / m;
+        const auto [xi, eta] = natural_at(f, double(i) / m, double(j) / m);
         f.der({xi, eta, 0.0}, N, dN);
         const double v = colouring.value(xi, eta, N);
         lo = std::min(lo, v), hi = std::max(hi, v);
