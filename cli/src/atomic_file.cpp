@@ -1,30 +1,23 @@
 #include "atomic_file.hpp"
 
-#include <cstdio>
+#include <cerrno>
 #include <stdexcept>
 
 namespace styk::cli {
 
-AtomicTextFile::AtomicTextFile(std::string path)
-    : path_(std::move(path)), tmp_path_(path_ + ".tmp") {
-  out_.open(tmp_path_, std::ios::out | std::ios::trunc);
-  if (!out_) throw std::runtime_error("cannot write " + tmp_path_);
-}
-
-AtomicTextFile::~AtomicTextFile() {
-  if (!committed_) {
-    out_.close();
-    std::remove(tmp_path_.c_str());
-  }
+AtomicTextFile::AtomicTextFile(std::string path) : path_(std::move(path)), temp_(path_) {
+  out_.open(temp_.temp_path(), std::ios::out | std::ios::trunc);
+  if (!out_) throw std::runtime_error("cannot write " + temp_.temp_path());
 }
 
 void AtomicTextFile::commit() {
   out_.flush();
-  const bool ok = static_cast<bool>(out_);
   out_.close();
-  if (!ok || std::rename(tmp_path_.c_str(), path_.c_str()) != 0)
+  if (!out_) {
+    temp_.throw_if_out_of_space("cannot write " + path_, errno);
     throw std::runtime_error("cannot write " + path_);
-  committed_ = true;
+  }
+  temp_.commit();
 }
 
 }  // namespace styk::cli

@@ -11,10 +11,15 @@
 #include "verify_args.hpp"
 #ifdef STYK_WITH_RENDER
 #include "render_args.hpp"
+#include "styk/io/temp_file.hpp"
 #endif
 
 int main(int argc, char** argv) {
   using namespace styk::cli;
+  // An interrupted run (Ctrl-C, kill, the GUI's Cancel) leaves no temporary behind, and a
+  // file-size limit fails the write with a message instead of killing the process.
+  styk::io::remove_temporaries_on_signals();
+  styk::io::skip_hdf5_shutdown_at_exit();
   CLI::App app{"Styk: finite-element analysis of contact in machine joints"};
   app.require_subcommand(1);
   app.set_version_flag("--version", "styk 0.1.0");

@@ -251,6 +251,46 @@ class GuiFilterGeometry : public QObject {
     QVERIFY2(changed > 3000, qPrintable(QString::number(changed)));
   }
 
+  // The Shell surface dialog: a quarter hemisphere with a hole of S4 shells (6 x 4 elements) with
+  // a shell section, drawn (the view changes in thousands of pixels when its layer is hidden); a
+  // hole of 90 degrees is refused in the dialog. STYK_GUI_SCREENSHOTS=DIR writes the view
+  // (gui-shell-surface.png).
+  void shellSurfaceDialog() {
+    gui::FormDialog* dialog = open_dialog(*window_, "action_shell_surface");
+    QVERIFY(dialog);
+    set_text(dialog, "name", "DOME");
+    set_text(dialog, "kind", "Hemisphere");
+    set_text(dialog, "radius", "4");
+    set_text(dialog, "hole", "90");
+    set_text(dialog, "divisions", "6 4");
+    set_text(dialog, "type", "S4");
+    set_text(dialog, "material", "MAT");
+    set_text(dialog, "thickness", "0.2");
+    dialog->accept();
+    QVERIFY(dialog->isVisible());
+    QVERIFY2(dialog->error_text().contains("hole"), qPrintable(dialog->error_text()));
+    set_text(dialog, "hole", "18");
+    dialog->accept();
+    QVERIFY2(!dialog->isVisible(), qPrintable(dialog->error_text()));
+    const Model& m = window_->document().model();
+    QVERIFY(m.find_elset("DOME"));
+    QCOMPARE(m.find_elset("DOME")->elements.size(), std::size_t(24));
+    QVERIFY(m.find_nset("DOME_SIDE3"));
+    window_->set_filter({});
+    window_->view()->set_named_view("iso");
+    window_->view()->fit();
+    const QImage shown = window_->view()->grabFramebuffer();
+    const QString shots = qEnvironmentVariable("STYK_GUI_SCREENSHOTS");
+    if (!shots.isEmpty()) shown.save(shots + "/gui-shell-surface.png");
+    window_->document().layers().set_visible("DOME", false);
+    window_->set_filter({});
+    const QImage hidden = window_->view()->grabFramebuffer();
+    int changed = 0;
+    for (int y = 0; y < shown.height(); ++y)
+      for (int x = 0; x < shown.width(); ++x) changed += shown.pixel(x, y) != hidden.pixel(x, y);
+    QVERIFY2(changed > 3000, qPrintable(QString::number(changed)));
+  }
+
   void cleanupTestCase() { window_.reset(); }
 
  private:

@@ -1,4 +1,5 @@
 // Writer of the .styk.h5 results file.
+#include <cerrno>
 #include <cstdint>
 #include <stdexcept>
 #include <string>
@@ -14,8 +15,9 @@
 #include "results_scalar.hpp"
 #include "results_schema.hpp"
 #include "results_structural.hpp"
+#include "styk/core/diagnostics.hpp"
 #include "styk/io/results_file.hpp"
-#include "temp_file.hpp"
+#include "styk/io/temp_file.hpp"
 
 namespace styk {
 
@@ -191,16 +193,16 @@ namespace io {
 void write_results_file_as(const std::string& path, const Model& model, const Results& results,
                            ResultsLayout layout) {
   const h5::QuietErrors quiet;
+  const std::string what = "cannot write results file " + path;
+  for (const IncrementResult& inc : results.increments) check_sizes(model, inc);
+  TempFile temp(path);
   try {
-    for (const IncrementResult& inc : results.increments) check_sizes(model, inc);
-    TempFile temp(path);
     {
       h5::Handle file = create_file(temp.temp_path(), layout);
       try {
         write_contents(file.get(), model, results);
       } catch (const h5::NonFiniteError& e) {
-        throw NonFiniteResultsError("cannot write results file " + path + ": " +
-                                    describe_non_finite(file.get(), e) +
+        throw NonFiniteResultsError(what + ": " + describe_non_finite(file.get(), e) +
                                     "; Styk writes finite results only, so nothing was written");
       }
       if (layout == ResultsLayout::Checksummed) write_digest(file.get());
@@ -209,8 +211,12 @@ void write_results_file_as(const std::string& path, const Model& model, const Re
     temp.commit();
   } catch (const NonFiniteResultsError&) {
     throw;
+  } catch (const ResourceLimitError&) {
+    throw;
   } catch (const std::runtime_error& e) {
-    throw std::runtime_error("cannot write results file " + path + ": " + e.what());
+    const int error = errno;  // of the failed write, unless the library has called on since
+    temp.throw_if_out_of_space(what, error);
+    throw std::runtime_error(what + ": " + e.what());
   }
 }
 

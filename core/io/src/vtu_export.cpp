@@ -2,6 +2,7 @@
 // array is written inline as format="binary": base64 of [byte count as UInt64][raw little-endian
 // values], header and values encoded as one stream, which is what VTK expects for uncompressed
 // inline data.
+#include <cerrno>
 #include <algorithm>
 #include <cmath>
 #include <cstdint>
@@ -16,7 +17,7 @@
 
 #include "base64.hpp"
 #include "styk/io/vtu_export.hpp"
-#include "temp_file.hpp"
+#include "styk/io/temp_file.hpp"
 
 namespace styk {
 
@@ -311,7 +312,10 @@ VtuExportSummary write_vtu(const std::string& path, const Model& model,
         << "  </UnstructuredGrid>\n"
         << "</VTKFile>\n";
     out.close();
-    if (!out) throw std::runtime_error("cannot write " + temp.temp_path());
+    if (!out) {
+      temp.throw_if_out_of_space("cannot write " + path, errno);
+      throw std::runtime_error("cannot write " + temp.temp_path());
+    }
   }
   temp.commit();
   return summary;
