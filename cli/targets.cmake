@@ -3,6 +3,7 @@ add_executable(styk
   src/main.cpp
   src/exit_codes.cpp
   src/stderr_progress.cpp
+  src/json_progress.cpp
   src/command_solve.cpp
   src/command_info.cpp
   src/command_export.cpp
@@ -16,6 +17,9 @@ add_executable(styk
   src/command_study.cpp
 )
 target_include_directories(styk PRIVATE src)
+# nlohmann-json: the JSON lines of `styk solve --progress json` (json_progress.cpp only).
+find_package(nlohmann_json 3 REQUIRED)
+target_link_libraries(styk PRIVATE nlohmann_json::nlohmann_json)
 target_link_libraries(styk PRIVATE styk_solver styk_inp styk_io styk_elements styk_mesher styk_studies CLI11::CLI11 fmt::fmt
   styk_warnings)
 # `styk render` needs the OSMesa renderer (STYK_OSMESA, on by default).

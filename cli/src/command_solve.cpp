@@ -1,12 +1,14 @@
 #include <chrono>
 #include <filesystem>
 #include <iostream>
+#include <memory>
 
 #include <fmt/core.h>
 
 #include "atomic_file.hpp"
 #include "commands.hpp"
 #include "exit_codes.hpp"
+#include "json_progress.hpp"
 #include "output_paths.hpp"
 #include "registry_setup.hpp"
 #include "stderr_progress.hpp"
@@ -32,7 +34,13 @@ double seconds_since(std::chrono::steady_clock::time_point start) {
 }  // namespace
 
 int solve_command(const SolveArgs& args) {
-  StderrProgress progress(args.quiet);
+  const bool json = args.progress == ProgressFormat::JsonLines;
+  std::unique_ptr<ProgressSink> sink;
+  if (json)
+    sink = std::make_unique<JsonLinesProgress>();
+  else
+    sink = std::make_unique<StderrProgress>(args.quiet);
+  ProgressSink& progress = *sink;
   PluginLibraries libraries;  // outlives the registry: plug-in code lives in it
   const ElementRegistry registry = make_registry(libraries);
 
@@ -68,6 +76,10 @@ int solve_command(const SolveArgs& args) {
   }
   progress.end("write", seconds_since(t0));
 
+  if (json)
+    std::cerr << json_done_line(h5_path, dat_path, report.dofs, report.linear_solver,
+                                static_cast<int>(model.steps.size()))
+              << std::endl;
   std::cout << "results: " << h5_path << "\n" << "report:  " << dat_path << "\n";
   std::cout << fmt::format("solved {} dofs with {} in {} step(s)\n", report.dofs,
                            report.linear_solver, model.steps.size());

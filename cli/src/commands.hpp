@@ -6,6 +6,10 @@
 
 namespace styk::cli {
 
+// How `styk solve` reports its progress on stderr: lines for people, or JSON lines for programs
+// (json_progress.hpp).
+enum class ProgressFormat { Text, JsonLines };
+
 struct SolveArgs {
   std::string deck;
   std::string output_dir = ".";
@@ -13,6 +17,7 @@ struct SolveArgs {
   int threads = 0;
   double memory_limit_gb = 0.0;  // 0: 80 % of the physical memory
   bool quiet = false;
+  ProgressFormat progress = ProgressFormat::Text;
 };
 int solve_command(const SolveArgs& args);
 

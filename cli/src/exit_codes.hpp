@@ -14,7 +14,12 @@ enum ExitCode : int {
   kResourceLimit = 5,  // ResourceLimitError or std::bad_alloc: the model does not fit in memory
 };
 
+// How a failure is told on stderr: one line for people ("file:line: message", "not converged:
+// ...") or one JSON line of the progress protocol (json_progress.hpp).
+enum class ErrorOutput { Text, JsonLines };
+
 // Runs a command, turning the exception types of Styk into exit codes and one message on stderr.
-int run_reporting_errors(const std::function<int()>& command);
+int run_reporting_errors(const std::function<int()>& command,
+                         ErrorOutput output = ErrorOutput::Text);
 
 }  // namespace styk::cli

@@ -39,6 +39,12 @@ int main(int argc, char** argv) {
                         "above it auto switches to the iterative solver, cholmod stops")
       ->check(CLI::PositiveNumber);
   solve_cmd->add_flag("-q,--quiet", solve.quiet, "No progress lines on stderr");
+  std::string progress_format = "text";
+  solve_cmd
+      ->add_option("--progress", progress_format,
+                   "Progress on stderr: text (for people) or json (one JSON object per line, "
+                   "docs/cli.md \"Progress protocol\")")
+      ->check(CLI::IsMember({"text", "json"}));
 
   InfoArgs info;
   CLI::App* info_cmd = app.add_subcommand("info", "Read an .inp model and print counts, sets, materials, steps, DOFs");
@@ -182,6 +188,10 @@ int main(int argc, char** argv) {
     return kBadInput;
   }
 
+  if (progress_format == "json") solve.progress = ProgressFormat::JsonLines;
+  const ErrorOutput errors = *solve_cmd && solve.progress == ProgressFormat::JsonLines
+                                ? ErrorOutput::JsonLines
+                                : ErrorOutput::Text;
   return run_reporting_errors([&]() -> int {
     if (*solve_cmd) return solve_command(solve);
     if (*info_cmd) return info_command(info);
@@ -200,5 +210,5 @@ int main(int argc, char** argv) {
       return study_command(study);
     }
     return elements_command();
-  });
+  }, errors);
 }

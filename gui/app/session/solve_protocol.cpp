@@ -1,15 +1,50 @@
 #include "session/solve_protocol.hpp"
 
-#include <algorithm>
 #include <array>
-#include <cstdlib>
-#include <regex>
-#include <sstream>
+
+#include <nlohmann/json.hpp>
+
+#include "styk/core/progress_protocol.hpp"
 
 namespace styk::gui {
+namespace {
+
+std::string string_of(const nlohmann::json& object, const char* key) {
+  const auto it = object.find(key);
+  return it != object.end() && it->is_string() ? it->get<std::string>() : std::string();
+}
+
+double number_of(const nlohmann::json& object, const char* key) {
+  const auto it = object.find(key);
+  return it != object.end() && it->is_number() ? it->get<double>() : 0.0;
+}
+
+// The event of a protocol line as a SolveLine; Other for an unknown event.
+SolveLine from_event(const nlohmann::json& object, SolveLine out) {
+  const std::string event = string_of(object, "event");
+  if (event == "begin" || event == "end") {
+    out.kind = event == "begin" ? SolveLine::Kind::PhaseBegin : SolveLine::Kind::PhaseEnd;
+    out.phase = string_of(object, "phase");
+    out.seconds = number_of(object, "seconds");
+  } else if (event == "info" || event == "warning") {
+    out.kind = event == "info" ? SolveLine::Kind::Info : SolveLine::Kind::Warning;
+    out.text = string_of(object, "message");
+  } else if (event == "error") {
+    out.kind = SolveLine::Kind::Error;
+    out.text = string_of(object, "message");
+    out.where = SourceLoc{string_of(object, "file"), static_cast<int>(number_of(object, "line"))};
+    out.exit_code = static_cast<int>(number_of(object, "exit_code"));
+  } else if (event == "done") {
+    out.kind = SolveLine::Kind::Done;
+    out.results = string_of(object, "results");
+  }
+  return out;
+}
+
+}  // namespace
 
 std::vector<std::string> solve_arguments(const std::string& deck, const std::string& output_dir) {
-  return {"solve", deck, "-o", output_dir};
+  return {"solve", deck, "-o", output_dir, "--progress", "json"};
 }
 
 SolveLine parse_solve_line(const std::string& raw) {
@@ -17,38 +52,14 @@ SolveLine parse_solve_line(const std::string& raw) {
   std::string line = raw;
   while (!line.empty() && (line.back() == '\n' || line.back() == '\r')) line.pop_back();
   out.text = line;
-  static const std::regex begin(R"(^styk: (\w+) \.\.\.$)");
-  static const std::regex end(R"(^styk: (\w+) done in ([0-9.eE+-]+) s$)");
-  static const std::regex located(R"(^(.+\.inp):(\d+): (.*)$)");
-  std::smatch m;
-  if (std::regex_match(line, m, begin)) {
-    out.kind = SolveLine::Kind::PhaseBegin;
-    out.phase = m[1];
-  } else if (std::regex_match(line, m, end)) {
-    out.kind = SolveLine::Kind::PhaseEnd;
-    out.phase = m[1];
-    out.seconds = std::strtod(m[2].str().c_str(), nullptr);
-  } else if (line.rfind("styk:", 0) == 0) {
-    out.kind = SolveLine::Kind::Info;
-    const std::size_t first = line.find_first_not_of(' ', 5);
-    out.text = first == std::string::npos ? std::string() : line.substr(first);
-    static const std::string warning = "warning: ";
-    if (out.text.rfind(warning, 0) == 0) {
-      out.kind = SolveLine::Kind::Warning;
-      out.text = out.text.substr(warning.size());
-    }
-  } else if (std::regex_match(line, m, located)) {
-    out.kind = SolveLine::Kind::Error;
-    out.where = SourceLoc{m[1], std::atoi(m[2].str().c_str())};
-    out.text = m[3];
-  } else if (line.rfind("not converged:", 0) == 0 || line.rfind("internal error:", 0) == 0) {
-    out.kind = SolveLine::Kind::Error;
-  } else if (const std::size_t at = line.find(".inp: "); at != std::string::npos) {
-    out.kind = SolveLine::Kind::Error;  // a message about the deck as a whole ("no *STEP")
-    out.where.file = line.substr(0, at + 4);
-    out.text = line.substr(at + 6);
-  }
-  return out;
+  if (line.empty() || line.front() != '{') return out;  // not an event: text from elsewhere
+  const nlohmann::json object = nlohmann::json::parse(line, nullptr, /*allow_exceptions=*/false);
+  if (!object.is_object()) return out;
+  const auto version = object.find(progress_protocol::kVersionKey);
+  if (version == object.end() || !version->is_number_integer() ||
+      version->get<int>() != progress_protocol::kVersion)
+    return out;  // another version of the protocol: shown as text, not misread
+  return from_event(object, out);
 }
 
 int phase_progress(const std::string& phase) {
@@ -64,14 +75,6 @@ int phase_progress(const std::string& phase) {
   for (const auto& [name, percent] : kPhases)
     if (phase == name) return percent;
   return -1;
-}
-
-std::string results_path_from_summary(const std::string& stdout_text) {
-  std::istringstream in(stdout_text);
-  std::string line;
-  while (std::getline(in, line))
-    if (line.rfind("results: ", 0) == 0) return line.substr(9);
-  return {};
 }
 
 }  // namespace styk::gui

@@ -9,6 +9,7 @@
 #include <fstream>
 
 #include "session/solve_protocol.hpp"
+#include "styk/core/progress_protocol.hpp"
 #include "styk/inp/writer.hpp"
 
 namespace styk::gui {
@@ -63,6 +64,7 @@ bool SolveRunner::start(const Model& model, const QString& job, QString* error) 
   cancelled_ = false;
   first_error_.clear();
   error_line_ = 0;
+  results_path_.clear();
   warnings_ = 0;
   pending_.clear();
   process_ = std::make_unique<QProcess>();
@@ -109,11 +111,15 @@ void SolveRunner::read_stderr() {
           first_error_ = QString::fromStdString(parsed.text);
           error_line_ = parsed.where.line;
         }
-        emit log(line);
+        emit log(QString::fromStdString(
+            parsed.where.file.empty() ? parsed.text : parsed.where.str() + ": " + parsed.text));
         break;
       case SolveLine::Kind::Warning:
         ++warnings_;
         emit log("warning: " + QString::fromStdString(parsed.text));
+        break;
+      case SolveLine::Kind::Done:
+        results_path_ = QString::fromStdString(parsed.results);
         break;
       default:
         emit log(QString::fromStdString(parsed.text));
@@ -132,8 +138,14 @@ void SolveRunner::on_finished(int exit_code, QProcess::ExitStatus status) {
     return;
   }
   if (status == QProcess::NormalExit && exit_code == 0) {
-    const std::string summary = process_->readAllStandardOutput().toStdString();
-    emit finished(true, QString::fromStdString(results_path_from_summary(summary)), {}, 0, {});
+    if (results_path_.isEmpty())  // a solver that does not speak this protocol version
+      emit finished(false, {},
+                    program_ + " ended without naming its results file in the progress "
+                               "protocol (version " +
+                        QString::number(progress_protocol::kVersion) + ")",
+                    0, {});
+    else
+      emit finished(true, results_path_, {}, 0, {});
     return;
   }
   QString deck_text;

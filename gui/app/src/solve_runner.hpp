@@ -52,6 +52,7 @@ class SolveRunner : public QObject {
   QString pending_;
   QString first_error_;
   int error_line_ = 0;
+  QString results_path_;  // from the protocol's done event
   int warnings_ = 0;
   bool cancelled_ = false;
 };
