@@ -19,6 +19,7 @@ add_library(styk_gui_widgets STATIC
   src/child_process_solve.cpp
   src/main_window.cpp
   src/main_window_menus.cpp
+  src/main_window_autosave.cpp
 )
 set_target_properties(styk_gui_widgets PROPERTIES AUTOMOC ON)
 target_include_directories(styk_gui_widgets PUBLIC ${CMAKE_CURRENT_SOURCE_DIR}/src)

@@ -273,8 +273,9 @@ const std::vector<DeckReader::KeywordSpec>& DeckReader::keywords() {
   return table;
 }
 
-DeckReader::DeckReader(const std::string& path, const ElementRegistry& registry)
-    : source_(path), registry_(registry) {
+DeckReader::DeckReader(const std::string& path, const ElementRegistry& registry,
+                       DeckCompleteness completeness)
+    : source_(path), registry_(registry), completeness_(completeness) {
   model_.source = path;
 }
 
@@ -472,10 +473,12 @@ void DeckReader::finish() {
   if (coupling_open_)
     throw InputError(model_.couplings.back().where,
                      "*COUPLING needs *KINEMATIC or *DISTRIBUTING right after it");
-  if (model_.node_count() == 0) throw InputError(deck, "the deck defines no nodes (*NODE)");
-  if (model_.element_count() == 0)
+  const bool complete = completeness_ == DeckCompleteness::Complete;
+  if (complete && model_.node_count() == 0)
+    throw InputError(deck, "the deck defines no nodes (*NODE)");
+  if (complete && model_.element_count() == 0)
     throw InputError(deck, "the deck defines no elements (*ELEMENT)");
-  if (model_.steps.empty())
+  if (complete && model_.steps.empty())
     throw InputError(deck, "the deck has no analysis step (*STEP ... *END STEP)");
   check_field_kinds();  // includes the materials' *ELASTIC / *CONDUCTIVITY checks
   assign_sections();

@@ -14,6 +14,7 @@
 #include "card_source.hpp"
 #include "styk/core/element_registry.hpp"
 #include "styk/core/model.hpp"
+#include "styk/inp/reader.hpp"
 
 namespace styk::inp {
 
@@ -29,7 +30,8 @@ void check_section_kind(const Section& section, const Element& element,
 
 class DeckReader {
  public:
-  DeckReader(const std::string& path, const ElementRegistry& registry);
+  DeckReader(const std::string& path, const ElementRegistry& registry,
+             DeckCompleteness completeness = DeckCompleteness::Complete);
   Model read();
 
   // Where a keyword may appear.
@@ -173,6 +175,7 @@ class DeckReader {
 
   CardSource source_;
   const ElementRegistry& registry_;
+  DeckCompleteness completeness_;
   Model model_;
   int material_ = -1;  // the *MATERIAL block being read, -1 outside one
   std::string interaction_;  // the *SURFACE INTERACTION block being read, empty outside one

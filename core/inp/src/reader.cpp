@@ -4,8 +4,9 @@
 
 namespace styk {
 
-Model read_inp(const std::string& path, const ElementRegistry& registry) {
-  return inp::DeckReader(path, registry).read();
+Model read_inp(const std::string& path, const ElementRegistry& registry,
+               DeckCompleteness completeness) {
+  return inp::DeckReader(path, registry, completeness).read();
 }
 
 }  // namespace styk

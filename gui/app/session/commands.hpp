@@ -39,6 +39,8 @@ class UndoStack {
   bool redo_keeps_results() const { return can_redo() && commands_[index_]->keeps_results(); }
   void clear();
   void set_clean() { clean_ = index_; }
+  // No state of the stack is the saved one (a model recovered from an autosave).
+  void set_unsaved() { clean_ = static_cast<std::size_t>(-1); }
   bool is_clean() const { return clean_ == index_; }
   std::size_t size() const { return commands_.size(); }
 

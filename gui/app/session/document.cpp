@@ -56,10 +56,34 @@ void Document::open_results(const std::string& path) {
 }
 
 void Document::save_inp(const std::string& path) {
+  write_deck_copy(path);
+  path_ = path;
+  history_.set_clean();
+}
+
+void Document::recover_inp(const std::string& deck, const std::string& original_path) {
+  Model model = read_inp(deck, registry_, DeckCompleteness::Draft);
+  const ReadViewState view = read_view_state(deck);
+  model_ = std::move(model);
+  model_.source = original_path;
+  results_.reset();
+  results_path_.clear();
+  path_ = original_path;
+  history_.clear();
+  history_.set_unsaved();
+  layers_ = LayerTable{};
+  open_warnings_ = view.warnings;
+  results_notice_.clear();
+  filter_ = apply_view_state(view.state, deck, model_, layers_, open_warnings_);
+  changed(false);
+}
+
+void Document::write_deck_copy(const std::string& path, const std::string& comment) const {
   const std::string temporary = path + ".tmp";
   {
     std::ofstream out(temporary);
     if (!out) throw std::runtime_error("cannot write " + temporary);
+    if (!comment.empty()) out << "** " << comment << "\n";
     write_inp(model_, out);
     write_view_state(view_state_of(layers_, filter_), out);
     out.flush();
@@ -69,8 +93,6 @@ void Document::save_inp(const std::string& path) {
     std::remove(temporary.c_str());
     throw std::runtime_error("cannot replace " + path);
   }
-  path_ = path;
-  history_.set_clean();
 }
 
 void Document::attach_results(Results results, std::string results_path) {

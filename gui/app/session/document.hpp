@@ -36,6 +36,14 @@ class Document {
   // Writes the model as a deck (atomically: a temporary file renamed over `path`), followed by the
   // layers and the filter as comment lines (view_state.hpp).
   void save_inp(const std::string& path);
+  // Writes the same deck to `path` (atomically) without making it the document's file or
+  // marking the model saved: the autosave (session/autosave.hpp). A non-empty `comment` goes
+  // first, as a comment line ("** " + comment).
+  void write_deck_copy(const std::string& path, const std::string& comment = {}) const;
+  // Opens a deck written by write_deck_copy() as a draft (it may lack a step: the model was
+  // being built) and keeps it unsaved, its file `original_path` (empty: a new model). Throws
+  // InputError as open_inp() does, the document unchanged.
+  void recover_inp(const std::string& deck, const std::string& original_path);
   // Attaches the results of an analysis of the current model (from a solve); throws
   // std::runtime_error when their node count does not match the model.
   void attach_results(Results results, std::string results_path);

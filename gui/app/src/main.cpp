@@ -50,5 +50,6 @@ int main(int argc, char** argv) {
   styk::gui::MainWindow window(registry);
   window.show();
   if (argc > 1) window.open_file(QString::fromLocal8Bit(argv[1]));
+  window.offer_recovery();  // a session that stopped without saving left its model
   return app.exec();
 }

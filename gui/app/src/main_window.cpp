@@ -128,6 +128,7 @@ MainWindow::MainWindow(const ElementRegistry& registry, QWidget* parent)
   build_menus();
   resize(1280, 820);
   refresh_model();
+  start_autosave();
 }
 
 MainWindow::~MainWindow() = default;
@@ -172,6 +173,7 @@ bool MainWindow::save_file(const QString& path) {
     return false;
   }
   log("saved " + path);
+  if (autosave_) autosave_->discard();
   add_recent(path);
   update_title();
   return true;
@@ -503,6 +505,7 @@ void MainWindow::closeEvent(QCloseEvent* event) {
     return;
   }
   solver_->cancel();
+  if (autosave_) autosave_->discard();  // saved, or the changes discarded: nothing to recover
   event->accept();
 }
 

@@ -6,6 +6,7 @@
 #include <QMainWindow>
 #include <memory>
 
+#include "session/autosave.hpp"
 #include "session/document.hpp"
 #include "session/element_filter.hpp"
 #include "session/scene.hpp"
@@ -17,6 +18,7 @@ class QProgressBar;
 class QTextBrowser;
 class QAction;
 class QMenu;
+class QTimer;
 
 namespace styk::gui {
 
@@ -65,6 +67,18 @@ class MainWindow : public QMainWindow {
   // The value-vs-increment chart of the first selected node and the field shown.
   void show_node_history();
 
+  // Autosave and recovery (main_window_autosave.cpp, docs/gui.md "Autosave and recovery"): the
+  // model with unsaved changes is written every $STYK_GUI_AUTOSAVE_SECONDS (default 30) to the
+  // autosave directory; autosave_now() writes it at once (returns whether it wrote). The
+  // sessions interrupted before they saved, newest first; recover_session() opens one (unsaved,
+  // its original file kept as the document's path) and removes its files; offer_recovery()
+  // asks the user about the newest one (a message box; called once the window shows).
+  bool autosave_now();
+  std::vector<InterruptedSession> interrupted_sessions() const;
+  bool recover_session(const InterruptedSession& session);
+  void offer_recovery();
+  const Autosave* autosave() const { return autosave_.get(); }
+
   Document& document() { return document_; }
   GlView* view() const { return view_; }
   ResultsPanel* results_panel() const { return results_; }
@@ -96,6 +110,7 @@ class MainWindow : public QMainWindow {
   void update_recent_menu();
   void update_title();
   void show_selection();  // status bar and properties panel
+  void start_autosave();
   void on_solve_finished(bool ok, const QString& results, const QString& error, int line,
                          const QString& text);
 
@@ -120,6 +135,8 @@ class MainWindow : public QMainWindow {
   QAction* element_numbers_ = nullptr;
   QAction* numbers_of_selection_ = nullptr;
   QString last_message_;
+  std::unique_ptr<Autosave> autosave_;  // null when the autosave directory is unusable
+  QTimer* autosave_timer_ = nullptr;
 };
 
 }  // namespace styk::gui

@@ -15,6 +15,12 @@ namespace styk {
 //
 // Throws InputError pointing at the offending file (as given, or the included file's path) and
 // 1-based line; line 0 means the deck as a whole (e.g. "no *NODE in the deck").
-Model read_inp(const std::string& path, const ElementRegistry& registry);
+//
+// `completeness`: Complete (the default) demands what an analysis needs; Draft accepts a model
+// still being built in the desktop program (an autosave, a deck saved half-way) that lacks nodes,
+// elements or a step. Everything a draft holds is checked as usual.
+enum class DeckCompleteness { Complete, Draft };
+Model read_inp(const std::string& path, const ElementRegistry& registry,
+               DeckCompleteness completeness = DeckCompleteness::Complete);
 
 }  // namespace styk
