@@ -1,7 +1,8 @@
 #!/usr/bin/env bash
 # Installs the Debian 12 packages Styk needs. Idempotent: apt-get skips what is present, and the
 # package index is refreshed only when a package is missing.
-# Usage: scripts/install-deps.sh [--test]   (--test adds the test-only peers: calculix-ccx and its test suite, time)
+# Usage: scripts/install-deps.sh [--test] [--fuzz]   (--test adds the test-only peers: calculix-ccx
+# and its test suite, time; --fuzz adds clang and its libFuzzer / sanitizer runtimes: scripts/fuzz.sh)
 set -euo pipefail
 
 packages=(
@@ -13,9 +14,13 @@ packages=(
   libosmesa6-dev libgl-dev libglx-dev libpng-dev libstb-dev zlib1g-dev qt6-base-dev libqt6opengl6-dev qt6-charts-dev
   libfreetype-dev fonts-dejavu-core
 )
-if [[ "${1:-}" == "--test" ]]; then
-  packages+=(calculix-ccx calculix-ccx-test time python3 xvfb xauth)
-fi
+for option in "$@"; do
+  case "$option" in
+    --test) packages+=(calculix-ccx calculix-ccx-test time python3 xvfb xauth) ;;
+    --fuzz) packages+=(clang libclang-rt-14-dev) ;;
+    *) echo "install-deps: unknown option $option (use --test, --fuzz)" >&2; exit 1 ;;
+  esac
+done
 
 missing=()
 for p in "${packages[@]}"; do
