@@ -194,7 +194,11 @@ void write_results_file_as(const std::string& path, const Model& model, const Re
                            ResultsLayout layout) {
   const h5::QuietErrors quiet;
   const std::string what = "cannot write results file " + path;
-  for (const IncrementResult& inc : results.increments) check_sizes(model, inc);
+  try {
+    for (const IncrementResult& inc : results.increments) check_sizes(model, inc);
+  } catch (const std::runtime_error& e) {
+    throw std::runtime_error(what + ": " + e.what());
+  }
   TempFile temp(path);
   try {
     {
