@@ -10,7 +10,9 @@
 //   SPEC §3.2.2 cylinders in contact, levels 0-2: C3D8R's second problem.
 // And the documented exceptions, measured (SPEC's "method fails" cases): C3D8 locks at
 // nu = 0.4999 (SPEC §3.1.7) where C3D8R keeps its order (levels 2-4); C3D20's contact faces fail
-// the physical contact condition (SPEC §2.2): its corner nodes carry no pressure.
+// the physical contact condition (SPEC §2.2): its corner nodes carry no pressure. Beams and plates
+// (no 3D field): the orders of their named points' errors, 2p, on the beam cantilever and the
+// simply supported plate (tests at the end of this file).
 #include <gtest/gtest.h>
 
 #include <string>

@@ -118,11 +118,14 @@ void measures_and_families(std::ostringstream& md, const ReportContext& c) {
     for (const std::string& n : c.notes) md << "- " << n << "\n";
   }
   md << "\nAdding a family: a row in `studies/src/study/families.cpp` (its complete polynomial "
-        "degree), the mesher's conversion to it in the builders the problems use "
-        "(`mesher/src/builder_support.cpp`, docs/mesher.md), and a rerun; `styk study accuracy "
-        "--list` names every registered solid type the table lacks. The quick subset "
-        "(tests/verification/atlas_rates_test.cpp) asserts each family's orders on the Lamé "
-        "cylinder and the heated wall (C3D8R: the contact cylinders) within +-0.3.\n\n";
+        "degree and kind), the mesher's conversion to it in the builders the problems use "
+        "(`mesher/src/builder_support.cpp`, docs/mesher.md; beams and shells: the decks of "
+        "`studies/src/study/structural_decks.cpp`), and a rerun; `styk study accuracy --list` "
+        "names every registered type the table lacks. The quick subset "
+        "(tests/verification/atlas_rates_test.cpp) asserts each solid family's orders on the "
+        "Lamé cylinder and the heated wall (C3D8R: the contact cylinders) within +-0.3, and the "
+        "beams' and plates' orders at their named points (B31/B21 and B32/B22 with "
+        "INTEGRATION=FULL, S4, STRI3, S9R; the reduced beams' exact nodal values).\n\n";
 }
 
 void summary(std::ostringstream& md, const std::vector<RunRecord>& records) {
@@ -192,7 +195,7 @@ void problem_section(std::ostringstream& md, const ReferenceProblem& p,
   const std::vector<const RunRecord*> runs = runs_of(records, p.name);
   if (runs.empty()) return;
   md << "## " << p.title << " (`" << p.name << "`)\n\n" << p.source << ". " << p.details << "\n\n";
-  md << "![" << p.name << ": " << measure_label(p.headline) << " error against DOF and wall time]("
+  md << "![" << p.name << ": " << measure_label(p.headline) << " against DOF and wall time]("
      << layout.image_link << "/" << chart_file("accuracy", p.name) << ")\n\n";
   if (p.point_orders) theory_line(md, p, records, order);
   if (measured(runs, Measure::ContactPressure))

@@ -25,6 +25,10 @@ constexpr const char* kBeamMeshing = "cantilever deck, RECT section, n elements 
 constexpr const char* kPlateMeshing = "quarter-plate deck, n x n elements";
 constexpr const char* kTriangleMeshing = "quarter-plate deck, n x n cells cut into 2 triangles";
 
+ElementFamily solid(const char* name, int order, const char* meshing) {
+  return {name, order, meshing, ElementKind::Solid, "", ""};
+}
+
 ElementFamily beam(const char* name, const char* type, int order, const char* integration) {
   return {name, order, kBeamMeshing, ElementKind::Beam, type, integration};
 }
@@ -37,17 +41,17 @@ ElementFamily shell(const char* name, int order, const char* meshing = kPlateMes
 
 const std::vector<ElementFamily>& family_catalogue() {
   static const std::vector<ElementFamily> families = {
-      {"C3D8", 1, "whole mesh"},
-      {"C3D8R", 1, "whole mesh"},
-      {"C3D8I", 1, "whole mesh"},
-      {"C3D14", 1, "whole mesh (C3D8 with face-centre nodes)"},
-      {"C3D20", 2, "whole mesh"},
-      {"C3D20R", 2, "whole mesh"},
-      {"C3D27", 2, "whole mesh"},
-      {"C3D21", 2,
-       "the builder's contact layer, C3D20 elsewhere (one element thick: every element)"},
-      {"C3D28", 2,
-       "the builder's contact layer, C3D20 elsewhere (one element thick: every element)"},
+      solid("C3D8", 1, "whole mesh"),
+      solid("C3D8R", 1, "whole mesh"),
+      solid("C3D8I", 1, "whole mesh"),
+      solid("C3D14", 1, "whole mesh (C3D8 with face-centre nodes)"),
+      solid("C3D20", 2, "whole mesh"),
+      solid("C3D20R", 2, "whole mesh"),
+      solid("C3D27", 2, "whole mesh"),
+      solid("C3D21", 2,
+            "the builder's contact layer, C3D20 elsewhere (one element thick: every element)"),
+      solid("C3D28", 2,
+            "the builder's contact layer, C3D20 elsewhere (one element thick: every element)"),
       beam("B31", "B31", 1, ""),
       beam("B31-FULL", "B31", 1, "FULL"),
       beam("B32", "B32", 2, ""),
@@ -57,7 +61,7 @@ const std::vector<ElementFamily>& family_catalogue() {
       beam("B22", "B22", 2, ""),
       beam("B22-FULL", "B22", 2, "FULL"),
       shell("S4", 1),
-      shell("S4R", 1),
+      shell("S4R", 1, "quarter-plate deck, n x n elements (S4R is S4: docs/elements.md)"),
       shell("S8", 2),
       shell("S8R", 2),
       shell("S9", 2),

@@ -40,7 +40,7 @@ std::vector<ReferenceProblem> structural_accuracy_problems();
 std::vector<ReferenceProblem> structural_sweeps();
 
 // Reads a CalculiX deck given as text (written to a private temporary directory as NAME.inp,
-// removed again); throws InputError from the reader.
+// removed again; the model's source is then "NAME.inp"); throws InputError from the reader.
 Model read_study_deck(const std::string& text, const std::string& name,
                       const ElementRegistry& registry);
 
