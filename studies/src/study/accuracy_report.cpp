@@ -55,7 +55,8 @@ void header(std::ostringstream& md, const std::vector<RunRecord>& records, const
         "(or add --from-csv to redraw from the CSV). -->\n\n"
         "Which element family reaches a given accuracy fastest? Every element family Styk has "
         "runs through refinement series of problems whose exact solution is known. Each run "
-        "builds its model with the mesher (`styk mesh`), solves it with the default linear "
+        "builds its model with the mesher (`styk mesh`; beams and plates: a CalculiX deck read "
+        "back through the .inp reader), solves it with the default linear "
         "solver and measures its errors against the exact solution; the charts put the error "
         "against the model size (DOF) and against the wall time, per family, with the Pareto "
         "front of all families (the runs no other run beats on both time and error).\n\n";
