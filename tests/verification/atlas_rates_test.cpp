@@ -146,8 +146,8 @@ TEST_F(AtlasRates, BeamsConvergeAtTheirOrdersOnTheCantilever) {
 // (levels 2-4; its level-4 error 4.5e-7 is below the fits' round-off floor of 1e-6, so the order
 // is that of levels 2-3). The centre cell's mean moment sum converges at 2 +- 0.3 for S4 and
 // STRI3 (1.76 on levels 4-6 for STRI3). Documented exceptions on the page: S8 and S9 (3 x 3
-// rule) are pre-asymptotic at this thickness (their error falls by 8 then 12 per halving on the
-// finest levels, towards 16), S8R reaches 1e-6 within four levels.
+// rule) are pre-asymptotic at this thickness (the factor by which their error falls per halving
+// grows towards 16), S8R and S9R fall faster than h^4 on the coarse levels.
 TEST_F(AtlasRates, PlatesConvergeAtTheirOrdersOnTheSimplySupportedSquare) {
   const std::vector<RunRecord> s4 = series("plate", "S4", 2);
   EXPECT_NEAR(order(s4, Measure::PointDisplacement), 2.0, kTolerance);

@@ -189,6 +189,7 @@ TEST_F(AtlasWarnings, PlateWarningsAgainstTheThinLimit) {
       EXPECT_TRUE(r.warnings.empty()) << family << " " << t;
     }
   expect_bracket("thin-plate", "S8", 0.02, 1e-4, "locking");
+  EXPECT_NEAR(*run("thin-plate", "S8", 1e-4).error_of(kStabilityMeasure), 0.891, 0.001);
   const RunRecord s8 = run("thin-plate", "S8", 0.001);
   EXPECT_NEAR(*s8.error_of(kStabilityMeasure), 0.0776, 0.0005);
   EXPECT_EQ(s8.warnings, std::vector<std::string>{"locking"});
