@@ -76,12 +76,13 @@ std::vector<const studies::ReferenceProblem*> selected_problems(const StudyArgs&
 void check_families(const StudyArgs& args, const std::vector<std::string>& families,
                     const ElementRegistry& registry) {
   for (const std::string& f : families) {
-    if (!studies::find_family(f))
+    const studies::ElementFamily* family = studies::find_family(f);
+    if (!family)
       throw InputError(here(args), "unknown element family '" + f + "' (styk study " + args.kind +
                                        " --list shows them)");
-    if (!registry.find(f))
-      throw InputError(here(args),
-                       "element family " + f + " is not registered (element plug-ins not loaded?)");
+    if (!registry.find(family->type()))
+      throw InputError(here(args), "element family " + f + ": type " + family->type() +
+                                       " is not registered (element plug-ins not loaded?)");
   }
 }
 

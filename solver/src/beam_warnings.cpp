@@ -14,8 +14,13 @@
 namespace styk::solver_detail {
 namespace {
 
-// Locking beyond this bending stiffening (2 %, grade A of SPEC Tab 3.12) is warned of.
-constexpr double kLockingWarned = 0.02;
+// Locking beyond this bending stiffening is warned of: from 1 + 0.11 on, the bending deflection
+// is 1 / 1.11 = 0.90 of the true one or less, an error over the 10 % that docs/stability.md
+// counts as failing. Measured (styk study stability, thin-beam: 8 B31/B21 with INTEGRATION=FULL
+// under a uniform load; SPEC §7.3 Tab 7.1a): factor 0.045 -> 3.9 % error, 0.078 -> 7.2 %
+// (Tab 7.1a thick, 8 elements), 0.31 -> 24 % (4 elements), 0.50 -> 33 %; the former 2 % warned
+// at the first two, where the error stays below 10 %.
+constexpr double kLockingWarned = 0.11;
 
 bool is_beam(const TElement& element) { return element.section_measure() == SectionMeasure::Beam; }
 

@@ -1,7 +1,9 @@
 // The solver's pre-solve warnings against the stability sweeps of `styk study stability`
 // (docs/stability.md): each warning fires where the error at the named point passes 10 % and
 // stays silent where it does not. The brackets below are the measured onsets the warnings are
-// tuned to (solver/src/model_warnings.cpp), each checked on both sides.
+// tuned to (solver/src/model_warnings.cpp, beam_warnings.cpp), each checked on both sides; where
+// a warning cannot separate the two with a threshold, the measured miss or false alarm is
+// asserted with its cause.
 #include <gtest/gtest.h>
 
 #include <algorithm>
@@ -25,14 +27,17 @@ class AtlasWarnings : public ::testing::Test {
     full_ = nullptr;
   }
 
-  static RunRecord run(const std::string& sweep, const std::string& family, double value) {
+  static RunRecord run(const std::string& sweep, const std::string& family, double value,
+                       bool solved = true) {
     const ReferenceProblem* p = find_problem(sweep);
     EXPECT_NE(p, nullptr);
     const auto it = std::find(p->values.begin(), p->values.end(), value);
     EXPECT_NE(it, p->values.end()) << value;
     const int level = static_cast<int>(it - p->values.begin());
     RunRecord r = run_in_process({"stability", sweep, family, level, 1}, full_->registry);
-    EXPECT_TRUE(r.ok()) << r.failure;
+    if (solved) {
+      EXPECT_TRUE(r.ok()) << r.failure;
+    }
     return r;
   }
 
@@ -125,6 +130,78 @@ TEST_F(AtlasWarnings, IncompatibleModesOnTrapezoidsAreNotWarned) {
   const RunRecord ring = run("poisson", "C3D8I", 0.2);
   EXPECT_LT(*ring.error_of(kStabilityMeasure), 0.04);
   EXPECT_TRUE(ring.warnings.empty());
+}
+
+// Sweep "thin-beam" (slenderness L/h, 8 elements, uniform load; Timoshenko beam theory, SPEC
+// §7.3): the shear-locking warning of the fully integrated 2-node beams fires from a bending
+// stiffening k G A l^2 / (12 E I) of 0.11 (solver/src/beam_warnings.cpp): silent at L/h = 3
+// (factor 0.045, error 3.9 %), warned at L/h = 10 (factor 0.50, error 33 %). The default
+// (reduced) beams reproduce the tip deflection at every slenderness the solver accepts (below
+// 1e-6 up to L/h = 1e4 for B31/B21).
+TEST_F(AtlasWarnings, BeamLockingWarningBracketsTheThinLimit) {
+  for (const char* family : {"B31-FULL", "B21-FULL"}) {
+    expect_bracket("thin-beam", family, 3, 10, "locking");
+    EXPECT_NEAR(*run("thin-beam", family, 3).error_of(kStabilityMeasure), 0.0387, 0.0005);
+    EXPECT_NEAR(*run("thin-beam", family, 10).error_of(kStabilityMeasure), 0.330, 0.001);
+  }
+  for (const char* family : {"B31", "B21"}) {
+    const RunRecord r = run("thin-beam", family, 10000);
+    EXPECT_LT(*r.error_of(kStabilityMeasure), 1e-6) << family;
+    EXPECT_TRUE(r.warnings.empty()) << family;
+  }
+}
+
+// What the beam warnings get wrong on this sweep, measured (docs/stability.md): the quadratic
+// beams with INTEGRATION=FULL are warned of from L/h = 10 on (their factor k G A l^2 / (60 E I)
+// passes 0.11), but only the part of the bending that varies within an element locks, and with
+// 8 elements under a uniform load that part is small: the error levels off at 0.52 %, a false
+// alarm (a warning that knew the element count per member would be needed). At L/h = 1e4 the
+// solver refuses the quadratic beams (nearly singular: A / I = 1.2e9), so that run has no
+// result instead of a wrong one.
+TEST_F(AtlasWarnings, QuadraticFullBeamsAreWarnedWhereTheyStayAccurate) {
+  for (const char* family : {"B32-FULL", "B22-FULL"}) {
+    const RunRecord r = run("thin-beam", family, 3000);
+    EXPECT_NEAR(*r.error_of(kStabilityMeasure), 0.0052, 0.0001) << family;
+    EXPECT_EQ(r.warnings, std::vector<std::string>{"locking"}) << family;
+  }
+  for (const char* family : {"B32", "B22", "B32-FULL", "B22-FULL"}) {
+    const RunRecord refused = run("thin-beam", family, 10000, false);
+    EXPECT_FALSE(refused.ok()) << family;
+    EXPECT_NE(refused.failure.find("nearly singular"), std::string::npos) << refused.failure;
+  }
+}
+
+// Sweep "thin-plate" (t/L, quarter of 4 x 4 elements, element size / thickness 0.125 / t;
+// Navier series of the Mindlin plate, SPEC §7.3). The Mindlin families S4, S4R, S9 stay below 1 %
+// at every thickness and no locking warning fires; S8 fails (89 %) at t/L = 1e-4 with its
+// locking warning. Measured limits of the S8 warning (threshold element size / thickness 10):
+// it fires from t/L = 0.01 (size / t 12.5) although S8 stays below 10 % down to t/L = 0.001
+// (7.8 % at size / t 125), where SPEC Tab 7.1b's coarser 2 x 2 quarter fails at size / t 250
+// (87 %): the onset depends on the mesh as well as on size / t, which a threshold cannot see.
+// S8R fails at t/L = 1e-4 (32 %) unwarned; S9R's spurious-mode warning fires at every thickness
+// where it stays within 0.012 %; STRI3 (Kirchhoff) lacks the shear deflection of the thick
+// plate (17 % at t/L = 0.2) with no warning.
+TEST_F(AtlasWarnings, PlateWarningsAgainstTheThinLimit) {
+  for (const char* family : {"S4", "S4R", "S9"})
+    for (double t : {0.2, 0.01, 1e-4}) {
+      const RunRecord r = run("thin-plate", family, t);
+      EXPECT_LT(*r.error_of(kStabilityMeasure), 0.01) << family << " " << t;
+      EXPECT_TRUE(r.warnings.empty()) << family << " " << t;
+    }
+  expect_bracket("thin-plate", "S8", 0.02, 1e-4, "locking");
+  EXPECT_NEAR(*run("thin-plate", "S8", 1e-4).error_of(kStabilityMeasure), 0.891, 0.001);
+  const RunRecord s8 = run("thin-plate", "S8", 0.001);
+  EXPECT_NEAR(*s8.error_of(kStabilityMeasure), 0.0776, 0.0005);
+  EXPECT_EQ(s8.warnings, std::vector<std::string>{"locking"});
+  const RunRecord s8r = run("thin-plate", "S8R", 1e-4);
+  EXPECT_NEAR(*s8r.error_of(kStabilityMeasure), 0.317, 0.001);
+  EXPECT_TRUE(s8r.warnings.empty());
+  const RunRecord s9r = run("thin-plate", "S9R", 1e-4);
+  EXPECT_LT(*s9r.error_of(kStabilityMeasure), 1.2e-4);
+  EXPECT_EQ(s9r.warnings, std::vector<std::string>{"spurious modes"});
+  const RunRecord stri3 = run("thin-plate", "STRI3", 0.2);
+  EXPECT_NEAR(*stri3.error_of(kStabilityMeasure), 0.171, 0.001);
+  EXPECT_TRUE(stri3.warnings.empty());
 }
 
 }  // namespace

@@ -55,7 +55,8 @@ void header(std::ostringstream& md, const std::vector<RunRecord>& records, const
         "(or add --from-csv to redraw from the CSV). -->\n\n"
         "Which element family reaches a given accuracy fastest? Every element family Styk has "
         "runs through refinement series of problems whose exact solution is known. Each run "
-        "builds its model with the mesher (`styk mesh`), solves it with the default linear "
+        "builds its model with the mesher (`styk mesh`; beams and plates: a CalculiX deck read "
+        "back through the .inp reader), solves it with the default linear "
         "solver and measures its errors against the exact solution; the charts put the error "
         "against the model size (DOF) and against the wall time, per family, with the Pareto "
         "front of all families (the runs no other run beats on both time and error).\n\n";
@@ -101,30 +102,43 @@ void measures_and_families(std::ostringstream& md, const ReportContext& c) {
         "run has no result).\n\n";
   md << "## Families\n\n| family | complete polynomial p | L2 order (p + 1) | energy order (p) | "
         "meshed as |\n|---|---|---|---|---|\n";
-  for (const ElementFamily& f : family_catalogue())
+  for (const ElementFamily& f : families_of_kind(ElementKind::Solid))
     md << "| " << f.name << " | " << f.order << " | " << f.order + 1 << " | " << f.order << " | "
        << f.meshing << " |\n";
+  md << "\nBeams and plates (the problems `beam-cantilever` and `plate`; their theoretical "
+        "orders of the named points are given with each problem):\n\n"
+        "| family | element type | integration | complete polynomial p | meshed as |\n"
+        "|---|---|---|---|---|\n";
+  for (const ElementKind kind : {ElementKind::Beam, ElementKind::Shell})
+    for (const ElementFamily& f : families_of_kind(kind))
+      md << "| " << f.name << " | " << f.type() << " | "
+         << (f.integration.empty() ? std::string("default") : f.integration) << " | " << f.order
+         << " | " << f.meshing << " |\n";
   if (!c.notes.empty()) {
     md << "\nNot in this atlas:\n\n";
     for (const std::string& n : c.notes) md << "- " << n << "\n";
   }
   md << "\nAdding a family: a row in `studies/src/study/families.cpp` (its complete polynomial "
-        "degree), the mesher's conversion to it in the builders the problems use "
-        "(`mesher/src/builder_support.cpp`, docs/mesher.md), and a rerun; `styk study accuracy "
-        "--list` names every registered solid type the table lacks. The quick subset "
-        "(tests/verification/atlas_rates_test.cpp) asserts each family's orders on the Lamé "
-        "cylinder and the heated wall (C3D8R: the contact cylinders) within +-0.3.\n\n";
+        "degree and kind), the mesher's conversion to it in the builders the problems use "
+        "(`mesher/src/builder_support.cpp`, docs/mesher.md; beams and shells: the decks of "
+        "`studies/src/study/structural_decks.cpp`), and a rerun; `styk study accuracy --list` "
+        "names every registered type the table lacks. The quick subset "
+        "(tests/verification/atlas_rates_test.cpp) asserts each solid family's orders on the "
+        "Lamé cylinder and the heated wall (C3D8R: the contact cylinders) within +-0.3, and the "
+        "beams' and plates' orders at their named points (B31/B21 and B32/B22 with "
+        "INTEGRATION=FULL, S4, STRI3, S9R; the reduced beams' exact nodal values).\n\n";
 }
 
 void summary(std::ostringstream& md, const std::vector<RunRecord>& records) {
-  md << "## Fastest family to reach 10 %, 1 %, 0.1 %\n\nEnergy-norm error (the stresses "
-        "everywhere), by solve time; per problem the same for every measure below.\n\n"
-        "| problem | 10 % | 1 % | 0.1 % |\n|---|---|---|---|\n";
+  md << "## Fastest family to reach 10 %, 1 %, 0.1 %\n\nBy solve time: for the solids the "
+        "energy-norm error (the stresses everywhere), for the beams and plates (no 3D field) the "
+        "named point's deflection; per problem the same for every measure below.\n\n"
+        "| problem | measure | 10 % | 1 % | 0.1 % |\n|---|---|---|---|---|\n";
   for (const ReferenceProblem& p : accuracy_problems()) {
     const std::vector<const RunRecord*> runs = runs_of(records, p.name);
     if (runs.empty()) continue;
-    md << "| " << p.name;
-    for (double t : kTargets) md << " | " << cheapest_cell(runs, Measure::Energy, t);
+    md << "| " << p.name << " | " << measure_key(p.headline);
+    for (double t : kTargets) md << " | " << cheapest_cell(runs, p.headline, t);
     md << " |\n";
   }
   md << "\n";
@@ -137,14 +151,19 @@ void deviations(std::ostringstream& md, const ReferenceProblem& p,
   for (const std::string& family : order) {
     const ElementFamily* f = find_family(family);
     if (!f) continue;
+    if (f->kind != p.kind) continue;
+    std::vector<std::pair<Measure, int>> theories = {{Measure::DisplacementL2, f->order + 1},
+                                                     {Measure::Energy, f->order}};
+    if (p.point_orders) {
+      const std::array<int, 2> orders = p.point_orders(*f);
+      theories = {{Measure::PointDisplacement, orders[0]}, {Measure::PointStress, orders[1]}};
+    }
     std::string missed;
-    for (const auto& [m, theory] : {std::pair<Measure, int>{Measure::DisplacementL2, f->order + 1},
-                                    {Measure::Energy, f->order}}) {
+    for (const auto& [m, theory] : theories) {
       const auto fit = convergence_fit(series_of(records, p.name, family, m), m, Cost::Size);
       if (fit && std::abs(fit->slope - theory) > 0.3)
-        missed += (missed.empty() ? "" : ", ") +
-                  std::string(m == Measure::Energy ? "energy" : "L2") + " " +
-                  fmt("%.2f", fit->slope) + " (theory " + std::to_string(theory) + ")";
+        missed += std::string(missed.empty() ? "" : ", ") + measure_key(m) + " " + fmt("%.2f", fit->slope) +
+                  " (theory " + std::to_string(theory) + ")";
     }
     if (missed.empty()) continue;
     const auto reason = p.deviations.find(family);
@@ -154,35 +173,55 @@ void deviations(std::ostringstream& md, const ReferenceProblem& p,
   if (!list.str().empty()) md << "\nOrders more than 0.3 from the theory:\n\n" << list.str();
 }
 
+// The theoretical orders of the named points, per family of the problem's runs.
+void theory_line(std::ostringstream& md, const ReferenceProblem& p,
+                 const std::vector<RunRecord>& records, const std::vector<std::string>& order) {
+  std::string line;
+  for (const std::string& family : order) {
+    const ElementFamily* f = find_family(family);
+    if (!f || f->kind != p.kind) continue;
+    if (series_of(records, p.name, family, p.headline).empty()) continue;
+    const std::array<int, 2> o = p.point_orders(*f);
+    line += (line.empty() ? "" : ", ") + family + " " + std::to_string(o[0]) + " / " +
+            std::to_string(o[1]);
+  }
+  if (!line.empty())
+    md << "Theoretical orders against h (point displacement / point stress): " << line
+       << ".\n\n";
+}
+
 void problem_section(std::ostringstream& md, const ReferenceProblem& p,
                      const std::vector<RunRecord>& records, const std::vector<std::string>& order,
                      const ReportLayout& layout) {
   const std::vector<const RunRecord*> runs = runs_of(records, p.name);
   if (runs.empty()) return;
   md << "## " << p.title << " (`" << p.name << "`)\n\n" << p.source << ". " << p.details << "\n\n";
-  md << "![" << p.name << ": energy-norm error against DOF and wall time](" << layout.image_link
-     << "/" << chart_file("accuracy", p.name) << ")\n\n";
+  md << "![" << p.name << ": " << measure_label(p.headline) << " against DOF and wall time]("
+     << layout.image_link << "/" << chart_file("accuracy", p.name) << ")\n\n";
+  if (p.point_orders) theory_line(md, p, records, order);
   if (measured(runs, Measure::ContactPressure))
     md << "![" << p.name << ": contact-pressure error against DOF and wall time]("
        << layout.image_link << "/" << chart_file("accuracy", p.name + "-pressure") << ")\n\n";
   md << "Convergence orders against h (last three levels):\n\n"
         "| family | levels | DOF | L2 displacement | energy | point displacement | point stress "
-        "| finest energy error | time, memory of the finest |\n"
+        "| finest " << measure_key(p.headline) << " error | time, memory of the finest |\n"
         "|---|---|---|---|---|---|---|---|---|\n";
   for (const std::string& family : order) {
-    const auto energy = series_of(records, p.name, family, Measure::Energy);
+    const auto energy = series_of(records, p.name, family, p.headline);
     if (energy.empty()) continue;
     const RunRecord& finest = *energy.back();
     md << "| " << family << " | " << energy.size() << " | " << group_thousands(energy.front()->dof)
        << " – " << group_thousands(finest.dof) << " | "
        << order_cell(series_of(records, p.name, family, Measure::DisplacementL2),
                      Measure::DisplacementL2)
-       << " | " << order_cell(energy, Measure::Energy) << " | "
+       << " | "
+       << order_cell(series_of(records, p.name, family, Measure::Energy), Measure::Energy)
+       << " | "
        << order_cell(series_of(records, p.name, family, Measure::PointDisplacement),
                      Measure::PointDisplacement)
        << " | "
        << order_cell(series_of(records, p.name, family, Measure::PointStress), Measure::PointStress)
-       << " | " << fmt("%.3g", *finest.error_of(Measure::Energy)) << " | "
+       << " | " << fmt("%.3g", *finest.error_of(p.headline)) << " | "
        << fmt("%.3g s", finest.time_s)
        << (std::isfinite(finest.memory_mb) ? fmt(", %.0f MB", finest.memory_mb) : "") << " |\n";
   }
@@ -228,7 +267,9 @@ void write_accuracy_report(const std::vector<RunRecord>& records, const ReportCo
   const std::vector<std::string> order = family_order(records);
   for (const std::string& problem : problems_of(records)) {
     const std::filesystem::path dir(layout.image_dir);
-    detail::write_chart(accuracy_figure(records, problem, Measure::Energy, order),
+    const ReferenceProblem* p = find_problem(problem);
+    const Measure headline = p ? p->headline : Measure::Energy;
+    detail::write_chart(accuracy_figure(records, problem, headline, order),
                         (dir / chart_file("accuracy", problem)).string());
     bool contact = false;
     for (const RunRecord& r : records)

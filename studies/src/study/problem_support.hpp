@@ -34,4 +34,14 @@ struct BeamSpec {
 };
 ProblemSetup beam_setup(const BeamSpec& beam);
 
+// The beam and plate problems (structural_problems.cpp): the refinement series of the
+// accuracy atlas and the thin-limit sweeps of the stability study.
+std::vector<ReferenceProblem> structural_accuracy_problems();
+std::vector<ReferenceProblem> structural_sweeps();
+
+// Reads a CalculiX deck given as text (written to a private temporary directory as NAME.inp,
+// removed again; the model's source is then "NAME.inp"); throws InputError from the reader.
+Model read_study_deck(const std::string& text, const std::string& name,
+                      const ElementRegistry& registry);
+
 }  // namespace styk::studies::detail

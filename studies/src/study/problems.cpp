@@ -246,9 +246,13 @@ ReferenceProblem contact() {
 }  // namespace
 
 const std::vector<ReferenceProblem>& accuracy_problems() {
-  static const std::vector<ReferenceProblem> problems = {
-      lame("lame", 0.3), lame("lame-incompressible", 0.4999), cantilever(), curved_beam(), heat(),
-      contact()};
+  static const std::vector<ReferenceProblem> problems = [] {
+    std::vector<ReferenceProblem> all = {lame("lame", 0.3), lame("lame-incompressible", 0.4999),
+                                         cantilever(),      curved_beam(),
+                                         heat(),            contact()};
+    for (ReferenceProblem& p : detail::structural_accuracy_problems()) all.push_back(std::move(p));
+    return all;
+  }();
   return problems;
 }
 
@@ -261,6 +265,11 @@ const ReferenceProblem* find_problem(const std::string& name) {
 
 Model build_problem_model(const ProblemSetup& setup, const std::string& family,
                           const ElementRegistry& registry) {
+  if (setup.deck) {
+    const ElementFamily* f = find_family(family);
+    if (!f) throw InputError({"styk study", 0}, "unknown element family '" + family + "'");
+    return detail::read_study_deck(setup.deck(*f), setup.builder + "-" + family, registry);
+  }
   std::map<std::string, std::string> args = setup.args;
   args["element"] = family;
   const mesher::BuildResult build = mesher::run_builder(setup.builder, args, registry);

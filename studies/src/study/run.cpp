@@ -62,6 +62,11 @@ void build_solve_measure(const RunSpec& spec, const ReferenceProblem& problem,
   r.dof = report.dofs;
   r.warnings = warning_kinds(report.warnings);
   if (setup.quantities) r.quantities = setup.quantities(model, results);
+  if (setup.measure) {
+    const ErrorArray errors = setup.measure(model, results.increments.back(), registry);
+    for (int m = 0; m < kMeasureCount; ++m) r.error[m] = errors[m];
+    return;
+  }
   if (!setup.exact) return;
   const ErrorArray errors =
       measure_errors(model, results.increments.back(), registry, *setup.exact, setup.probes);
@@ -78,10 +83,13 @@ std::string one_line(std::string s) {
 std::vector<std::string> warning_kinds(const std::vector<std::string>& warnings) {
   std::vector<std::string> kinds;
   for (const std::string& w : warnings) {
-    const std::string kind = w.find("lock volumetrically") != std::string::npos ? "locking"
-                             : w.find("hourglass") != std::string::npos         ? "hourglass"
-                             : w.find("distorted") != std::string::npos         ? "distortion"
-                                                                                : "other";
+    const auto has = [&w](const char* text) { return w.find(text) != std::string::npos; };
+    const std::string kind =
+        has("lock volumetrically") || has("shear locking") || has("locks in shear") ? "locking"
+        : has("hourglass")                                                          ? "hourglass"
+        : has("zero-energy modes")                                                  ? "spurious modes"
+        : has("distorted")                                                          ? "distortion"
+                                                                                    : "other";
     if (std::find(kinds.begin(), kinds.end(), kind) == kinds.end()) kinds.push_back(kind);
   }
   return kinds;
@@ -179,9 +187,16 @@ RunRecord run_isolated(const RunSpec& spec, const std::string& program) {
 
 std::vector<RunRecord> run_problem(const ReferenceProblem& problem, const std::string& study,
                                    const ElementRegistry& registry, const SeriesOptions& options) {
-  std::vector<std::string> families = options.families;
-  if (families.empty())
-    for (const ElementFamily& f : available_families(registry, nullptr)) families.push_back(f.name);
+  std::vector<std::string> families;
+  if (options.families.empty()) {
+    for (const ElementFamily& f : available_families(registry, nullptr))
+      if (f.kind == problem.kind) families.push_back(f.name);
+  } else {
+    for (const std::string& name : options.families) {
+      const ElementFamily* f = find_family(name);
+      if (!f || f->kind == problem.kind) families.push_back(name);  // unknown: its run says why
+    }
+  }
   const bool sweep = !problem.parameter.empty();
   std::vector<RunRecord> out;
   for (const std::string& family : families) {

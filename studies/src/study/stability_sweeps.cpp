@@ -88,10 +88,14 @@ ReferenceProblem incompressibility() {
 }  // namespace
 
 const std::vector<ReferenceProblem>& stability_sweeps() {
-  static const std::vector<ReferenceProblem> sweeps = {
-      distortion("distortion-parallelogram", {0, 10, 20, 30, 40, 50, 60}),
-      distortion("distortion-trapezoid", {0, 5, 10, 15, 20, 25, 30, 35, 40}), aspect_ratio(),
-      incompressibility()};
+  static const std::vector<ReferenceProblem> sweeps = [] {
+    std::vector<ReferenceProblem> all = {
+        distortion("distortion-parallelogram", {0, 10, 20, 30, 40, 50, 60}),
+        distortion("distortion-trapezoid", {0, 5, 10, 15, 20, 25, 30, 35, 40}), aspect_ratio(),
+        incompressibility()};
+    for (ReferenceProblem& p : detail::structural_sweeps()) all.push_back(std::move(p));
+    return all;
+  }();
   return sweeps;
 }
 

@@ -24,7 +24,8 @@ std::vector<FamilyVerdict> stability_verdicts(const std::vector<RunRecord>& reco
     for (const RunRecord* r : runs) {
       const std::optional<double> e = r->error_of(kStabilityMeasure);
       const bool fails = !r->ok() || !e || *e > kStabilityLimit;
-      const bool warned = !r->warnings.empty();
+      // A run the solver refused (no result) told its user with an error: the loudest warning.
+      const bool warned = !r->warnings.empty() || !r->ok();
       for (const std::string& k : r->warnings)
         if (std::find(kinds.begin(), kinds.end(), k) == kinds.end()) kinds.push_back(k);
       if (fails) {
@@ -34,6 +35,9 @@ std::vector<FamilyVerdict> stability_verdicts(const std::vector<RunRecord>& reco
         v.false_alarms.push_back(r->value);
       }
     }
+    for (const RunRecord* r : runs)
+      if (!r->ok() && std::find(kinds.begin(), kinds.end(), "refused") == kinds.end())
+        kinds.push_back("refused");
     for (const std::string& k : kinds) v.kinds += (v.kinds.empty() ? "" : ", ") + k;
     out.push_back(std::move(v));
   }

@@ -11,20 +11,31 @@
 
 namespace styk::studies {
 
+// What a family models: the solid problems run the solid families, the beam and plate problems
+// (docs/accuracy.md, "Beams and plates") their own.
+enum class ElementKind { Solid, Beam, Shell };
+
 struct ElementFamily {
   std::string name;
   // Degree of the complete polynomial the shape functions contain: the L2 displacement error
   // falls as h^(order + 1), the energy-norm (stress) error as h^order.
   int order = 1;
   std::string meshing;  // how the studies mesh it, for the docs
+  ElementKind kind = ElementKind::Solid;
+  std::string element_type;  // the registry's type; empty: `name`
+  std::string integration;   // *BEAM SECTION INTEGRATION= of the family (beams), empty: default
+
+  const std::string& type() const { return element_type.empty() ? name : element_type; }
 };
 
 // Every family the studies know, in the charts' order (colours follow it).
 const std::vector<ElementFamily>& family_catalogue();
+// The catalogue's families of one kind.
+std::vector<ElementFamily> families_of_kind(ElementKind kind);
 const ElementFamily* find_family(const std::string& name);
 
-// The catalogue's families that `registry` holds; `unavailable` (may be null) receives one line
-// per catalogue family the registry lacks and per registered solid type the catalogue lacks.
+// The catalogue's families whose type `registry` holds; `unavailable` (may be null) receives one line
+// per catalogue family the registry lacks and per registered type the catalogue lacks.
 std::vector<ElementFamily> available_families(const ElementRegistry& registry,
                                               std::vector<std::string>* unavailable);
 

@@ -4,6 +4,7 @@
 // (docs/accuracy.md lists them with their sources).
 #pragma once
 
+#include <array>
 #include <functional>
 #include <map>
 #include <memory>
@@ -15,6 +16,7 @@
 #include "styk/mesher/builders.hpp"
 #include "styk/studies/study/error_measures.hpp"
 #include "styk/studies/study/exact_solution.hpp"
+#include "styk/studies/study/families.hpp"
 
 namespace styk::studies {
 
@@ -30,6 +32,11 @@ struct ProblemSetup {
   std::function<void(const mesher::BuildResult&, Model&, const ElementRegistry&)> impose;
   // Absolute results recorded by name (RunRecord::quantities); may be empty.
   std::function<std::map<std::string, double>(const Model&, const Results&)> quantities;
+  // Beams and plates: the model is a CalculiX deck (text for the family), read by the .inp
+  // reader instead of a builder's; and its errors come from `measure` (named points against a
+  // closed form or series) instead of a 3D exact field.
+  std::function<std::string(const ElementFamily& family)> deck;
+  std::function<ErrorArray(const Model&, const IncrementResult&, const ElementRegistry&)> measure;
 };
 
 struct ReferenceProblem {
@@ -49,6 +56,14 @@ struct ReferenceProblem {
   // page's list of deviations; a deviation without an entry is listed as unexplained.
   std::map<std::string, std::string> deviations;
   std::function<ProblemSetup(int level)> setup;
+  ElementKind kind = ElementKind::Solid;  // the families it runs
+  // The error of the charts and of the "fastest to reach" tables: the energy norm for solids,
+  // the named point's stress (moment) for beams and plates, which have no 3D field.
+  Measure headline = Measure::Energy;
+  // Beams and plates: the theoretical orders (against h) of the named point's displacement and
+  // stress (moment) errors of a family, which the page compares with the fitted ones; solids are
+  // compared on their L2 and energy norms (p + 1, p) instead.
+  std::function<std::array<int, 2>(const ElementFamily&)> point_orders;
 
   int level_count() const { return parameter.empty() ? levels : static_cast<int>(values.size()); }
 };
@@ -65,7 +80,8 @@ const std::vector<std::string>& model_size_families();
 const ReferenceProblem* find_problem(const std::string& name);
 
 // The model of one run: the setup's builder with --element `family`, the exact conditions
-// imposed. Throws InputError from the builder.
+// imposed (or the setup's deck for the family, read by the .inp reader). Throws InputError from
+// the builder or the reader.
 Model build_problem_model(const ProblemSetup& setup, const std::string& family,
                           const ElementRegistry& registry);
 

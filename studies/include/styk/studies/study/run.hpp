@@ -30,11 +30,14 @@ RunRecord run_in_process(const RunSpec& spec, const ElementRegistry& registry);
 // record gives a record with `failure` set.
 RunRecord run_isolated(const RunSpec& spec, const std::string& program);
 
-// The warnings of an AnalysisReport by kind: "locking", "hourglass", "distortion" (or "other").
+// The warnings of an AnalysisReport by kind: "locking" (volumetric, or shear locking of beams and
+// shells), "hourglass", "spurious modes" (zero-energy modes of beams and shells), "distortion"
+// (or "other").
 std::vector<std::string> warning_kinds(const std::vector<std::string>& warnings);
 
 struct SeriesOptions {
-  std::vector<std::string> families;  // empty: every available family
+  std::vector<std::string> families;  // empty: every available family of the problem's kind;
+                                      // families of another kind are skipped
   long long max_dof = 500000;         // refinement stops before a level predicted to exceed it
   double max_seconds = 120;           // ... or predicted to solve slower than this
   int repeats = 3;                    // timed solves per run (1 for runs predicted over 30 s)

@@ -16,10 +16,11 @@ inline constexpr double kStabilityLimit = 0.10;
 struct FamilyVerdict {
   std::string family;
   std::vector<double> failing;         // swept values with error > 10 % (or no result)
-  std::vector<double> failing_warned;  // ... where a warning fired
+  std::vector<double> failing_warned;  // ... where a warning fired or the solver refused the run
   std::vector<double> missed;          // ... where none fired
   std::vector<double> false_alarms;    // values with error <= 10 % where a warning fired
-  std::string kinds;                   // the warning kinds that fired anywhere, e.g. "locking"
+  std::string kinds;  // the warning kinds that fired anywhere, e.g. "locking"; "refused": runs
+                      // the solver refused
 };
 
 // One verdict per family of the sweep's runs, in order of appearance.
