@@ -231,6 +231,14 @@ class DatPrinter {
     header(forces ? "section forces (elem, integ.pnt.,sf1,sf2,sf3)"
                   : "section moments (elem, integ.pnt.,sm1,sm2,sm3)",
            set, inc.total_time);
+    print_station_rows(elements, inc, field);
+    if (forces) print_transverse_shear(set, elements, inc);
+  }
+
+  // One row per station of `elements`: element id, 1-based station, the station's values.
+  template <typename Row>
+  void print_station_rows(const std::vector<int>& elements, const IncrementResult& inc,
+                          const std::vector<Row>& field) {
     for (const int e : elements)
       for (int p = inc.station_offset[e]; p < inc.station_offset[e + 1]; ++p) {
         write_id(model_.elements[e].id);
@@ -240,7 +248,6 @@ class DatPrinter {
         for (const double v : field[p]) out_ << ' ' << io::fortran_e13_6(v);
         out_ << '\n';
       }
-    if (forces) print_transverse_shear(set, elements, inc);
   }
 
   // The shells' transverse shear forces Q13, Q23 (Abaqus' SF4, SF5; Styk's block: ccx prints no
@@ -258,15 +265,7 @@ class DatPrinter {
     if (shells.empty() || inc.SFQ.size() != static_cast<std::size_t>(inc.station_offset.back()))
       return;
     header("transverse shear forces (elem, integ.pnt.,sf4,sf5)", set, inc.total_time);
-    for (const int e : shells)
-      for (int p = inc.station_offset[e]; p < inc.station_offset[e + 1]; ++p) {
-        write_id(model_.elements[e].id);
-        char point[16];
-        std::snprintf(point, sizeof point, " %3d", p - inc.station_offset[e] + 1);
-        out_ << point;
-        for (const double v : inc.SFQ[p]) out_ << ' ' << io::fortran_e13_6(v);
-        out_ << '\n';
-      }
+    print_station_rows(shells, inc, inc.SFQ);
   }
 
   // POSITION=CENTROIDAL: one row per element, no integration-point column.
