@@ -4,6 +4,7 @@
 
 #include <Eigen/Dense>
 
+#include "shell_kinematics.hpp"
 #include "styk/elements/quad_shapes.hpp"
 
 namespace styk {
@@ -93,20 +94,10 @@ void Shell::der(const Vec3& xi, Eigen::Ref<Eigen::VectorXd> N,
 }
 
 IntegrationRule Shell::rule(RuleKind kind) const {
-  const IntegrationRule surface = quad_gauss_rule(surface_order(kind));
-  IntegrationRule rule;
   const int n = surface_order(kind);
-  rule.label = std::to_string(n) + "x" + std::to_string(n) +
-               " Gauss in the surface x bottom, middle and top fibre";
-  // Simpson's weights over the thickness, halved so that a point's three fibres sum to its
-  // surface weight (point_measure carries the thickness).
-  const double fibre_weight[3] = {1.0 / 6.0, 4.0 / 6.0, 1.0 / 6.0};
-  for (int k = 0; k < surface.size(); ++k)
-    for (int fibre = 0; fibre < 3; ++fibre) {
-      rule.points.push_back({surface.points[k][0], surface.points[k][1], fibre - 1.0});
-      rule.weights.push_back(surface.weights[k] * fibre_weight[fibre]);
-    }
-  return rule;
+  return shell_detail::with_fibres(quad_gauss_rule(n),
+                                   std::to_string(n) + "x" + std::to_string(n) +
+                                       " Gauss in the surface x bottom, middle and top fibre");
 }
 
 int Shell::section_stations(RuleKind kind) const {
@@ -117,21 +108,8 @@ int Shell::section_stations(RuleKind kind) const {
 double Shell::point_measure(const ElementGeometry& g, const Eigen::Ref<const Eigen::VectorXd>&,
                             const Eigen::Ref<const Eigen::MatrixXd>& dN,
                             Eigen::Ref<Eigen::MatrixXd> dNdx, int point) const {
-  const Eigen::Vector3d g1 = g.X.transpose() * dN.col(0);
-  const Eigen::Vector3d g2 = g.X.transpose() * dN.col(1);
-  const Eigen::Vector3d normal = g1.cross(g2);
-  const double area = normal.norm();
-  const double scale = std::max(g.X.cwiseAbs().maxCoeff(), 1e-300);
-  if (!(area > 1e-12 * scale * scale))
-    throw InputError(g.where, "element " + std::to_string(g.id) + " (" + name() +
-                                  "): degenerate surface at point " + std::to_string(point) +
-                                  " (its tangents are parallel or zero)");
-  Eigen::Matrix3d J;
-  J << g1, g2, normal / area;
-  const Eigen::Matrix3d inverse = J.inverse();  // rows: the dual vectors g^1, g^2, n
-  for (Eigen::Index a = 0; a < dN.rows(); ++a)
-    dNdx.row(a) = dN(a, 0) * inverse.row(0) + dN(a, 1) * inverse.row(1);
-  return area * g.cross_section;
+  return shell_detail::surface_point_measure(
+      *this, g, dN, dNdx, point, "degenerate surface (its tangents are parallel or zero)");
 }
 
 }  // namespace styk

@@ -1,6 +1,7 @@
 // Kinematics of the degenerated shells (shell_kinematics.hpp).
 #include "shell_kinematics.hpp"
 
+#include <algorithm>
 #include <cmath>
 
 #include <Eigen/Dense>
@@ -61,6 +62,38 @@ Eigen::Matrix3d lamina_axes_of_normal(const Eigen::Vector3d& normal) {
   Eigen::Matrix3d R;
   R << e1, e3.cross(e1), e3;
   return R;
+}
+
+IntegrationRule with_fibres(const IntegrationRule& surface, const std::string& label) {
+  IntegrationRule rule;
+  rule.label = label;
+  const double fibre_weight[3] = {1.0 / 6.0, 4.0 / 6.0, 1.0 / 6.0};
+  for (int k = 0; k < surface.size(); ++k)
+    for (int fibre = 0; fibre < 3; ++fibre) {
+      rule.points.push_back({surface.points[k][0], surface.points[k][1], fibre - 1.0});
+      rule.weights.push_back(surface.weights[k] * fibre_weight[fibre]);
+    }
+  return rule;
+}
+
+double surface_point_measure(const TElement& element, const ElementGeometry& g,
+                             const Eigen::Ref<const Eigen::MatrixXd>& dN,
+                             Eigen::Ref<Eigen::MatrixXd> dNdx, int point,
+                             const std::string& degenerate) {
+  const Eigen::Vector3d g1 = g.X.transpose() * dN.col(0);
+  const Eigen::Vector3d g2 = g.X.transpose() * dN.col(1);
+  const Eigen::Vector3d normal = g1.cross(g2);
+  const double area = normal.norm();
+  const double scale = std::max(g.X.cwiseAbs().maxCoeff(), 1e-300);
+  if (!(area > 1e-12 * scale * scale))
+    throw InputError(g.where, label(element, g) + ": " + degenerate + " at point " +
+                                  std::to_string(point));
+  Eigen::Matrix3d J;
+  J << g1, g2, normal / area;
+  const Eigen::Matrix3d inverse = J.inverse();  // rows: the dual vectors g^1, g^2, n
+  for (Eigen::Index a = 0; a < dN.rows(); ++a)
+    dNdx.row(a) = dN(a, 0) * inverse.row(0) + dN(a, 1) * inverse.row(1);
+  return area * g.cross_section;
 }
 
 std::string label(const TElement& element, const ElementGeometry& g) {

@@ -55,6 +55,20 @@ void lamina_point(const Shell& shell, const ElementGeometry& g, const ShellSetup
 void drilling_row(const Shell& shell, const ElementGeometry& g, const ShellSetup& s, double xi,
                   double eta, Eigen::RowVectorXd& row, double& area);
 
+// A shell's integration rule: each surface point of `surface` with the bottom, middle and top
+// fibre (zeta = -1, 0, 1) and Simpson's weights over the thickness, halved so that a point's
+// three fibres sum to its surface weight (the point measure carries the thickness).
+IntegrationRule with_fibres(const IntegrationRule& surface, const std::string& label);
+
+// The point measure of a shell-like element at a surface point: the area |g1 x g2| times the
+// thickness (g.cross_section), and dNdx from the dual basis of (g1, g2, n). Throws InputError
+// naming the element and `degenerate` (what a zero area means for its shape) when the tangents
+// are parallel or zero.
+double surface_point_measure(const TElement& element, const ElementGeometry& g,
+                             const Eigen::Ref<const Eigen::MatrixXd>& dN,
+                             Eigen::Ref<Eigen::MatrixXd> dNdx, int point,
+                             const std::string& degenerate);
+
 // Simpson's rule with n (odd) points on [-1, 1].
 void simpson(int n, std::vector<double>& points, std::vector<double>& weights);
 

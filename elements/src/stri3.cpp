@@ -2,8 +2,6 @@
 // (stiffness, stresses, section forces) is in stri3_mechanics.cpp.
 #include "styk/elements/stri3.hpp"
 
-#include <algorithm>
-
 #include <Eigen/Dense>
 
 #include "shell_kinematics.hpp"
@@ -45,37 +43,15 @@ void Stri3::der(const Vec3& xi, Eigen::Ref<Eigen::VectorXd> N,
 }
 
 IntegrationRule Stri3::rule(RuleKind) const {
-  const IntegrationRule surface = triangle_rule();
-  IntegrationRule r;
-  r.label = "3-point triangle rule x bottom, middle and top fibre";
-  // Simpson's weights over the thickness, halved (as the shells' rule): point_measure carries
-  // the thickness.
-  const double fibre_weight[3] = {1.0 / 6.0, 4.0 / 6.0, 1.0 / 6.0};
-  for (int k = 0; k < surface.size(); ++k)
-    for (int fibre = 0; fibre < 3; ++fibre) {
-      r.points.push_back({surface.points[k][0], surface.points[k][1], fibre - 1.0});
-      r.weights.push_back(surface.weights[k] * fibre_weight[fibre]);
-    }
-  return r;
+  return shell_detail::with_fibres(triangle_rule(),
+                                   "3-point triangle rule x bottom, middle and top fibre");
 }
 
 double Stri3::point_measure(const ElementGeometry& g, const Eigen::Ref<const Eigen::VectorXd>&,
                             const Eigen::Ref<const Eigen::MatrixXd>& dN,
                             Eigen::Ref<Eigen::MatrixXd> dNdx, int point) const {
-  const Eigen::Vector3d g1 = g.X.transpose() * dN.col(0);
-  const Eigen::Vector3d g2 = g.X.transpose() * dN.col(1);
-  const Eigen::Vector3d normal = g1.cross(g2);
-  const double area = normal.norm();
-  const double scale = std::max(g.X.cwiseAbs().maxCoeff(), 1e-300);
-  if (!(area > 1e-12 * scale * scale))
-    throw InputError(g.where, shell_detail::label(*this, g) + ": degenerate triangle at point " +
-                                  std::to_string(point) + " (its corners are on one line)");
-  Eigen::Matrix3d J;
-  J << g1, g2, normal / area;
-  const Eigen::Matrix3d inverse = J.inverse();
-  for (Eigen::Index a = 0; a < dN.rows(); ++a)
-    dNdx.row(a) = dN(a, 0) * inverse.row(0) + dN(a, 1) * inverse.row(1);
-  return area * g.cross_section;
+  return shell_detail::surface_point_measure(*this, g, dN, dNdx, point,
+                                             "degenerate triangle (its corners are on one line)");
 }
 
 void Stri3::eigenstrain_load(const ElementGeometry& g, const ElementMaterial& material, RuleKind,

@@ -19,6 +19,12 @@ struct RecoveryScratch {
   std::vector<int> dofs;
 };
 
+bool has_shells(const PreparedModel& prepared) {
+  for (const TElement* element : prepared.formulation)
+    if (element->section_measure() == SectionMeasure::Shell) return true;
+  return false;
+}
+
 // Nodal displacements and rotations (global components) from the solution on the active dofs.
 void nodal_motions(const Model& model, const PreparedModel& prepared, const std::vector<double>& u,
                    IncrementResult& out) {
@@ -78,6 +84,7 @@ void recover_increment(const Model& model, const PreparedModel& prepared,
     out.station_offset = prepared.station_offset;
     out.SF.assign(stations, Vec3{0.0, 0.0, 0.0});
     out.SM.assign(stations, Vec3{0.0, 0.0, 0.0});
+    if (has_shells(prepared)) out.SFQ.assign(stations, {0.0, 0.0});
   }
   if (input.energies) {
     out.ENER.assign(prepared.ip_offset.back(), 0.0);
@@ -144,6 +151,9 @@ void recover_increment(const Model& model, const PreparedModel& prepared,
             out.SF[station + k][c] = s.forces(k, c);
             out.SM[station + k][c] = s.moments(k, c);
           }
+        if (!out.SFQ.empty() && s.forces.cols() >= 5)  // shells: Q13, Q23 in columns 4 and 5
+          for (int k = 0; k < s.forces.rows(); ++k)
+            out.SFQ[station + k] = {s.forces(k, 3), s.forces(k, 4)};
       }
       // Beams have no 3D energy density at their fibre points (prepare_model refuses ENER, ELSE,
       // EVOL and THE requests in models with beams).

@@ -40,9 +40,76 @@ double element_size(const Model& model, int e) {
   return size;
 }
 
+// Zero eigenvalues beyond the six rigid motions of a dense symmetric stiffness matrix.
+int modes_beyond_rigid(const Eigen::MatrixXd& K) {
+  const Eigen::SelfAdjointEigenSolver<Eigen::MatrixXd> eigen(K, Eigen::EigenvaluesOnly);
+  const Eigen::VectorXd& values = eigen.eigenvalues();
+  const double largest = values.cwiseAbs().maxCoeff();
+  int zero = 0;
+  for (Eigen::Index k = 0; k < values.size(); ++k) zero += std::abs(values[k]) < 1e-9 * largest;
+  return std::max(0, zero - 6);
+}
+
+// Meshes of reduced-integration shells up to this many elements are checked whole (their own
+// geometry, free of supports): patterns the 2x2 patch does not show (a single S8R element, a
+// strip one element wide) are found there. Larger meshes rely on the patch count.
+constexpr int kWholeMeshLimit = 16;
+
+// Zero-energy modes beyond the rigid motions of the model's shell elements whose type and rule
+// has spurious modes as a single element (S8R, S9R), assembled alone with a unit material and a
+// thickness of a tenth of their mean size (the count depends on the rule and the mesh, not on
+// the section). -1 when there are none or more than kWholeMeshLimit.
+int reduced_shell_mesh_modes(const Model& model, const PreparedModel& prepared) {
+  std::map<std::pair<const TElement*, RuleKind>, bool> single_modes;
+  std::vector<int> elements;
+  for (int e = 0; e < model.element_count(); ++e) {
+    if (!is_shell(*prepared.formulation[e])) continue;
+    const auto key = std::make_pair(prepared.formulation[e], prepared.rule_kind[e]);
+    const auto known = single_modes.find(key);
+    const bool candidate = known != single_modes.end()
+                               ? known->second
+                               : (single_modes[key] = spurious_shell_modes(*key.first, key.second,
+                                                                           1) > 0);
+    if (candidate) elements.push_back(e);
+  }
+  if (elements.empty() || static_cast<int>(elements.size()) > kWholeMeshLimit) return -1;
+  std::map<int, int> slot;  // node -> its place in the small matrix
+  double size = 0.0;
+  for (const int e : elements) {
+    const int* nodes = model.element_nodes(e);
+    for (int k = 0; k < model.elements[e].node_count; ++k) slot.emplace(nodes[k], 0);
+    size += element_size(model, e) / static_cast<double>(elements.size());
+  }
+  int next = 0;
+  for (auto& [node, place] : slot) place = next++;
+  Section section;
+  section.elset = "MESH";
+  section.thickness = 0.1 * size;
+  section.shell = ShellSection{};
+  Material unit;
+  unit.name = "UNIT";
+  unit.young = 1.0;
+  unit.poisson = 0.3;
+  Eigen::MatrixXd K = Eigen::MatrixXd::Zero(6 * next, 6 * next);
+  ElementGeometry g;
+  for (const int e : elements) {
+    element_geometry(model, e, g);
+    g.section = &section;
+    g.cross_section = *section.thickness;
+    Eigen::MatrixXd Ke;
+    prepared.formulation[e]->stiffness(g, unit, prepared.rule_kind[e], Ke);
+    const int* nodes = model.element_nodes(e);
+    const int n = model.elements[e].node_count;
+    for (int a = 0; a < n; ++a)
+      for (int b = 0; b < n; ++b)
+        K.block<6, 6>(6 * slot[nodes[a]], 6 * slot[nodes[b]]) += Ke.block<6, 6>(6 * a, 6 * b);
+  }
+  return modes_beyond_rigid(K);
+}
+
 }  // namespace
 
-int spurious_shell_modes(const TElement& element, RuleKind kind) {
+int spurious_shell_modes(const TElement& element, RuleKind kind, int cells) {
   if (!is_shell(element)) return 0;
   Section section;
   section.elset = "PATCH";
@@ -52,11 +119,12 @@ int spurious_shell_modes(const TElement& element, RuleKind kind) {
   unit.name = "UNIT";
   unit.young = 1.0;
   unit.poisson = 0.3;
-  // A 2x2 patch of unit squares on a grid of (2 order + 1)^2 points; node a of an element sits at
+  // A cells x cells patch (2x2 unless asked) of unit squares on a grid of
+  // (cells order + 1)^2 points; node a of an element sits at
   // grid point (order (cell_x + (xi_a + 1) / 2), order (cell_y + (eta_a + 1) / 2)). Triangles
   // (natural corners (0, 0), (1, 0), (0, 1)) cut each square into two along its diagonal.
   const bool triangle = element.node_count() == 3;
-  const int order = element.node_count() <= 4 ? 1 : 2, side = 2 * order + 1;
+  const int order = element.node_count() <= 4 ? 1 : 2, side = cells * order + 1;
   const int dofs = 6 * side * side;
   Eigen::MatrixXd K = Eigen::MatrixXd::Zero(dofs, dofs);
   std::vector<char> used(side * side, 0);
@@ -78,8 +146,8 @@ int spurious_shell_modes(const TElement& element, RuleKind kind) {
       for (std::size_t b = 0; b < grid.size(); ++b)
         K.block<6, 6>(6 * grid[a], 6 * grid[b]) += Ke.block<6, 6>(6 * a, 6 * b);
   };
-  for (int cell = 0; cell < 4; ++cell) {
-    const int x0 = cell % 2, y0 = cell / 2;
+  for (int cell = 0; cell < cells * cells; ++cell) {
+    const int x0 = cell % cells, y0 = cell / cells;
     if (triangle) {
       add_element({{x0, y0}, {x0 + 1, y0}, {x0 + 1, y0 + 1}});
       add_element({{x0, y0}, {x0 + 1, y0 + 1}, {x0, y0 + 1}});
@@ -98,12 +166,7 @@ int spurious_shell_modes(const TElement& element, RuleKind kind) {
   Eigen::MatrixXd Kr(kept.size(), kept.size());
   for (std::size_t i = 0; i < kept.size(); ++i)
     for (std::size_t j = 0; j < kept.size(); ++j) Kr(i, j) = K(kept[i], kept[j]);
-  const Eigen::SelfAdjointEigenSolver<Eigen::MatrixXd> eigen(Kr, Eigen::EigenvaluesOnly);
-  const Eigen::VectorXd& values = eigen.eigenvalues();
-  const double largest = values.cwiseAbs().maxCoeff();
-  int zero = 0;
-  for (Eigen::Index k = 0; k < values.size(); ++k) zero += std::abs(values[k]) < 1e-9 * largest;
-  return std::max(0, zero - 6);
+  return modes_beyond_rigid(Kr);
 }
 
 std::vector<std::string> shell_warnings(const Model& model, const PreparedModel& prepared) {
@@ -123,6 +186,19 @@ std::vector<std::string> shell_warnings(const Model& model, const PreparedModel&
           "more elements, " +
           (key.first->node_count() == 9 ? "S8R or the fully integrated S9"
                                         : "S9 (the fully integrated 9-node Lagrange shell)"));
+  }
+  // A small reduced-integration mesh, checked whole, where the patch count saw nothing.
+  if (std::none_of(count_of.begin(), count_of.end(), [](const auto& entry) {
+        return spurious_shell_modes(*entry.first.first, entry.first.second) > 0;
+      })) {
+    const int modes = reduced_shell_mesh_modes(model, prepared);
+    if (modes > 0)
+      warnings.push_back(
+          "the mesh of reduced-integration shell elements (" + std::to_string(modes) +
+          " zero-energy modes beyond the rigid motions when assembled without supports, "
+          "checked whole as it has at most " + std::to_string(kWholeMeshLimit) +
+          " elements): where the supports do not restrain them the model is singular; use "
+          "more elements or the fully integrated types (S8, S9)");
   }
   // Shear locking of S8, per section: the most slender element and how many are warned of.
   struct Worst {

@@ -8,7 +8,10 @@
 // - spurious zero-energy modes: a flat 2x2 patch of the type (unit squares, t = 0.1) has more
 //   zero eigenvalues than its 6 rigid motions (S9R: 4, measured; the single S8R element's two do
 //   not survive in a patch): the mesh may carry them where the supports do not restrain them,
-//   which the solver then refuses as singular.
+//   which the solver then refuses as singular. Meshes of at most 16 elements whose type has
+//   spurious modes as a single element (S8R: 2, S9R) are also assembled whole, free of supports,
+//   and their own zero-energy modes counted: a single S8R element is warned of, which the 2x2
+//   patch does not show.
 #pragma once
 
 #include <string>
@@ -20,8 +23,8 @@ namespace styk::solver_detail {
 
 std::vector<std::string> shell_warnings(const Model& model, const PreparedModel& prepared);
 
-// Zero-energy modes beyond the rigid motions of a flat 2x2 patch of `element` integrated with
-// `kind`; 0 for non-shells.
-int spurious_shell_modes(const TElement& element, RuleKind kind);
+// Zero-energy modes beyond the rigid motions of a flat cells x cells patch of `element`
+// integrated with `kind` (the single element with cells = 1); 0 for non-shells.
+int spurious_shell_modes(const TElement& element, RuleKind kind, int cells = 2);
 
 }  // namespace styk::solver_detail

@@ -106,4 +106,35 @@ inline Vec3 solve_grid(const ShellGrid& g, const std::string& name, int i, int j
   return results.increments.back().U[node];
 }
 
+// A cantilever plate strip (length 1 along x, width b = 0.2, t = 0.01, E = 1e6, nu = 0, clamped
+// at x = 0) of nx x 2 elements under a uniform shear on its free edge, total P along z, spread
+// over the edge nodes with the element edge's consistent weights. `extra_step_lines` go into
+// the step after the load (output requests).
+inline ShellGrid cantilever_strip(const std::string& type, double P, int nx = 4,
+                                  const std::string& extra_step_lines = "") {
+  ShellGrid g;
+  g.type = type;
+  g.nx = nx;
+  g.ny = 2;
+  g.map = [](double s, double r) { return std::array<double, 3>{s, 0.2 * r, 0.0}; };
+  g.fixed = [](int i, int, int, int) {
+    return i == 0 ? std::vector<int>{1, 2, 3, 4, 5, 6} : std::vector<int>{};
+  };
+  g.thickness = 0.01;
+  g.young = 1e6;
+  g.poisson = 0.0;
+  const int p = grid_order(g), imax = p * g.nx, jmax = p * g.ny;
+  std::ostringstream load;
+  load.precision(17);
+  load << "*CLOAD\n";
+  for (int j = 0; j <= jmax; ++j) {  // consistent nodal shares of a uniform edge shear
+    const double share = p == 1 ? ((j == 0 || j == jmax) ? 0.5 : 1.0)
+                                : (j % 2 == 1 ? 2.0 / 3.0
+                                              : (j == 0 || j == jmax) ? 1.0 / 6.0 : 1.0 / 3.0);
+    load << grid_node(g, imax, j) << ", 3, " << P * share / g.ny << "\n";
+  }
+  g.load = load.str() + extra_step_lines;
+  return g;
+}
+
 }  // namespace styk::test

@@ -29,28 +29,7 @@ TEST(ShellSectionForces, CantileverStripTransverseShearEqualsTheEdgeShear) {
   register_builtin_elements(registry);
   const double P = 2.0, b = 0.2, Q = P / b;
   for (const char* type : {"S4", "S8R", "S9R", "STRI3"}) {
-    test::ShellGrid g;
-    g.type = type;
-    g.nx = 4;
-    g.ny = 2;
-    g.map = [b](double s, double r) { return std::array<double, 3>{s, b * r, 0.0}; };
-    g.fixed = [](int i, int, int, int) {
-      return i == 0 ? std::vector<int>{1, 2, 3, 4, 5, 6} : std::vector<int>{};
-    };
-    g.thickness = 0.01;
-    g.young = 1e6;
-    g.poisson = 0.0;
-    const int p = test::grid_order(g), imax = p * g.nx, jmax = p * g.ny;
-    std::ostringstream load;
-    load.precision(17);
-    load << "*CLOAD\n";
-    for (int j = 0; j <= jmax; ++j) {  // consistent nodal shares of a uniform edge shear
-      const double share = p == 1 ? ((j == 0 || j == jmax) ? 0.5 : 1.0)
-                                  : (j % 2 == 1 ? 2.0 / 3.0
-                                                : (j == 0 || j == jmax) ? 1.0 / 6.0 : 1.0 / 3.0);
-      load << test::grid_node(g, imax, j) << ", 3, " << P * share / g.ny << "\n";
-    }
-    g.load = load.str();
+    const test::ShellGrid g = test::cantilever_strip(type, P);
     const Model model = test::read_shell_deck(std::string("strip_") + type + ".inp",
                                               test::shell_grid_deck(g), registry);
     const Results results = run_static_analysis(model, registry, SolveOptions{}, nullptr, nullptr);

@@ -1,6 +1,7 @@
 // The shell warnings before solving (solver/src/shell_warnings.hpp, SPEC §7.3): a thin fully
 // integrated S8 plate warns with its measured slenderness and the remedies; the 2x2 rules' spurious
 // modes are counted on a flat patch and warned of; the locking-free types stay silent.
+#include <cstdio>
 #include <string>
 #include <vector>
 
@@ -66,6 +67,50 @@ TEST(ShellWarnings, SpuriousModesOfTheReducedRulesAreCounted) {
       1);
   for (const char* type : {"S4", "S8", "S8R", "S9", "STRI3"})
     EXPECT_EQ(count_containing(plate_warnings(type, 0.01), "zero-energy modes"), 0) << type;
+}
+
+// Small meshes of reduced-integration shells are checked whole (at most 16 elements): the
+// single S8R element's two spurious modes, which the 2x2 patch does not show, are warned of on
+// a one-element plate clamped on one edge (it solves: the clamp restrains them); strips and
+// patches of S8R stay silent, as do the types without spurious modes.
+std::vector<std::string> clamped_mesh_warnings(const std::string& type, int nx, int ny) {
+  ElementRegistry registry;
+  register_builtin_elements(registry);
+  test::ShellGrid g;
+  g.type = type;
+  g.nx = nx;
+  g.ny = ny;
+  g.map = [nx](double s, double r) { return std::array<double, 3>{0.25 * nx * s, 0.25 * r, 0.0}; };
+  g.fixed = [](int i, int, int, int) {
+    return i == 0 ? std::vector<int>{1, 2, 3, 4, 5, 6} : std::vector<int>{};
+  };
+  g.thickness = 0.01;
+  g.young = 10.92e5;
+  g.load = "*DLOAD\nSHELL, P, 10.\n";
+  AnalysisReport report;
+  try {
+    test::solve_grid(g, "mesh_" + type + "_" + std::to_string(nx) + "x" + std::to_string(ny) +
+                            ".inp",
+                     0, 0, registry, &report);
+  } catch (const InputError& e) {
+    report.warnings.push_back(std::string("refused: ") + e.what());
+  }
+  for (const std::string& w : report.warnings) std::printf("%s %dx%d: %s\n", type.c_str(), nx, ny, w.c_str());
+  return report.warnings;
+}
+
+TEST(ShellWarnings, SmallReducedMeshesAreCheckedWhole) {
+  EXPECT_EQ(count_containing(clamped_mesh_warnings("S8R", 1, 1),
+                             "(2 zero-energy modes beyond the rigid motions when assembled"),
+            1);
+  // Two elements side by side restrain each other's modes already (measured: none in 2 x 1,
+  // 4 x 1 and 4 x 2).
+  for (const int nx : {2, 4})
+    EXPECT_EQ(count_containing(clamped_mesh_warnings("S8R", nx, 1), "zero-energy modes"), 0) << nx;
+  EXPECT_EQ(count_containing(clamped_mesh_warnings("S8R", 4, 2), "zero-energy modes"), 0);
+  for (const char* type : {"S4R", "S8", "S9", "STRI3"})
+    EXPECT_EQ(count_containing(clamped_mesh_warnings(type, 1, 1), "zero-energy modes"), 0)
+        << type;
 }
 
 }  // namespace

@@ -231,6 +231,14 @@ class DatPrinter {
     header(forces ? "section forces (elem, integ.pnt.,sf1,sf2,sf3)"
                   : "section moments (elem, integ.pnt.,sm1,sm2,sm3)",
            set, inc.total_time);
+    print_station_rows(elements, inc, field);
+    if (forces) print_transverse_shear(set, elements, inc);
+  }
+
+  // One row per station of `elements`: element id, 1-based station, the station's values.
+  template <typename Row>
+  void print_station_rows(const std::vector<int>& elements, const IncrementResult& inc,
+                          const std::vector<Row>& field) {
     for (const int e : elements)
       for (int p = inc.station_offset[e]; p < inc.station_offset[e + 1]; ++p) {
         write_id(model_.elements[e].id);
@@ -240,6 +248,24 @@ class DatPrinter {
         for (const double v : field[p]) out_ << ' ' << io::fortran_e13_6(v);
         out_ << '\n';
       }
+  }
+
+  // The shells' transverse shear forces Q13, Q23 (Abaqus' SF4, SF5; Styk's block: ccx prints no
+  // section forces) after the SF block, for the set's shell elements, in the SF block's layout
+  // with two values.
+  void print_transverse_shear(const std::string& set, const std::vector<int>& elements,
+                              const IncrementResult& inc) {
+    std::vector<int> shells;
+    for (const int e : elements) {
+      const int section = model_.elements[e].section;
+      if (section >= 0 && section < static_cast<int>(model_.sections.size()) &&
+          model_.sections[section].shell && inc.station_offset[e + 1] > inc.station_offset[e])
+        shells.push_back(e);
+    }
+    if (shells.empty() || inc.SFQ.size() != static_cast<std::size_t>(inc.station_offset.back()))
+      return;
+    header("transverse shear forces (elem, integ.pnt.,sf4,sf5)", set, inc.total_time);
+    print_station_rows(shells, inc, inc.SFQ);
   }
 
   // POSITION=CENTROIDAL: one row per element, no integration-point column.

@@ -95,7 +95,7 @@ RowsOf rows_of(const std::string& group, const std::string& name, std::uint64_t 
   if (name == "U" || name == "RF" || name == "UR" || name == "RM" || name == "value" ||
       name == "reaction" || name == "flux_nodal")
     return RowsOf::Node;
-  if (name == "SF" || name == "SM") return RowsOf::Station;
+  if (name == "SF" || name == "SM" || name == "SFQ") return RowsOf::Station;
   if (name == "S" || name == "E" || name == "gradient" || name == "flux")
     return RowsOf::IntegrationPoint;
   for (const schema::RecoveredField& field : schema::kRecoveredFields)

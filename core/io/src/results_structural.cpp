@@ -60,6 +60,9 @@ std::string structural_size_error(const Model& model, const IncrementResult& inc
       return std::string(field.name) + " has " + std::to_string(rows) + " rows for " +
              std::to_string(expected) + (field.per_node ? " nodes" : " beam stations");
   }
+  if (!inc.SFQ.empty() && inc.SFQ.size() != stations(inc))
+    return "SFQ has " + std::to_string(inc.SFQ.size()) + " rows for " +
+           std::to_string(stations(inc)) + " stations";
   return {};
 }
 
@@ -72,6 +75,9 @@ void write_structural(hid_t increment, const IncrementResult& inc) {
     const std::vector<Vec3>& rows = inc.*field.member;
     if (!rows.empty()) write_vectors(increment, field.name, rows);
   }
+  if (!inc.SFQ.empty())
+    h5::write_dataset(increment, "SFQ", H5T_IEEE_F64LE, H5T_NATIVE_DOUBLE, inc.SFQ[0].data(),
+                      inc.SFQ.size(), 2);
 }
 
 void read_structural(hid_t increment, const std::string& label, const Model& model,
@@ -98,6 +104,14 @@ void read_structural(hid_t increment, const std::string& label, const Model& mod
     out.resize(rows);
     for (std::uint64_t i = 0; i < rows; ++i)
       out[i] = {flat[3 * i], flat[3 * i + 1], flat[3 * i + 2]};
+  }
+  if (h5::has_link(increment, "SFQ")) {  // shells' transverse shear forces (Q13, Q23)
+    const std::uint64_t rows = h5::read_doubles(increment, "SFQ", 2, flat);
+    if (rows != stations(inc))
+      corrupt(label + "/SFQ has " + std::to_string(rows) + " rows, expected " +
+              std::to_string(stations(inc)));
+    inc.SFQ.resize(rows);
+    for (std::uint64_t i = 0; i < rows; ++i) inc.SFQ[i] = {flat[2 * i], flat[2 * i + 1]};
   }
 }
 

@@ -15,7 +15,7 @@
 namespace styk::io {
 
 // Datasets "UR", "RM" (nodes x 3), "station_offsets" (elements + 1), "SF", "SM" (stations x 3)
-// under `increment` when the increment holds them.
+// and "SFQ" (stations x 2: shells' Q13, Q23) under `increment` when the increment holds them.
 void write_structural(hid_t increment, const IncrementResult& inc);
 
 // Reads them back if present; sizes are checked against the model.

@@ -297,6 +297,24 @@ VtuExportSummary write_vtu(const std::string& path, const Model& model,
         writer.array(name, 3, flatten(means));
       }
     }
+    // Shells' transverse shear forces Q13, Q23, the mean over the element's stations (NaN at
+    // elements without them; beams carry theirs in SF).
+    if (inc != nullptr && !inc->SFQ.empty()) {
+      std::vector<double> means;
+      means.reserve(2 * exported.size());
+      for (const int e : exported) {
+        const int first = inc->station_offset[e], last = inc->station_offset[e + 1];
+        const TElement* type = registry.find(model.elements[e].type);
+        const bool shell = last > first && type != nullptr &&
+                           type->section_measure() == SectionMeasure::Shell;
+        double q[2] = {0.0, 0.0};
+        for (int p = first; shell && p < last; ++p)
+          for (int k = 0; k < 2; ++k) q[k] += inc->SFQ[p][k];
+        for (const double v : q)
+          means.push_back(shell ? v / (last - first) : std::numeric_limits<double>::quiet_NaN());
+      }
+      writer.array("SFQ", 2, means, {"Q13", "Q23"});
+    }
     out << "      </CellData>\n";
 
     out << "      <Points>\n";

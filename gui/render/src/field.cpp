@@ -289,6 +289,7 @@ std::vector<std::string> field_names() {
   for (const std::string& name : contact_field_names()) names.push_back(name);
   for (const char* v : {"SF", "SM"})
     for (const char* s : {"1", "2", "3"}) names.push_back(std::string(v) + "." + s);
+  for (const char* s : {"SF.4", "SF.5"}) names.push_back(s);  // shells' Q13, Q23
   names.push_back("ERR");
   for (const char* v : {"NT", "RFL", "EPOT", "RECUR"}) names.push_back(v);
   for (const char* v : {"HFL", "ECD"})
@@ -300,13 +301,18 @@ namespace {
 
 // Section forces SF or moments SM of beams and shells (docs/results.md): component 1..3 per
 // station, drawn over the beams' axes and the shells' surfaces like the fibre tensors.
+ScalarField shell_shear_field(const Model& model, const IncrementResult& inc, int component);
+
 ScalarField section_resultant_field(const Model& model, const IncrementResult& inc,
                                     const std::string& quantity, const std::string& suffix) {
+  if (quantity == "SF" && (suffix == "4" || suffix == "5"))
+    return shell_shear_field(model, inc, suffix == "4" ? 0 : 1);
   const int component = suffix == "1" ? 0 : suffix == "2" ? 1 : suffix == "3" ? 2 : -1;
   if (component < 0)
     throw InputError({}, "unknown field '" + quantity + "." + suffix + "'; " + quantity +
                              " has the components " + quantity + ".1, " + quantity + ".2, " +
-                             quantity + ".3");
+                             quantity + ".3" +
+                             (quantity == "SF" ? " (shells also SF.4, SF.5)" : ""));
   const std::vector<Vec3>& data = quantity == "SF" ? inc.SF : inc.SM;
   if (data.empty() || inc.station_offset.size() != model.elements.size() + 1)
     throw InputError({}, "step " + std::to_string(inc.step) + " increment " +
@@ -329,6 +335,38 @@ ScalarField section_resultant_field(const Model& model, const IncrementResult& i
   field.tensor_value = [](const Tensor6& t) { return t[0]; };
   if (component > 0)
     for (Tensor6& t : field.point_tensors) t[0] = t[component];
+  field.station_values = true;
+  return field;
+}
+
+// SF.4 / SF.5: the shells' transverse shear forces Q13, Q23 per station, defined at the nodes
+// of shell elements alone.
+ScalarField shell_shear_field(const Model& model, const IncrementResult& inc, int component) {
+  const std::string name = component == 0 ? "SF.4" : "SF.5";
+  if (inc.SFQ.empty() || inc.station_offset.size() != model.elements.size() + 1)
+    throw InputError({}, "step " + std::to_string(inc.step) + " increment " +
+                             std::to_string(inc.increment) + " holds no " + name +
+                             " (transverse shear forces of shells); it holds: " +
+                             drawable_data(model, inc));
+  ScalarField field;
+  field.name = name;
+  field.description = name + (component == 0 ? ", transverse shear force Q13"
+                                             : ", transverse shear force Q23");
+  field.location = FieldLocation::Node;
+  field.values.assign(model.coords.size(), 0.0);
+  field.defined.assign(model.coords.size(), 0);
+  for (std::size_t e = 0; e < model.elements.size(); ++e) {
+    const int section = model.elements[e].section;  // shells keep theirs in the results file
+    const bool shell = inc.station_offset[e + 1] > inc.station_offset[e] && section >= 0 &&
+                       section < static_cast<int>(model.sections.size()) &&
+                       model.sections[section].shell;
+    if (!shell) continue;
+    const int* nodes = model.element_nodes(static_cast<int>(e));
+    for (int k = 0; k < model.elements[e].node_count; ++k) field.defined[nodes[k]] = 1;
+  }
+  field.point_offset.assign(inc.station_offset.begin(), inc.station_offset.end());
+  for (const auto& q : inc.SFQ) field.point_tensors.push_back(Tensor6{q[component], 0, 0, 0, 0, 0});
+  field.tensor_value = [](const Tensor6& t) { return t[0]; };
   field.station_values = true;
   return field;
 }

@@ -103,6 +103,10 @@ struct IncrementResult {
   std::vector<int> station_offset;
   std::vector<Vec3> SF;
   std::vector<Vec3> SM;
+  // Shells' transverse shear forces per unit length Q13 = ∫σ13 dz, Q23 = ∫σ23 dz in the lamina
+  // axes (Abaqus' SF4, SF5 of a shell) at the same stations; zero at beam stations (a beam's
+  // shear forces are SF2, SF3). Empty in models without shell elements.
+  std::vector<std::array<double, 2>> SFQ;
   // Integration-point values: element e owns points ip_offset[e] .. ip_offset[e+1]-1.
   std::vector<int> ip_offset;
   std::vector<Tensor6> S;       // stress
