@@ -4,6 +4,7 @@ add_executable(styk
   src/exit_codes.cpp
   src/stderr_progress.cpp
   src/command_solve.cpp
+  src/mpi_launcher.cpp
   src/command_info.cpp
   src/command_export.cpp
   src/command_check.cpp

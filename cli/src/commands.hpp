@@ -13,6 +13,7 @@ struct SolveArgs {
   int threads = 0;
   double memory_limit_gb = 0.0;  // 0: 80 % of the physical memory
   bool quiet = false;
+  int ranks = 0;  // > 1: start the MPI runner with this many ranks (mpi_launcher.hpp)
 };
 int solve_command(const SolveArgs& args);
 

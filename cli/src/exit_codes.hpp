@@ -12,6 +12,7 @@ enum ExitCode : int {
   kInternalError = 3,  // anything else: a bug in Styk
   kUnverifiable = 4,   // `styk check`: a results file written before checksums, otherwise sound
   kResourceLimit = 5,  // ResourceLimitError or std::bad_alloc: the model does not fit in memory
+  kRunEnvironment = 6,  // a distributed run could not start (no MPI runner) or a rank died
 };
 
 // Runs a command, turning the exception types of Styk into exit codes and one message on stderr.

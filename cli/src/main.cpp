@@ -34,6 +34,10 @@ int main(int argc, char** argv) {
                         "above it auto switches to the iterative solver, cholmod stops")
       ->check(CLI::PositiveNumber);
   solve_cmd->add_flag("-q,--quiet", solve.quiet, "No progress lines on stderr");
+  solve_cmd->add_option("--ranks", solve.ranks,
+                        "Solve across N MPI ranks on this machine: starts mpirun (or $STYK_MPIRUN) "
+                        "itself; under mpirun the runner's -n decides")
+      ->check(CLI::NonNegativeNumber);
 
   InfoArgs info;
   CLI::App* info_cmd = app.add_subcommand("info", "Read an .inp model and print counts, sets, materials, steps, DOFs");
