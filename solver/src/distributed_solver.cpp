@@ -32,7 +32,9 @@ class DistributedSolver final : public LinearSolver {
     system_.reset();
     system_ = std::make_unique<DistributedSystem>(rows_, view, rows_with_values(view), partition,
                                                   std::move(settings), context_.phases);
-    // PETSc holds its own copy; K's values stay pristine for a later step.
+    // PETSc holds its own copy of this rank's rows: free K's values before the factor or the
+    // multigrid hierarchy takes its memory (a later step that needs them reassembles).
+    K.release_values();
   }
 
   std::vector<double> solve(const std::vector<double>& f,

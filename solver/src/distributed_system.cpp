@@ -8,6 +8,7 @@
 #include <cstdio>
 #include <stdexcept>
 
+#include "ksp_progress.hpp"
 #include "petsc_runtime.hpp"
 
 namespace styk::solver_detail {
@@ -26,6 +27,8 @@ double seconds_since(std::chrono::steady_clock::time_point start) {
 }  // namespace
 
 struct DistributedSystem::Petsc {
+  explicit Petsc(const PhaseRecorder& phases) : progress(phases) {}
+  KspProgress progress;
   Mat A = nullptr;
   KSP ksp = nullptr;
   Vec b = nullptr;
@@ -86,6 +89,21 @@ void configure_solver(KSP ksp, const DistributedSettings& settings) {
   petsc_check(KSPSetFromOptions(ksp), "KSPSetFromOptions");
 }
 
+// One line per rank on rank 0's progress: its rows, the rows its elements gave and how long adding
+// them took (how evenly the work is split).
+void report_rank_shares(const RankRows& rows, int contributed, double seconds,
+                        const PhaseRecorder& phases) {
+  const double mine[3] = {static_cast<double>(rows.end() - rows.begin()),
+                          static_cast<double>(contributed), seconds};
+  std::vector<double> all(3 * static_cast<std::size_t>(rows.size));
+  MPI_Gather(mine, 3, MPI_DOUBLE, all.data(), 3, MPI_DOUBLE, 0, PETSC_COMM_WORLD);
+  if (rows.rank != 0) return;
+  for (int r = 0; r < rows.size; ++r)
+    phases.info(format("rank %.0f: owns %.0f rows, ", r, all[3 * r], 0.0) +
+                format("its elements gave %.0f rows, added in %.2f s", all[3 * r + 1],
+                       all[3 * r + 2]));
+}
+
 void attach_rigid_body_modes(Mat A, const RankRows& rows, const std::vector<double>& coordinates) {
   Vec xyz = nullptr;
   petsc_check(VecCreateMPI(PETSC_COMM_WORLD, rows.end() - rows.begin(), PETSC_DETERMINE, &xyz),
@@ -109,7 +127,7 @@ DistributedSystem::DistributedSystem(const RankRows& rows, const CsrView& K,
                                      const std::vector<int>& contributed_rows,
                                      const DofPartition& partition, DistributedSettings settings,
                                      const PhaseRecorder& phases)
-    : petsc_(std::make_unique<Petsc>()),
+    : petsc_(std::make_unique<Petsc>(phases)),
       rows_(rows),
       partition_(partition),
       settings_(std::move(settings)),
@@ -159,6 +177,8 @@ DistributedSystem::DistributedSystem(const RankRows& rows, const CsrView& K,
       petsc_check(MatSetValues(A, 1, &global_row, 1, &global_row, &diagonal_, ADD_VALUES),
                   "MatSetValues");
     }
+  report_rank_shares(rows_, static_cast<int>(contributed_rows.size()), seconds_since(start),
+                     phases_);
   petsc_check(MatAssemblyBegin(A, MAT_FINAL_ASSEMBLY), "MatAssemblyBegin");
   petsc_check(MatAssemblyEnd(A, MAT_FINAL_ASSEMBLY), "MatAssemblyEnd");
   petsc_check(MatSetOption(A, MAT_SYMMETRIC, PETSC_TRUE), "MatSetOption");
@@ -169,6 +189,7 @@ DistributedSystem::DistributedSystem(const RankRows& rows, const CsrView& K,
 
   petsc_check(KSPCreate(PETSC_COMM_WORLD, &petsc_->ksp), "KSPCreate");
   petsc_check(KSPSetOperators(petsc_->ksp, A, A), "KSPSetOperators");
+  if (!settings_.direct) petsc_check(petsc_->progress.attach(petsc_->ksp), "KSPMonitorSet");
   configure_solver(petsc_->ksp, settings_);
   const auto setup_start = std::chrono::steady_clock::now();
   const PetscErrorCode setup = KSPSetUp(petsc_->ksp);
@@ -227,6 +248,7 @@ std::vector<double> DistributedSystem::solve(const std::vector<double>& f,
   iterations_ = 0;
   if (b_norm > 0.0) {
     const auto start = std::chrono::steady_clock::now();
+    petsc_->progress.start(b_norm);
     const PetscErrorCode code = KSPSolve(petsc_->ksp, b, x);
     KSPConvergedReason reason = KSP_CONVERGED_ITERATING;
     PetscInt its = 0;
