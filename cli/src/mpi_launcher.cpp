@@ -57,7 +57,8 @@ std::vector<std::string> runner_command(const SolveArgs& args, const std::string
   return command;
 }
 
-// The runner's exit status: the code it returned, or 128 + the signal that ended it.
+// The runner's exit status: the code it returned, or 128 + the signal that ended it (the shell's
+// convention, which Open MPI's runner also follows for a rank a signal killed).
 int run_and_wait(const std::vector<std::string>& command) {
   std::vector<char*> argv;
   for (const std::string& word : command) argv.push_back(const_cast<char*>(word.c_str()));
@@ -102,9 +103,9 @@ int launch_ranks(const SolveArgs& args) {
   if (status == kOk || status == kBadInput || status == kNotConverged || status == kResourceLimit)
     return status;
   remove_partial_results(args);
-  std::cerr << "styk: the distributed run failed: " << runner << " ended with "
-            << (status > 128 ? "signal " + std::to_string(status - 128)
-                             : "exit code " + std::to_string(status))
+  // Open MPI's runner passes on 128 + the signal that killed a rank as its own exit status.
+  std::cerr << "styk: the distributed run failed: " << runner << " ended with status " << status
+            << (status > 128 ? " (signal " + std::to_string(status - 128) + ")" : "")
             << " (a rank died, or MPI could not start its " << args.ranks
             << " ranks); no results were written\n";
   return kRunEnvironment;
