@@ -5,6 +5,7 @@ add_executable(styk
   src/stderr_progress.cpp
   src/json_progress.cpp
   src/command_solve.cpp
+  src/mpi_launcher.cpp
   src/command_info.cpp
   src/command_export.cpp
   src/command_check.cpp

@@ -8,7 +8,7 @@ set -euo pipefail
 packages=(
   cmake ninja-build g++ pkg-config ccache make
   libeigen3-dev libsuitesparse-dev libopenblas-dev libmetis-dev
-  petsc-dev
+  petsc-dev openmpi-bin
   libhdf5-dev libcli11-dev libfmt-dev nlohmann-json3-dev
   libgtest-dev
   libosmesa6-dev libgl-dev libglx-dev libpng-dev libstb-dev zlib1g-dev qt6-base-dev libqt6opengl6-dev qt6-charts-dev

@@ -5,10 +5,14 @@
 
 #include <fmt/core.h>
 
+#include <algorithm>
+#include <thread>
+
 #include "atomic_file.hpp"
 #include "commands.hpp"
 #include "exit_codes.hpp"
 #include "json_progress.hpp"
+#include "mpi_launcher.hpp"
 #include "output_paths.hpp"
 #include "registry_setup.hpp"
 #include "stderr_progress.hpp"
@@ -16,6 +20,7 @@
 #include "styk/io/dat_writer.hpp"
 #include "styk/io/results_file.hpp"
 #include "styk/solver/analysis.hpp"
+#include "styk/solver/mpi_world.hpp"
 
 namespace styk::cli {
 namespace {
@@ -31,16 +36,31 @@ double seconds_since(std::chrono::steady_clock::time_point start) {
   return std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
 }
 
-}  // namespace
+// Progress of the ranks other than 0: rank 0 speaks for the run.
+class SilentProgress final : public ProgressSink {
+ public:
+  void begin(const std::string&) override {}
+  void end(const std::string&, double) override {}
+  void info(const std::string&) override {}
+  void warning(const std::string&) override {}
+};
 
-int solve_command(const SolveArgs& args) {
+// Threads per rank: the machine's cores shared by the ranks the runner placed on it.
+int threads_per_rank(int requested) {
+  if (requested > 0) return requested;
+  const int cores = std::max(1, static_cast<int>(std::thread::hardware_concurrency()));
+  return std::max(1, cores / mpi_ranks_on_this_machine());
+}
+
+int solve_here(const SolveArgs& args, const MpiWorld& world) {
   const bool json = args.progress == ProgressFormat::JsonLines;
-  std::unique_ptr<ProgressSink> sink;
+  std::unique_ptr<ProgressSink> rank0_progress;
   if (json)
-    sink = std::make_unique<JsonLinesProgress>();
+    rank0_progress = std::make_unique<JsonLinesProgress>();
   else
-    sink = std::make_unique<StderrProgress>(args.quiet);
-  ProgressSink& progress = *sink;
+    rank0_progress = std::make_unique<StderrProgress>(args.quiet);
+  SilentProgress silent;
+  ProgressSink& progress = world.rank == 0 ? *rank0_progress : static_cast<ProgressSink&>(silent);
   PluginLibraries libraries;  // outlives the registry: plug-in code lives in it
   const ElementRegistry registry = make_registry(libraries);
 
@@ -52,11 +72,13 @@ int solve_command(const SolveArgs& args) {
                             model.element_count(), model.steps.size()));
 
   SolveOptions options;
-  options.threads = args.threads;
+  options.threads = world.size > 1 ? threads_per_rank(args.threads) : args.threads;
+  options.distributed = world.size > 1;
   options.force = parse_solver(args.solver);
   options.memory_limit_gb = args.memory_limit_gb;
   AnalysisReport report;
   const Results results = run_static_analysis(model, registry, options, &progress, &report);
+  if (world.rank != 0) return kOk;  // every rank holds the results; rank 0 writes them
 
   std::error_code ec;
   std::filesystem::create_directories(args.output_dir, ec);
@@ -84,6 +106,37 @@ int solve_command(const SolveArgs& args) {
   std::cout << fmt::format("solved {} dofs with {} in {} step(s)\n", report.dofs,
                            report.linear_solver, model.steps.size());
   return kOk;
+}
+
+}  // namespace
+
+int solve_command(const SolveArgs& args) {
+  const bool under_runner = started_by_mpi_runner();
+  if (args.ranks > 1 && !under_runner) return launch_ranks(args);
+  const MpiWorld world = under_runner ? join_mpi_world() : MpiWorld{};
+  if (args.ranks > 1 && args.ranks != world.size)
+    throw InputError({}, "--ranks " + std::to_string(args.ranks) + " under an MPI runner that "
+                             "started " + std::to_string(world.size) +
+                             " ranks: the runner's -n decides (drop --ranks)");
+  if (world.size == 1) return solve_here(args, world);
+  // Errors every rank meets together (the same deck, collective solves) are reported once, by
+  // rank 0; an error of one rank alone ends the whole run, so no rank waits for it forever.
+  try {
+    return solve_here(args, world);
+  } catch (const InputError&) {
+    if (world.rank == 0) throw;
+    return kBadInput;
+  } catch (const NotConvergedError&) {
+    if (world.rank == 0) throw;
+    return kNotConverged;
+  } catch (const ResourceLimitError&) {
+    if (world.rank == 0) throw;
+    return kResourceLimit;
+  } catch (const std::exception& e) {
+    std::cerr << "rank " << world.rank << " of " << world.size << ": " << e.what()
+              << " (ending the distributed run)\n";
+    abort_mpi_world(kInternalError);
+  }
 }
 
 }  // namespace styk::cli

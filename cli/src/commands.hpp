@@ -18,6 +18,7 @@ struct SolveArgs {
   double memory_limit_gb = 0.0;  // 0: 80 % of the physical memory
   bool quiet = false;
   ProgressFormat progress = ProgressFormat::Text;
+  int ranks = 0;  // > 1: start the MPI runner with this many ranks (mpi_launcher.hpp)
 };
 int solve_command(const SolveArgs& args);
 

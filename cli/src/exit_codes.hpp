@@ -12,6 +12,7 @@ enum ExitCode : int {
   kInternalError = 3,  // anything else: a bug in Styk
   kUnverifiable = 4,   // `styk check`: a results file written before checksums, otherwise sound
   kResourceLimit = 5,  // ResourceLimitError or std::bad_alloc: the model does not fit in memory
+  kRunEnvironment = 6,  // a distributed run could not start (no MPI runner) or a rank died
 };
 
 // How a failure is told on stderr: one line for people ("file:line: message", "not converged:

@@ -45,6 +45,10 @@ int main(int argc, char** argv) {
                    "Progress on stderr: text (for people) or json (one JSON object per line, "
                    "docs/cli.md \"Progress protocol\")")
       ->check(CLI::IsMember({"text", "json"}));
+  solve_cmd->add_option("--ranks", solve.ranks,
+                        "Solve across N MPI ranks on this machine: starts mpirun (or $STYK_MPIRUN) "
+                        "itself; under mpirun the runner's -n decides")
+      ->check(CLI::NonNegativeNumber);
 
   InfoArgs info;
   CLI::App* info_cmd = app.add_subcommand("info", "Read an .inp model and print counts, sets, materials, steps, DOFs");

@@ -10,6 +10,7 @@
 #include "body_loads.hpp"
 #include "constraint_lowering.hpp"
 #include "contact_analysis.hpp"
+#include "distributed_solver.hpp"
 #include "element_states.hpp"
 #include "linear_solver.hpp"
 #include "mechanism_check.hpp"
@@ -81,7 +82,10 @@ LinearSolverKind choose_solver(const SolveOptions& options, const Step& step, lo
 }
 
 std::unique_ptr<LinearSolver> make_solver(LinearSolverKind kind, const SolverContext& context,
-                                          const SolveOptions& options) {
+                                          const SolveOptions& options, const RankShare* share) {
+  if (share != nullptr)
+    return make_distributed_solver(context, share->rows, kind != LinearSolverKind::Iterative,
+                                   options.iterative_tolerance);
   if (kind == LinearSolverKind::Iterative)
     return make_gamg_solver(context, options.iterative_tolerance);
   return make_cholmod_solver(context);
@@ -108,6 +112,9 @@ Results run_static_analysis(const Model& model, const ElementRegistry& registry,
   if (has_scalar_field_steps(model))
     return run_scalar_field_analysis(model, registry, options, progress, report);
   // Contact pairs make the analysis nonlinear: load increments and the active-set iteration.
+  if (!model.contact_pairs.empty() && options.distributed)
+    throw InputError(SourceLoc{model.source, 0},
+                     "contact pairs are not solved distributed yet: run without mpirun / --ranks");
   if (!model.contact_pairs.empty())
     return run_contact_analysis(model, registry, options, progress, report);
   if (report != nullptr) *report = AnalysisReport{};
@@ -134,6 +141,11 @@ Results run_static_analysis(const Model& model, const ElementRegistry& registry,
   }
 
   // Extrapolation operators per element type, built once for every step (SPEC §5 averaging).
+  // A distributed run: this rank's rows and elements (every rank holds the whole model).
+  std::optional<RankShare> share;
+  if (options.distributed) share = share_of_rank(model, prepared, join_mpi_world());
+  const std::vector<char>* owned_elements = share ? &share->owns_element : nullptr;
+
   const StressAveraging averaging(model, prepared.formulation, prepared.rule_kind);
 
   std::unique_ptr<StiffnessMatrix> K;
@@ -155,7 +167,7 @@ Results run_static_analysis(const Model& model, const ElementRegistry& registry,
   stiffness_states.emplace(states_of(0));
   auto assemble = [&] {
     const PhaseRecorder::Scope phase(phases, "assemble");
-    assemble_stiffness(model, prepared, *stiffness_states, *K, threads);
+    assemble_stiffness(model, prepared, *stiffness_states, *K, threads, owned_elements);
     constraints.apply(*K);
   };
   assemble();
@@ -167,7 +179,7 @@ Results run_static_analysis(const Model& model, const ElementRegistry& registry,
   auto set_up_solver = [&](LinearSolverKind kind, const std::vector<int>& prescribed) {
     solver.reset();  // drops any view of K's arrays before K is reassembled
     if (!K->pristine()) assemble();
-    solver = make_solver(kind, context, options);
+    solver = make_solver(kind, context, options, share ? &*share : nullptr);
     solver->prepare(*K, partition_dofs(prepared.active_dofs(), prescribed));
     solver_kind = kind;
     solver_prescribed = prescribed;
@@ -208,7 +220,7 @@ Results run_static_analysis(const Model& model, const ElementRegistry& registry,
       } catch (const FactorTooLarge& too_large) {
         const bool automatic = options.force == LinearSolverKind::Automatic &&
                                step.procedure.solver == LinearSolverKind::Automatic;
-        if (!automatic || !kHaveIterativeSolver || !constraints.empty() || prepared.has_rotations())
+        if (!automatic || share || !kHaveIterativeSolver || !constraints.empty() || prepared.has_rotations())
           throw;
         phases.info(std::string(too_large.what()) + "; switching to the iterative solver");
         set_up_solver(LinearSolverKind::Iterative, known);

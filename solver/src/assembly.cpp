@@ -22,7 +22,8 @@ void element_geometry(const Model& model, int e, ElementGeometry& geometry) {
 }
 
 void assemble_stiffness(const Model& model, const PreparedModel& prepared,
-                        const ElementStates& states, StiffnessMatrix& K, int threads) {
+                        const ElementStates& states, StiffnessMatrix& K, int threads,
+                        const std::vector<char>* owned) {
   threads = resolve_threads(threads);
   std::vector<double>& values = K.values();
   values.assign(static_cast<std::size_t>(K.nonzeros()), 0.0);
@@ -44,6 +45,7 @@ void assemble_stiffness(const Model& model, const PreparedModel& prepared,
       Scratch& s = scratch[worker];
       for (int i = begin; i < end; ++i) {
         const int e = colouring.order[first + i];
+        if (owned != nullptr && !(*owned)[e]) continue;
         element_geometry(model, e, s.geometry);
         const ElementOptions options{model.sections[model.elements[e].section].selective_volumetric};
         prepared.formulation[e]->stiffness(s.geometry, states.stiffness_law(e), prepared.rule_kind[e],

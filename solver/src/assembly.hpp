@@ -17,9 +17,11 @@ namespace styk::solver_detail {
 void element_geometry(const Model& model, int e, ElementGeometry& geometry);
 
 // Overwrites K's values with the assembled stiffness (full integration) of the elements in the
-// material state `states` and marks it pristine.
+// material state `states` and marks it pristine. With `owned` (per element) only the elements it
+// marks are assembled: a rank's part of a distributed stiffness.
 void assemble_stiffness(const Model& model, const PreparedModel& prepared,
-                        const ElementStates& states, StiffnessMatrix& K, int threads);
+                        const ElementStates& states, StiffnessMatrix& K, int threads,
+                        const std::vector<char>* owned = nullptr);
 
 // External forces on all active dofs: concentrated loads plus consistent pressure loads.
 std::vector<double> assemble_loads(const Model& model, const PreparedModel& prepared,

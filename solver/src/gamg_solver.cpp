@@ -10,6 +10,7 @@
 #include <cstdio>
 #include <stdexcept>
 
+#include "ksp_progress.hpp"
 #include "linear_solver.hpp"
 #include "parallel.hpp"
 #include "petsc_runtime.hpp"
@@ -105,7 +106,7 @@ PetscErrorCode parallel_product_mult(Mat shell, Vec x, Vec y) {
 class GamgSolver final : public LinearSolver {
  public:
   GamgSolver(const SolverContext& context, double tolerance)
-      : context_(context), tolerance_(tolerance) {
+      : context_(context), tolerance_(tolerance), progress_(context_.phases) {
     PetscRuntime::ensure();
   }
 
@@ -153,6 +154,7 @@ class GamgSolver final : public LinearSolver {
     petsc_check(PCGAMGSetNSmooths(pc, 1), "PCGAMGSetNSmooths");
     PetscReal threshold[] = {kThreshold};
     petsc_check(PCGAMGSetThreshold(pc, threshold, 1), "PCGAMGSetThreshold");
+    petsc_check(progress_.attach(ksp), "KSPMonitorSet");
     petsc_check(KSPSetFromOptions(ksp), "KSPSetFromOptions");
     petsc_check(KSPSetUp(ksp), "KSPSetUp (GAMG set-up)");
     PetscInt levels = 0;
@@ -179,6 +181,7 @@ class GamgSolver final : public LinearSolver {
     iterations_ = 0;
     if (b_norm > 0.0) {
       const auto start = std::chrono::steady_clock::now();
+      progress_.start(b_norm);
       petsc_check(KSPSolve(ksp_.get(), b.get(), x.get()), "KSPSolve");
       const double seconds =
           std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
@@ -270,6 +273,7 @@ class GamgSolver final : public LinearSolver {
 
   SolverContext context_;
   double tolerance_;
+  KspProgress progress_;
   ParallelProduct product_;
   PetscMat A_;         // wraps the StiffnessMatrix arrays; destroyed before them by contract
   PetscMat operator_;  // shell over the same arrays, multithreaded product

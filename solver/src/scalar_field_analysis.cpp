@@ -11,6 +11,7 @@
 #include "phase_recorder.hpp"
 #include "scalar_element.hpp"
 #include "scalar_field_model.hpp"
+#include "scalar_linear_solve.hpp"
 
 namespace styk::solver_detail {
 namespace {
@@ -69,7 +70,7 @@ Eigen::VectorXd applied_flows(const Model& model, const ScalarFieldModel& prepar
 }
 
 // Solves K phi = f + r with phi prescribed on `conditions.prescribed` (r: reactions there).
-class ScalarSolve {
+class ScalarSolve final : public ScalarLinearSolve {
  public:
   ScalarSolve(const SparseMatrix& K, const std::map<int, double>& prescribed,
               const SourceLoc& where)
@@ -106,8 +107,8 @@ class ScalarSolve {
                        "degenerate or a conductivity is not positive");
   }
 
-  int free_count() const { return static_cast<int>(free_.size()); }
-  bool same_partition(const std::map<int, double>& prescribed) const {
+  int free_count() const override { return static_cast<int>(free_.size()); }
+  bool same_partition(const std::map<int, double>& prescribed) const override {
     if (prescribed.size() + free_.size() != free_of_unknown_.size()) return false;
     for (const auto& entry : prescribed)
       if (free_of_unknown_[entry.first] >= 0) return false;
@@ -115,7 +116,7 @@ class ScalarSolve {
   }
 
   Eigen::VectorXd solve(const Eigen::VectorXd& f, const std::map<int, double>& prescribed,
-                        const SourceLoc& where) const {
+                        const SourceLoc& where) override {
     Eigen::VectorXd phi = Eigen::VectorXd::Zero(f.size());
     for (const auto& [u, value] : prescribed) phi(u) = value;
     if (free_.empty()) return phi;
@@ -131,6 +132,10 @@ class ScalarSolve {
                        "elements or conductivities of very different magnitudes");
     for (std::size_t i = 0; i < free_.size(); ++i) phi(free_[i]) = x(i);
     return phi;
+  }
+
+  std::string description() const override {
+    return "CHOLMOD supernodal Cholesky (Eigen, AMD/METIS ordering)";
   }
 
  private:
@@ -212,7 +217,7 @@ Results run_scalar_field_analysis(const Model& model, const ElementRegistry& reg
   }
 
   Results results;
-  std::unique_ptr<ScalarSolve> solver;
+  std::unique_ptr<ScalarLinearSolve> solver;
   double total_time = 0.0;
   for (std::size_t s = 0; s < model.steps.size(); ++s) {
     const Step& step = model.steps[s];
@@ -221,9 +226,13 @@ Results run_scalar_field_analysis(const Model& model, const ElementRegistry& reg
       const PhaseRecorder::Scope phase(phases, "factorise");
       check_every_part_prescribed(model, prepared, c, step);
       solver.reset();
-      solver = std::make_unique<ScalarSolve>(K, c.prescribed, step.procedure.where);
+      if (options.distributed)
+        solver = make_distributed_scalar_solve(K, c.prescribed, step.procedure.where,
+                                               join_mpi_world(), phases);
+      else
+        solver = std::make_unique<ScalarSolve>(K, c.prescribed, step.procedure.where);
       if (report != nullptr && report->linear_solver.empty()) {
-        report->linear_solver = "CHOLMOD supernodal Cholesky (Eigen, AMD/METIS ordering)";
+        report->linear_solver = solver->description();
         report->dofs = solver->free_count();
       }
     }

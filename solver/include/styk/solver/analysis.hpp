@@ -42,6 +42,11 @@ struct SolveOptions {
   // before factorising; 0 = 80 % of the machine's physical memory. Above it the automatic choice
   // switches to the iterative solver and a forced direct solve stops with the estimate.
   double memory_limit_gb = 0.0;
+  // Solve across the ranks of the MPI world this process belongs to (mpi_world.hpp): every rank
+  // runs the same analysis with the same options, assembles its own elements and takes part in
+  // one distributed linear solve (MUMPS where the serial rule picks CHOLMOD, CG + GAMG where it
+  // picks GAMG); every rank ends with the whole results. docs/solver.md "Distributed runs".
+  bool distributed = false;
 };
 
 struct AnalysisReport {

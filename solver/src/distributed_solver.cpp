@@ -1,0 +1,76 @@
+#include "distributed_solver.hpp"
+
+namespace styk::solver_detail {
+namespace {
+
+class DistributedSolver final : public LinearSolver {
+ public:
+  DistributedSolver(const SolverContext& context, const RankRows& rows, bool direct,
+                    double tolerance)
+      : context_(context), rows_(rows), direct_(direct), tolerance_(tolerance) {}
+
+  std::string description() const override {
+    return system_ ? system_->description() : std::string("distributed solver");
+  }
+
+  void prepare(StiffnessMatrix& K, const DofPartition& partition) override {
+    const PhaseRecorder::Scope phase(context_.phases, "factorise");
+    const PreparedModel& prepared = context_.prepared;
+    DistributedSettings settings;
+    settings.direct = direct_;
+    settings.tolerance = tolerance_;
+    settings.block_size = prepared.has_rotations() ? 1 : 3;
+    settings.where = SourceLoc{context_.model.source, 0};
+    if (!direct_) {
+      settings.coordinates.resize(prepared.active_dofs());
+      for (int a = 0; a < prepared.active_nodes(); ++a)
+        for (int d = 0; d < 3; ++d)
+          settings.coordinates[prepared.dof_offset[a] + d] =
+              context_.model.coords[prepared.node_of_active[a]][d];
+    }
+    const CsrView view{K.row_ptr().data(), K.col().data(), K.values().data(), K.rows()};
+    system_.reset();
+    system_ = std::make_unique<DistributedSystem>(rows_, view, rows_with_values(view), partition,
+                                                  std::move(settings), context_.phases);
+    // PETSc holds its own copy of this rank's rows: free K's values before the factor or the
+    // multigrid hierarchy takes its memory (a later step that needs them reassembles).
+    K.release_values();
+  }
+
+  std::vector<double> solve(const std::vector<double>& f,
+                            const std::vector<double>& prescribed_value) override {
+    const PhaseRecorder::Scope phase(context_.phases, "solve");
+    return system_->solve(f, prescribed_value);
+  }
+
+  int iterations() const override { return system_ ? system_->iterations() : 0; }
+
+ private:
+  SolverContext context_;
+  RankRows rows_;
+  bool direct_;
+  double tolerance_;
+  std::unique_ptr<DistributedSystem> system_;
+};
+
+}  // namespace
+
+RankShare share_of_rank(const Model& model, const PreparedModel& prepared, const MpiWorld& world) {
+  RankShare share;
+  share.rows = split_rows_by_nodes(prepared.dof_offset, world.rank, world.size);
+  share.owns_element.assign(model.element_count(), 0);
+  for (int e = 0; e < model.element_count(); ++e) {
+    const int* nodes = model.element_nodes(e);
+    const int a = prepared.active_of_node[nodes[0]];
+    share.owns_element[e] = a >= 0 && share.rows.owner(prepared.dof_offset[a]) == world.rank;
+  }
+  return share;
+}
+
+std::unique_ptr<LinearSolver> make_distributed_solver(const SolverContext& context,
+                                                      const RankRows& rows, bool direct,
+                                                      double tolerance) {
+  return std::make_unique<DistributedSolver>(context, rows, direct, tolerance);
+}
+
+}  // namespace styk::solver_detail

@@ -1,0 +1,297 @@
+#include "distributed_system.hpp"
+
+#include <petscksp.h>
+
+#include <algorithm>
+#include <chrono>
+#include <cmath>
+#include <cstdio>
+#include <stdexcept>
+
+#include "ksp_progress.hpp"
+#include "petsc_runtime.hpp"
+
+namespace styk::solver_detail {
+namespace {
+
+std::string format(const char* pattern, double a, double b = 0.0, double c = 0.0) {
+  char buffer[240];
+  std::snprintf(buffer, sizeof buffer, pattern, a, b, c);
+  return buffer;
+}
+
+double seconds_since(std::chrono::steady_clock::time_point start) {
+  return std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+}
+
+}  // namespace
+
+struct DistributedSystem::Petsc {
+  explicit Petsc(const PhaseRecorder& phases) : progress(phases) {}
+  KspProgress progress;
+  Mat A = nullptr;
+  KSP ksp = nullptr;
+  Vec b = nullptr;
+  Vec x = nullptr;
+  Vec r = nullptr;
+  Vec all = nullptr;  // the whole solution, on every rank
+  VecScatter to_all = nullptr;
+  ~Petsc() {
+    VecScatterDestroy(&to_all);
+    VecDestroy(&all);
+    VecDestroy(&r);
+    VecDestroy(&x);
+    VecDestroy(&b);
+    KSPDestroy(&ksp);
+    MatDestroy(&A);
+  }
+};
+
+namespace {
+
+// Preallocation of the owned rows from the global pattern: columns inside / outside the owned
+// range (PETSc's "diagonal" and "off-diagonal" parts).
+void preallocate(Mat A, const RankRows& rows, const CsrView& K) {
+  const int begin = rows.begin(), end = rows.end();
+  std::vector<PetscInt> d_nnz(end - begin), o_nnz(end - begin);
+  for (int row = begin; row < end; ++row) {
+    PetscInt inside = 0;
+    for (int p = K.row_ptr[row]; p < K.row_ptr[row + 1]; ++p)
+      if (K.col[p] >= begin && K.col[p] < end) ++inside;
+    d_nnz[row - begin] = inside;
+    o_nnz[row - begin] = (K.row_ptr[row + 1] - K.row_ptr[row]) - inside;
+  }
+  petsc_check(MatMPIAIJSetPreallocation(A, 0, d_nnz.data(), 0, o_nnz.data()),
+              "MatMPIAIJSetPreallocation");
+  petsc_check(MatSeqAIJSetPreallocation(A, 0, d_nnz.data()), "MatSeqAIJSetPreallocation");
+}
+
+void configure_solver(KSP ksp, const DistributedSettings& settings) {
+  // Tuning from the environment goes through this prefix (PETSC_OPTIONS="-styk_mpi_...").
+  petsc_check(KSPSetOptionsPrefix(ksp, "styk_mpi_"), "KSPSetOptionsPrefix");
+  PC pc = nullptr;
+  petsc_check(KSPGetPC(ksp, &pc), "KSPGetPC");
+  if (settings.direct) {
+    petsc_check(KSPSetType(ksp, KSPPREONLY), "KSPSetType");
+    petsc_check(PCSetType(pc, PCCHOLESKY), "PCSetType");
+    petsc_check(PCFactorSetMatSolverType(pc, MATSOLVERMUMPS), "PCFactorSetMatSolverType");
+  } else {
+    petsc_check(KSPSetType(ksp, KSPCG), "KSPSetType");
+    petsc_check(KSPSetNormType(ksp, KSP_NORM_UNPRECONDITIONED), "KSPSetNormType");
+    petsc_check(KSPSetTolerances(ksp, settings.tolerance, 0.0, PETSC_DEFAULT, 5000),
+                "KSPSetTolerances");
+    petsc_check(PCSetType(pc, PCGAMG), "PCSetType");
+    petsc_check(PCGAMGSetType(pc, PCGAMGAGG), "PCGAMGSetType");
+    petsc_check(PCGAMGSetNSmooths(pc, 1), "PCGAMGSetNSmooths");
+    PetscReal threshold[] = {0.01};  // as the serial GAMG solver (gamg_solver.cpp)
+    petsc_check(PCGAMGSetThreshold(pc, threshold, 1), "PCGAMGSetThreshold");
+  }
+  petsc_check(KSPSetFromOptions(ksp), "KSPSetFromOptions");
+}
+
+// One line per rank on rank 0's progress: its rows, the rows its elements gave and how long adding
+// them took (how evenly the work is split).
+void report_rank_shares(const RankRows& rows, int contributed, double seconds,
+                        const PhaseRecorder& phases) {
+  const double mine[3] = {static_cast<double>(rows.end() - rows.begin()),
+                          static_cast<double>(contributed), seconds};
+  std::vector<double> all(3 * static_cast<std::size_t>(rows.size));
+  MPI_Gather(mine, 3, MPI_DOUBLE, all.data(), 3, MPI_DOUBLE, 0, PETSC_COMM_WORLD);
+  if (rows.rank != 0) return;
+  for (int r = 0; r < rows.size; ++r)
+    phases.info(format("rank %.0f: owns %.0f rows, ", r, all[3 * r], 0.0) +
+                format("its elements gave %.0f rows, added in %.2f s", all[3 * r + 1],
+                       all[3 * r + 2]));
+}
+
+void attach_rigid_body_modes(Mat A, const RankRows& rows, const std::vector<double>& coordinates) {
+  Vec xyz = nullptr;
+  petsc_check(VecCreateMPI(PETSC_COMM_WORLD, rows.end() - rows.begin(), PETSC_DETERMINE, &xyz),
+              "VecCreateMPI");
+  VecSetBlockSize(xyz, 3);
+  PetscScalar* local = nullptr;
+  VecGetArray(xyz, &local);
+  std::copy(coordinates.begin() + rows.begin(), coordinates.begin() + rows.end(), local);
+  VecRestoreArray(xyz, &local);
+  MatNullSpace modes = nullptr;
+  PetscErrorCode code = MatNullSpaceCreateRigidBody(xyz, &modes);
+  if (code == 0) code = MatSetNearNullSpace(A, modes);
+  MatNullSpaceDestroy(&modes);
+  VecDestroy(&xyz);
+  petsc_check(code, "MatNullSpaceCreateRigidBody");
+}
+
+}  // namespace
+
+DistributedSystem::DistributedSystem(const RankRows& rows, const CsrView& K,
+                                     const std::vector<int>& contributed_rows,
+                                     const DofPartition& partition, DistributedSettings settings,
+                                     const PhaseRecorder& phases)
+    : petsc_(std::make_unique<Petsc>(phases)),
+      rows_(rows),
+      partition_(partition),
+      settings_(std::move(settings)),
+      phases_(phases) {
+  PetscRuntime::ensure();
+  const auto start = std::chrono::steady_clock::now();
+  const int local = rows_.end() - rows_.begin();
+  const std::vector<int>& free_of = partition_.free_of_dof;
+  petsc_check(MatCreate(PETSC_COMM_WORLD, &petsc_->A), "MatCreate");
+  Mat A = petsc_->A;
+  petsc_check(MatSetSizes(A, local, local, K.rows, K.rows), "MatSetSizes");
+  petsc_check(MatSetType(A, MATAIJ), "MatSetType");
+  if (settings_.block_size > 1) petsc_check(MatSetBlockSize(A, settings_.block_size), "MatSetBlockSize");
+  preallocate(A, rows_, K);
+
+  // This rank's part of the free rows and of the coupling K_fp; and of the free diagonal, whose
+  // global mean becomes the prescribed rows' diagonal.
+  double diagonal_sum = 0.0;
+  std::vector<PetscInt> columns;
+  std::vector<PetscScalar> values;
+  for (int row : contributed_rows) {
+    if (free_of[row] < 0) continue;
+    columns.clear();
+    values.clear();
+    for (int p = K.row_ptr[row]; p < K.row_ptr[row + 1]; ++p) {
+      const int c = K.col[p];
+      if (free_of[c] < 0) {
+        if (K.values[p] != 0.0) coupling_.push_back({row, c, K.values[p]});
+        continue;
+      }
+      if (c == row) diagonal_sum += K.values[p];
+      columns.push_back(c);
+      values.push_back(K.values[p]);
+    }
+    const PetscInt global_row = row;
+    petsc_check(MatSetValues(A, 1, &global_row, static_cast<PetscInt>(columns.size()),
+                             columns.data(), values.data(), ADD_VALUES),
+                "MatSetValues");
+  }
+  MPI_Allreduce(MPI_IN_PLACE, &diagonal_sum, 1, MPI_DOUBLE, MPI_SUM, PETSC_COMM_WORLD);
+  diagonal_ = partition_.free_count() > 0 && diagonal_sum > 0.0
+                  ? diagonal_sum / partition_.free_count()
+                  : 1.0;
+  for (int row = rows_.begin(); row < rows_.end(); ++row)
+    if (free_of[row] < 0) {
+      const PetscInt global_row = row;
+      petsc_check(MatSetValues(A, 1, &global_row, 1, &global_row, &diagonal_, ADD_VALUES),
+                  "MatSetValues");
+    }
+  report_rank_shares(rows_, static_cast<int>(contributed_rows.size()), seconds_since(start),
+                     phases_);
+  petsc_check(MatAssemblyBegin(A, MAT_FINAL_ASSEMBLY), "MatAssemblyBegin");
+  petsc_check(MatAssemblyEnd(A, MAT_FINAL_ASSEMBLY), "MatAssemblyEnd");
+  petsc_check(MatSetOption(A, MAT_SYMMETRIC, PETSC_TRUE), "MatSetOption");
+  petsc_check(MatSetOption(A, MAT_SPD, PETSC_TRUE), "MatSetOption");
+  if (!settings_.direct && settings_.block_size == 3 && !settings_.coordinates.empty())
+    attach_rigid_body_modes(A, rows_, settings_.coordinates);
+  const double assemble_seconds = seconds_since(start);
+
+  petsc_check(KSPCreate(PETSC_COMM_WORLD, &petsc_->ksp), "KSPCreate");
+  petsc_check(KSPSetOperators(petsc_->ksp, A, A), "KSPSetOperators");
+  if (!settings_.direct) petsc_check(petsc_->progress.attach(petsc_->ksp), "KSPMonitorSet");
+  configure_solver(petsc_->ksp, settings_);
+  const auto setup_start = std::chrono::steady_clock::now();
+  const PetscErrorCode setup = KSPSetUp(petsc_->ksp);
+  if (setup != 0)
+    throw InputError(settings_.where,
+                     "the " + settings_.what + " matrix could not be " +
+                         (settings_.direct ? "factorised (MUMPS): it is singular or not positive "
+                                             "definite; the model is a mechanism or an element "
+                                             "is degenerate"
+                                           : "prepared for the multigrid solver (GAMG set-up "
+                                             "failed)"));
+  petsc_check(MatCreateVecs(A, &petsc_->x, &petsc_->b), "MatCreateVecs");
+  petsc_check(VecDuplicate(petsc_->b, &petsc_->r), "VecDuplicate");
+  petsc_check(VecScatterCreateToAll(petsc_->x, &petsc_->to_all, &petsc_->all),
+              "VecScatterCreateToAll");
+  const std::string solver = settings_.direct ? "MUMPS" : "GAMG";
+  phases_.info(format("distributed: %.0f rows on %.0f ranks, this rank's part assembled in %.2f s",
+                      static_cast<double>(K.rows), static_cast<double>(rows_.size),
+                      assemble_seconds) +
+               ", " + solver + format(" set up in %.2f s", seconds_since(setup_start)));
+}
+
+DistributedSystem::~DistributedSystem() = default;
+
+std::string DistributedSystem::description() const {
+  const std::string ranks = " on " + std::to_string(rows_.size) + " MPI ranks";
+  return settings_.direct ? "MUMPS distributed Cholesky (PETSc)" + ranks
+                          : "PETSc CG + GAMG (smoothed aggregation, rigid-body near-null space)" +
+                                ranks;
+}
+
+std::vector<double> DistributedSystem::solve(const std::vector<double>& f,
+                                             const std::vector<double>& prescribed_value) {
+  Vec b = petsc_->b, x = petsc_->x;
+  petsc_check(VecSet(b, 0.0), "VecSet");
+  const std::vector<int>& free_of = partition_.free_of_dof;
+  // Each rank adds what it holds: the owner its rows of f and the prescribed rows' values, every
+  // rank its part of -K_fp u_p.
+  for (int row = rows_.begin(); row < rows_.end(); ++row) {
+    const PetscScalar value = free_of[row] >= 0 ? f[row] : diagonal_ * prescribed_value[row];
+    const PetscInt index = row;
+    petsc_check(VecSetValues(b, 1, &index, &value, ADD_VALUES), "VecSetValues");
+  }
+  for (const CouplingEntry& entry : coupling_) {
+    const PetscScalar value = -entry.value * prescribed_value[entry.dof];
+    if (value == 0.0) continue;
+    const PetscInt index = entry.free_row;
+    petsc_check(VecSetValues(b, 1, &index, &value, ADD_VALUES), "VecSetValues");
+  }
+  petsc_check(VecAssemblyBegin(b), "VecAssemblyBegin");
+  petsc_check(VecAssemblyEnd(b), "VecAssemblyEnd");
+
+  PetscReal b_norm = 0.0;
+  petsc_check(VecNorm(b, NORM_2, &b_norm), "VecNorm");
+  petsc_check(VecSet(x, 0.0), "VecSet");
+  iterations_ = 0;
+  if (b_norm > 0.0) {
+    const auto start = std::chrono::steady_clock::now();
+    petsc_->progress.start(b_norm);
+    const PetscErrorCode code = KSPSolve(petsc_->ksp, b, x);
+    KSPConvergedReason reason = KSP_CONVERGED_ITERATING;
+    PetscInt its = 0;
+    KSPGetConvergedReason(petsc_->ksp, &reason);
+    KSPGetIterationNumber(petsc_->ksp, &its);
+    iterations_ = settings_.direct ? 0 : static_cast<int>(its);
+    if (code != 0 || reason < 0) {
+      if (settings_.direct)
+        throw InputError(settings_.where, "the " + settings_.what +
+                                              " matrix is singular (MUMPS): the model is a "
+                                              "mechanism or an element is degenerate");
+      throw NotConvergedError(format(
+          "the iterative solver (CG + GAMG, distributed) did not converge: %.0f iterations "
+          "(PETSc reason %.0f)",
+          static_cast<double>(its), static_cast<double>(reason)));
+    }
+    // The true residual, whatever the solver.
+    petsc_check(MatMult(petsc_->A, x, petsc_->r), "MatMult");
+    petsc_check(VecAXPY(petsc_->r, -1.0, b), "VecAXPY");
+    PetscReal r_norm = 0.0;
+    petsc_check(VecNorm(petsc_->r, NORM_2, &r_norm), "VecNorm");
+    const double relative = r_norm / b_norm;
+    if (!(relative <= settings_.residual_limit))
+      throw InputError(settings_.where,
+                       "the " + settings_.what + " matrix is nearly singular: the distributed " +
+                           format("solve left a relative residual of %.3g", relative));
+    if (settings_.direct)
+      phases_.info(format("MUMPS: solved in %.2f s, relative residual %.2g", seconds_since(start),
+                          relative));
+    else
+      phases_.info(format("CG + GAMG: %.0f iterations in %.2f s, relative residual %.2g",
+                          static_cast<double>(its), seconds_since(start), relative));
+  }
+  petsc_check(VecScatterBegin(petsc_->to_all, x, petsc_->all, INSERT_VALUES, SCATTER_FORWARD),
+              "VecScatterBegin");
+  petsc_check(VecScatterEnd(petsc_->to_all, x, petsc_->all, INSERT_VALUES, SCATTER_FORWARD),
+              "VecScatterEnd");
+  const PetscScalar* values = nullptr;
+  petsc_check(VecGetArrayRead(petsc_->all, &values), "VecGetArrayRead");
+  std::vector<double> u(values, values + f.size());
+  VecRestoreArrayRead(petsc_->all, &values);
+  for (int dof : partition_.prescribed) u[dof] = prescribed_value[dof];
+  return u;
+}
+
+}  // namespace styk::solver_detail

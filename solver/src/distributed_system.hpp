@@ -1,0 +1,84 @@
+// A linear system solved across the ranks of the MPI world (PETSc MPIAIJ, CG + GAMG or MUMPS).
+// Every rank holds the model and the global sparsity pattern; each adds the rows its own elements
+// produced (its part of the assembled matrix) and PETSc sums the parts into the rows' owners.
+// The active dofs are split into contiguous row ranges at node boundaries. Prescribed dofs are
+// eliminated symmetrically (rows and columns zeroed, the diagonal set to the mean free diagonal),
+// as in the serial GAMG solver. No PETSc types in this header.
+#pragma once
+
+#include <memory>
+#include <string>
+#include <vector>
+
+#include "linear_solver.hpp"
+#include "phase_recorder.hpp"
+
+namespace styk::solver_detail {
+
+// Which rows (active dofs) each rank owns: rank r owns [first[r], first[r + 1]).
+struct RankRows {
+  int rank = 0;
+  int size = 1;
+  std::vector<int> first;
+  int begin() const { return first[rank]; }
+  int end() const { return first[rank + 1]; }
+  int owner(int row) const;  // the rank owning `row`
+};
+
+// Contiguous ranges of about equal numbers of dofs, cut only between nodes (`dof_offset`: node a
+// holds dofs dof_offset[a] .. dof_offset[a + 1]).
+RankRows split_rows_by_nodes(const std::vector<int>& dof_offset, int rank, int size);
+
+// A CSR matrix on all active dofs (both triangles, the global pattern; values may hold only this
+// rank's part).
+struct CsrView {
+  const int* row_ptr = nullptr;
+  const int* col = nullptr;
+  const double* values = nullptr;
+  int rows = 0;
+};
+
+struct DistributedSettings {
+  bool direct = true;         // MUMPS Cholesky; otherwise CG + GAMG
+  double tolerance = 1e-7;    // CG's relative residual
+  double residual_limit = 1e-6;  // the true relative residual a solution must reach
+  int block_size = 1;         // dofs per node when every node has the same number
+  // 3 per active node for the rigid-body near-null space of GAMG (block size 3); empty: none.
+  std::vector<double> coordinates;
+  std::string what = "stiffness";  // names the matrix in messages
+  SourceLoc where;                  // the deck, for a singular matrix
+};
+
+class DistributedSystem {
+ public:
+  // `contributed_rows`: the rows of `K` holding this rank's part (sorted). Collective.
+  DistributedSystem(const RankRows& rows, const CsrView& K,
+                    const std::vector<int>& contributed_rows, const DofPartition& partition,
+                    DistributedSettings settings, const PhaseRecorder& phases);
+  ~DistributedSystem();
+  DistributedSystem(const DistributedSystem&) = delete;
+  DistributedSystem& operator=(const DistributedSystem&) = delete;
+
+  // The solution on all active dofs, on every rank. `f` is the same on every rank (each owner
+  // adds its rows); `prescribed_value` is indexed by active dof. Collective.
+  std::vector<double> solve(const std::vector<double>& f,
+                            const std::vector<double>& prescribed_value);
+  int iterations() const { return iterations_; }
+  std::string description() const;
+
+ private:
+  struct Petsc;
+  std::unique_ptr<Petsc> petsc_;
+  RankRows rows_;
+  DofPartition partition_;
+  DistributedSettings settings_;
+  const PhaseRecorder& phases_;
+  std::vector<CouplingEntry> coupling_;  // this rank's part of K_fp (free_row = active dof)
+  double diagonal_ = 1.0;
+  int iterations_ = 0;
+};
+
+// The rows of `K` with a nonzero value (this rank's part after assembling its own elements).
+std::vector<int> rows_with_values(const CsrView& K);
+
+}  // namespace styk::solver_detail
