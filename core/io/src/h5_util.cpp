@@ -160,6 +160,28 @@ std::uint64_t checked_rows(hid_t dataset, const std::string& name, std::uint64_t
   return dims[0];
 }
 
+// A damaged layout message can send HDF5's read of a compact or contiguous dataset outside its
+// data (a compact buffer of 0 bytes, an address beyond the end of the file), where the library's
+// copy crashes instead of failing (found by fuzzing, docs/fuzzing.md): such a dataset must hold
+// its `bytes`, and a contiguous one lie inside the file. Chunked datasets (what Styk writes) are
+// read chunk by chunk through HDF5's index, each chunk checked by its Fletcher-32.
+void check_unchunked_storage(hid_t dataset, const std::string& name, std::uint64_t bytes) {
+  if (bytes == 0) return;
+  Handle plist(H5Dget_create_plist(dataset), H5Pclose, "cannot read the layout of " + name);
+  const H5D_layout_t layout = H5Pget_layout(plist.get());
+  if (layout == H5D_CHUNKED || layout == H5D_VIRTUAL) return;
+  const std::string damaged = "dataset " + name + ": its data lies outside its storage";
+  if (layout != H5D_COMPACT && layout != H5D_CONTIGUOUS) throw Error(damaged);
+  if (H5Dget_storage_size(dataset) < bytes) throw Error(damaged);
+  if (layout == H5D_COMPACT) return;
+  const haddr_t offset = H5Dget_offset(dataset);
+  Handle file(H5Iget_file_id(dataset), H5Fclose, "cannot find the file of " + name);
+  hsize_t file_size = 0;
+  if (H5Fget_filesize(file.get(), &file_size) < 0 || offset == HADDR_UNDEF ||
+      offset > file_size || bytes > file_size - offset)
+    throw Error(damaged);
+}
+
 template <typename T>
 std::uint64_t read_array(hid_t parent, const std::string& name, hid_t mem_type, std::uint64_t cols,
                          std::vector<T>& out) {
@@ -167,6 +189,7 @@ std::uint64_t read_array(hid_t parent, const std::string& name, hid_t mem_type, 
                  "cannot open dataset " + name);
   const std::uint64_t rows = checked_rows(dataset.get(), name, cols);
   out.resize(rows * std::max<std::uint64_t>(cols, 1));
+  check_unchunked_storage(dataset.get(), name, out.size() * sizeof(T));
   const std::string path = path_of(dataset.get());
   if (rows > 0 && H5Dread(dataset.get(), mem_type, H5S_ALL, H5S_ALL, H5P_DEFAULT, out.data()) < 0)
     fail_read(path);
@@ -210,6 +233,7 @@ std::vector<std::string> read_strings(hid_t parent, const std::string& name) {
   const std::size_t width = H5Tget_size(file_type.get());
   const std::uint64_t rows = checked_rows(dataset.get(), name, 0);
   std::string packed(rows * width, '\0');
+  check_unchunked_storage(dataset.get(), name, packed.size());
   const Handle mem_type = fixed_string_type(width);
   const std::string path = path_of(dataset.get());
   if (rows > 0 &&

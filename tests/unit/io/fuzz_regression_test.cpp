@@ -4,6 +4,8 @@
 // reader's std::runtime_error naming its line.
 //   results-huge-metadata-allocation.styk.h5: a flipped size in the HDF5 metadata makes the
 //   library ask malloc for an impossible buffer; it must come back as a damaged file.
+//   results-compact-layout-without-data.styk.h5: /model/elements/types turned into a compact
+//   dataset without data; HDF5 copied from a NULL buffer (SIGSEGV) until the reader checked it.
 #include <gtest/gtest.h>
 
 #include <filesystem>
