@@ -46,6 +46,24 @@ std::size_t drawn_elements(const gui::Scene& scene) {
   return count;
 }
 
+// The pixels of the iso view that change when `layers` are hidden (they stay hidden after);
+// STYK_GUI_SCREENSHOTS=DIR writes the view before as DIR/`picture`.
+int pixels_drawn_by(gui::MainWindow& w, const QStringList& layers, const QString& picture) {
+  w.set_filter({});
+  w.view()->set_named_view("iso");
+  w.view()->fit();
+  const QImage shown = w.view()->grabFramebuffer();
+  const QString shots = qEnvironmentVariable("STYK_GUI_SCREENSHOTS");
+  if (!shots.isEmpty()) shown.save(shots + "/" + picture);
+  for (const QString& layer : layers) w.document().layers().set_visible(layer.toStdString(), false);
+  w.set_filter({});
+  const QImage hidden = w.view()->grabFramebuffer();
+  int changed = 0;
+  for (int y = 0; y < shown.height(); ++y)
+    for (int x = 0; x < shown.width(); ++x) changed += shown.pixel(x, y) != hidden.pixel(x, y);
+  return changed;
+}
+
 }  // namespace
 
 class GuiFilterGeometry : public QObject {
@@ -235,19 +253,7 @@ class GuiFilterGeometry : public QObject {
     QVERIFY(m.find_elset("MAST"));
     QVERIFY(m.sections.back().beam.has_value());
 
-    window_->set_filter({});
-    window_->view()->set_named_view("iso");
-    window_->view()->fit();
-    const QImage shown = window_->view()->grabFramebuffer();
-    const QString shots = qEnvironmentVariable("STYK_GUI_SCREENSHOTS");
-    if (!shots.isEmpty()) shown.save(shots + "/gui-shells-beams.png");
-    window_->document().layers().set_visible("ROOF", false);
-    window_->document().layers().set_visible("MAST", false);
-    window_->set_filter({});
-    const QImage hidden = window_->view()->grabFramebuffer();
-    int changed = 0;
-    for (int y = 0; y < shown.height(); ++y)
-      for (int x = 0; x < shown.width(); ++x) changed += shown.pixel(x, y) != hidden.pixel(x, y);
+    const int changed = pixels_drawn_by(*window_, {"ROOF", "MAST"}, "gui-shells-beams.png");
     QVERIFY2(changed > 3000, qPrintable(QString::number(changed)));
   }
 
@@ -276,18 +282,7 @@ class GuiFilterGeometry : public QObject {
     QVERIFY(m.find_elset("DOME"));
     QCOMPARE(m.find_elset("DOME")->elements.size(), std::size_t(24));
     QVERIFY(m.find_nset("DOME_SIDE3"));
-    window_->set_filter({});
-    window_->view()->set_named_view("iso");
-    window_->view()->fit();
-    const QImage shown = window_->view()->grabFramebuffer();
-    const QString shots = qEnvironmentVariable("STYK_GUI_SCREENSHOTS");
-    if (!shots.isEmpty()) shown.save(shots + "/gui-shell-surface.png");
-    window_->document().layers().set_visible("DOME", false);
-    window_->set_filter({});
-    const QImage hidden = window_->view()->grabFramebuffer();
-    int changed = 0;
-    for (int y = 0; y < shown.height(); ++y)
-      for (int x = 0; x < shown.width(); ++x) changed += shown.pixel(x, y) != hidden.pixel(x, y);
+    const int changed = pixels_drawn_by(*window_, {"DOME"}, "gui-shell-surface.png");
     QVERIFY2(changed > 3000, qPrintable(QString::number(changed)));
   }
 

@@ -16,6 +16,7 @@
 #include <fstream>
 #include <sstream>
 #include <string>
+#include <utility>
 
 #include <Eigen/Geometry>
 
@@ -85,6 +86,35 @@ class ShellRender : public ::testing::Test {
     return render::RenderJob(model_, registry_, increment_.U.empty() ? nullptr : &increment_, o);
   }
 
+  // U.z over the deformed plate seen from -y (640 x 480, automatic scale): the pixels near the
+  // root (node 0) must be of the highest bands and those near the tip (node 5) of the lowest,
+  // where the scaled deflection puts them. Returns the frame and the deformation scale.
+  std::pair<Frame, double> expect_deflection_bands() const {
+    render::RenderOptions o;
+    o.width = 640, o.height = 480;
+    o.field = "U.z";
+    o.view.name = "-y";
+    o.deform.kind = render::DeformSpec::Kind::Auto;
+    o.samples = 1;
+    const render::RenderJob j = job(o);
+    Frame frame = j.frame();
+    render::OsmesaRenderer renderer(o.width, o.height);
+    const Image image = renderer.render(frame);
+    const double s = j.deformation_scale();
+    EXPECT_GT(s, 0.0);
+    const auto deformed = [&](int node, double dx) {
+      const Vec3& x = model_.coords[node];
+      const Vec3& u = increment_.U[node];
+      return Vec3{x[0] + s * u[0] + dx, x[1], x[2] + s * u[2]};
+    };
+    const int root = band_at(image, pixel_of(frame, deformed(0, 0.5)), frame.colors);
+    const int tip = band_at(image, pixel_of(frame, deformed(5, -0.3)), frame.colors);
+    EXPECT_GE(tip, 0);
+    EXPECT_LE(tip, 1);
+    EXPECT_GE(root, 10);
+    return {std::move(frame), s};
+  }
+
   PluginLibraries libraries_;
   ElementRegistry registry_;
   Model model_;
@@ -148,29 +178,8 @@ TEST_F(ShellRender, TheLegendRangeIsTheFieldOnTheChosenFibre) {
 // float vertices); without the turn the end would lie (t/2) sin(s theta_y) = 0.05 nearer.
 TEST_F(ShellRender, FieldsAreDrawnOnTheDeformedShells) {
   load(0.0, true);
-  render::RenderOptions o;
-  o.width = 640, o.height = 480;
-  o.field = "U.z";
-  o.view.name = "-y";
-  o.deform.kind = render::DeformSpec::Kind::Auto;
-  o.samples = 1;
-  const render::RenderJob j = job(o);
-  const Frame frame = j.frame();
-  render::OsmesaRenderer renderer(o.width, o.height);
-  const Image image = renderer.render(frame);
-  const double s = j.deformation_scale();
+  const auto [frame, s] = expect_deflection_bands();
   ASSERT_GT(s, 0.0);
-  const auto deformed = [&](int node, double dx) {
-    const Vec3& x = model_.coords[node];
-    const Vec3& u = increment_.U[node];
-    return Vec3{x[0] + s * u[0] + dx, x[1], x[2] + s * u[2]};
-  };
-  const int root = band_at(image, pixel_of(frame, deformed(0, 0.5)), frame.colors);
-  const int tip = band_at(image, pixel_of(frame, deformed(5, -0.3)), frame.colors);
-  ASSERT_GE(root, 0);
-  ASSERT_GE(tip, 0);
-  EXPECT_LE(tip, 1);
-  EXPECT_GE(root, 10);
   double far_end = -1e300, lowest = 1e300;
   for (const int node : {5, 11, 17}) {  // the tip nodes
     const Vec3& x = model_.coords[node];
@@ -259,29 +268,7 @@ TEST_F(ShellRender, TriangularShellsShowTheFieldOnTheChosenFibre) {
     EXPECT_NEAR(j.colors().min, c.expected, tolerance) << render::shell_fibre_name(c.fibre);
     EXPECT_NEAR(j.colors().max, c.expected, tolerance) << render::shell_fibre_name(c.fibre);
   }
-  render::RenderOptions o;
-  o.width = 640, o.height = 480;
-  o.field = "U.z";
-  o.view.name = "-y";
-  o.deform.kind = render::DeformSpec::Kind::Auto;
-  o.samples = 1;
-  const render::RenderJob j = job(o);
-  const Frame frame = j.frame();
-  render::OsmesaRenderer renderer(o.width, o.height);
-  const Image image = renderer.render(frame);
-  const double s = j.deformation_scale();
-  ASSERT_GT(s, 0.0);
-  const auto deformed = [&](int node, double dx) {
-    const Vec3& x = model_.coords[node];
-    const Vec3& u = increment_.U[node];
-    return Vec3{x[0] + s * u[0] + dx, x[1], x[2] + s * u[2]};
-  };
-  const int root = band_at(image, pixel_of(frame, deformed(0, 0.5)), frame.colors);
-  const int tip = band_at(image, pixel_of(frame, deformed(5, -0.3)), frame.colors);
-  ASSERT_GE(root, 0);
-  ASSERT_GE(tip, 0);
-  EXPECT_LE(tip, 1);
-  EXPECT_GE(root, 10);
+  expect_deflection_bands();
 }
 
 }  // namespace

@@ -97,11 +97,7 @@ namespace {
 // (its corners' normal vanishes or turns against the first element's).
 Model model_with_shell_plane(const Model& model, const PlaneInput& in,
                              const ElementRegistry& registry) {
-  mesher::ShellMeshSpec spec;
-  spec.type = to_upper(in.type);
-  spec.divisions_u = in.divisions_u, spec.divisions_v = in.divisions_v;
-  spec.grading_u = in.grading_u, spec.grading_v = in.grading_v;
-  spec.elset = to_upper(in.name);
+  const mesher::ShellMeshSpec spec = shell_mesh_spec(in);
   mesher::Mesh mesh;
   try {
     mesh = mesher::mesh_shell_patch(mesher::quad_map(in.points), spec, registry);

@@ -10,6 +10,7 @@
 #include "styk/core/element_registry.hpp"
 #include "styk/core/model.hpp"
 #include "styk/mesher/mesh.hpp"
+#include "styk/mesher/shell_mesh.hpp"
 
 namespace styk::gui::objects {
 
@@ -33,5 +34,17 @@ Model append_object(const Model& model, mesher::Mesh& mesh, const std::string& n
                     const std::string& material, double value,
                     std::optional<double> shell = std::nullopt,
                     std::optional<BeamSection> beam = std::nullopt);
+
+// The mesher's spec of a shell object's input (PlaneInput, ShellSurfaceInput): its type, element
+// set and divisions and gradings along u and v.
+template <typename Input>
+mesher::ShellMeshSpec shell_mesh_spec(const Input& in) {
+  mesher::ShellMeshSpec spec;
+  spec.type = to_upper(in.type);
+  spec.divisions_u = in.divisions_u, spec.divisions_v = in.divisions_v;
+  spec.grading_u = in.grading_u, spec.grading_v = in.grading_v;
+  spec.elset = to_upper(in.name);
+  return spec;
+}
 
 }  // namespace styk::gui::objects

@@ -81,11 +81,7 @@ void check_shell_surface(const ShellSurfaceInput& in, const Model& model,
 Model model_with_shell_surface(const Model& model, const ShellSurfaceInput& in,
                                const ElementRegistry& registry) {
   check_shell_surface(in, model, registry);
-  mesher::ShellMeshSpec spec;
-  spec.type = to_upper(in.type);
-  spec.divisions_u = in.divisions_u, spec.divisions_v = in.divisions_v;
-  spec.grading_u = in.grading_u, spec.grading_v = in.grading_v;
-  spec.elset = to_upper(in.name);
+  const mesher::ShellMeshSpec spec = shell_mesh_spec(in);
   mesher::Mesh mesh;
   try {
     mesh = in.kind == ShellSurfaceKind::CylindricalPanel

@@ -64,6 +64,22 @@ QStringList registry_types(const ElementRegistry& registry, bool shells) {
   return out;
 }
 
+// The fields a Plane and a Shell surface share: divisions and grading along u and v, element
+// type, section material, thickness and shell offset.
+template <typename Input>
+void read_patch_fields(const FormDialog& f, Input& in) {
+  const std::vector<int> n = whole_numbers(f, "divisions", "Divisions", 2);
+  const std::vector<double> g = numbers(f, "grading", "Grading", 2);
+  in.divisions_u = n[0];
+  in.divisions_v = n[1];
+  in.grading_u = g[0];
+  in.grading_v = g[1];
+  in.type = f.text("type");
+  in.material = f.text("material") == "(none)" ? std::string() : f.text("material");
+  in.thickness = f.real("thickness", "Thickness");
+  in.offset = f.real("offset", "Shell offset");
+}
+
 }  // namespace
 
 FormDialog* make_plane_dialog(Document& doc, QWidget* parent) {
@@ -95,16 +111,7 @@ FormDialog* make_plane_dialog(Document& doc, QWidget* parent) {
       const std::vector<Vec3> m = points(f, "midside", "Mid-side points");
       in.points.insert(in.points.end(), m.begin(), m.end());
     }
-    const std::vector<int> n = whole_numbers(f, "divisions", "Divisions", 2);
-    const std::vector<double> g = numbers(f, "grading", "Grading", 2);
-    in.divisions_u = n[0];
-    in.divisions_v = n[1];
-    in.grading_u = g[0];
-    in.grading_v = g[1];
-    in.type = f.text("type");
-    in.material = f.text("material") == "(none)" ? std::string() : f.text("material");
-    in.thickness = f.real("thickness", "Thickness");
-    in.offset = f.real("offset", "Shell offset");
+    read_patch_fields(f, in);
     doc.apply(plane_command(doc.model(), in, doc.registry()));
   });
   return d;
@@ -151,16 +158,7 @@ FormDialog* make_shell_surface_dialog(Document& doc, QWidget* parent) {
     in.angle = f.real("angle", "Panel angle");
     in.hole = f.real("hole", "Hemisphere hole");
     in.sweep = f.real("sweep", "Hemisphere sweep");
-    const std::vector<int> n = whole_numbers(f, "divisions", "Divisions", 2);
-    const std::vector<double> g = numbers(f, "grading", "Grading", 2);
-    in.divisions_u = n[0];
-    in.divisions_v = n[1];
-    in.grading_u = g[0];
-    in.grading_v = g[1];
-    in.type = f.text("type");
-    in.material = f.text("material") == "(none)" ? std::string() : f.text("material");
-    in.thickness = f.real("thickness", "Thickness");
-    in.offset = f.real("offset", "Shell offset");
+    read_patch_fields(f, in);
     doc.apply(shell_surface_command(doc.model(), in, doc.registry()));
   });
   return d;
