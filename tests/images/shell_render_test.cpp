@@ -86,6 +86,27 @@ class ShellRender : public ::testing::Test {
     return render::RenderJob(model_, registry_, increment_.U.empty() ? nullptr : &increment_, o);
   }
 
+  // S.11 in pure bending: the legend spans +24 / 0 / -24 on the top / middle / bottom fibre
+  // (1e-6 of 24).
+  void expect_pure_bending_fibres() const {
+    const struct {
+      render::ShellFibre fibre;
+      double expected;
+    } cases[] = {{render::ShellFibre::Top, kFibreStress},
+                 {render::ShellFibre::Middle, 0.0},
+                 {render::ShellFibre::Bottom, -kFibreStress}};
+    for (const auto& c : cases) {
+      render::RenderOptions o;
+      o.width = 320, o.height = 240;
+      o.field = "S.11";
+      o.shell_fibre = c.fibre;
+      const render::RenderJob j = job(o);
+      const double tolerance = 1e-6 * kFibreStress;
+      EXPECT_NEAR(j.colors().min, c.expected, tolerance) << render::shell_fibre_name(c.fibre);
+      EXPECT_NEAR(j.colors().max, c.expected, tolerance) << render::shell_fibre_name(c.fibre);
+    }
+  }
+
   // U.z over the deformed plate seen from -y (640 x 480, automatic scale): the pixels near the
   // root (node 0) must be of the highest bands and those near the tip (node 5) of the lowest,
   // where the scaled deflection puts them. Returns the frame and the deformation scale.
@@ -152,22 +173,7 @@ TEST_F(ShellRender, ShellsAreDrawnWithTheirThickness) {
 // (tolerance 1e-6 of 24: the S4 element is exact in pure bending, what remains is round-off).
 TEST_F(ShellRender, TheLegendRangeIsTheFieldOnTheChosenFibre) {
   load(0.0, true);
-  const struct {
-    render::ShellFibre fibre;
-    double expected;
-  } cases[] = {{render::ShellFibre::Top, kFibreStress},
-               {render::ShellFibre::Middle, 0.0},
-               {render::ShellFibre::Bottom, -kFibreStress}};
-  for (const auto& c : cases) {
-    render::RenderOptions o;
-    o.width = 320, o.height = 240;
-    o.field = "S.11";
-    o.shell_fibre = c.fibre;
-    const render::RenderJob j = job(o);
-    const double tolerance = 1e-6 * kFibreStress;
-    EXPECT_NEAR(j.colors().min, c.expected, tolerance) << render::shell_fibre_name(c.fibre);
-    EXPECT_NEAR(j.colors().max, c.expected, tolerance) << render::shell_fibre_name(c.fibre);
-  }
+  expect_pure_bending_fibres();
 }
 
 // A field over the deformed shells, seen from -y: under the moment about +y the tip goes down,
@@ -252,22 +258,7 @@ TEST_F(ShellRender, TriangularShellsAreDrawnWithTheirThickness) {
 // bottom fibre over the whole plate (1e-6 of 24), and the deflection drawn grows towards the tip.
 TEST_F(ShellRender, TriangularShellsShowTheFieldOnTheChosenFibre) {
   load(0.0, true, true);
-  const struct {
-    render::ShellFibre fibre;
-    double expected;
-  } cases[] = {{render::ShellFibre::Top, kFibreStress},
-               {render::ShellFibre::Middle, 0.0},
-               {render::ShellFibre::Bottom, -kFibreStress}};
-  for (const auto& c : cases) {
-    render::RenderOptions o;
-    o.width = 320, o.height = 240;
-    o.field = "S.11";
-    o.shell_fibre = c.fibre;
-    const render::RenderJob j = job(o);
-    const double tolerance = 1e-6 * kFibreStress;
-    EXPECT_NEAR(j.colors().min, c.expected, tolerance) << render::shell_fibre_name(c.fibre);
-    EXPECT_NEAR(j.colors().max, c.expected, tolerance) << render::shell_fibre_name(c.fibre);
-  }
+  expect_pure_bending_fibres();
   expect_deflection_bands();
 }
 

@@ -1,5 +1,6 @@
 #include "session/document.hpp"
 
+#include <cerrno>
 #include <cstdio>
 #include <fstream>
 #include <stdexcept>
@@ -8,6 +9,7 @@
 #include "styk/inp/reader.hpp"
 #include "styk/inp/writer.hpp"
 #include "styk/io/results_file.hpp"
+#include "styk/io/temp_file.hpp"
 
 namespace styk::gui {
 
@@ -79,20 +81,20 @@ void Document::recover_inp(const std::string& deck, const std::string& original_
 }
 
 void Document::write_deck_copy(const std::string& path, const std::string& comment) const {
-  const std::string temporary = path + ".tmp";
+  io::TempFile temporary(path);  // the same write-then-rename as every file styk writes
   {
-    std::ofstream out(temporary);
-    if (!out) throw std::runtime_error("cannot write " + temporary);
+    std::ofstream out(temporary.temp_path());
+    if (!out) throw std::runtime_error("cannot write " + temporary.temp_path());
     if (!comment.empty()) out << "** " << comment << "\n";
     write_inp(model_, out);
     write_view_state(view_state_of(layers_, filter_), out);
     out.flush();
-    if (!out) throw std::runtime_error("error while writing " + temporary);
+    if (!out) {
+      temporary.throw_if_out_of_space("cannot write " + path, errno);
+      throw std::runtime_error("error while writing " + temporary.temp_path());
+    }
   }
-  if (std::rename(temporary.c_str(), path.c_str()) != 0) {
-    std::remove(temporary.c_str());
-    throw std::runtime_error("cannot replace " + path);
-  }
+  temporary.commit();
 }
 
 void Document::attach_results(Results results, std::string results_path) {
