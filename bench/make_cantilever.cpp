@@ -1,6 +1,7 @@
 // Writes the block-cantilever deck of PERFORMANCE.md (and the samples): a C3D20 (or C3D8) block
 // L x W x H clamped at x = 0 with a unit tip shear as consistent nodal forces on x = L.
-//   make_cantilever NX NY NZ OUT.inp [--type C3D8|C3D20] [--size L W H] [--solver auto|cholmod|iterative]
+//   make_cantilever NX NY NZ OUT.inp [--type C3D8|C3D20] [--size L W H] [--solver
+//   auto|cholmod|iterative]
 #include <cstdlib>
 #include <fstream>
 #include <iostream>

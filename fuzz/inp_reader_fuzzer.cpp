@@ -5,8 +5,8 @@
 // exception, a crash, a sanitizer report, a hang — is a finding.
 #include <cstddef>
 #include <cstdint>
-#include <cstdlib>
 #include <cstdio>
+#include <cstdlib>
 #include <exception>
 #include <string>
 

@@ -16,7 +16,7 @@ packages=(
 )
 for option in "$@"; do
   case "$option" in
-    --test) packages+=(calculix-ccx calculix-ccx-test time python3 xvfb xauth python3-meshio
+    --test) packages+=(calculix-ccx calculix-ccx-test time python3 xvfb xauth python3-meshio clang-format-14
                        python3-h5py) ;;
     --fuzz) packages+=(clang libclang-rt-14-dev) ;;
     *) echo "install-deps: unknown option $option (use --test, --fuzz)" >&2; exit 1 ;;

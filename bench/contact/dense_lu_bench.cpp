@@ -21,7 +21,8 @@ int main(int argc, char** argv) {
   std::vector<int> sizes;
   for (int i = 1; i < argc; ++i) sizes.push_back(std::atoi(argv[i]));
   if (sizes.empty()) sizes = {1000, 3000, 7200};
-  std::printf("| n | Eigen PartialPivLU s | LAPACK (OpenBLAS) s | ratio | max |x_eigen - x_lapack| |\n");
+  std::printf(
+      "| n | Eigen PartialPivLU s | LAPACK (OpenBLAS) s | ratio | max |x_eigen - x_lapack| |\n");
   std::printf("|---|---|---|---|---|\n");
   for (const int n : sizes) {
     std::srand(7);

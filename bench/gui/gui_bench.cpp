@@ -12,8 +12,8 @@
 
 #include "gl_view.hpp"
 #include "session/document.hpp"
-#include "styk/elements/element_setup.hpp"
 #include "session/scene.hpp"
+#include "styk/elements/element_setup.hpp"
 #include "styk/io/results_file.hpp"
 #include "styk/mesher/block_mesh.hpp"
 #include "styk/mesher/geometry_maps.hpp"
@@ -30,8 +30,11 @@ std::string write_results(int elements) {
   mesher::BlockSpec spec;
   spec.divisions = {nx, ny, nz};
   spec.elset = "BOX";
-  mesher::mesh_block(mesh, mesher::hex_map({{0, 0, 0}, {4, 0, 0}, {4, 2, 0}, {0, 2, 0},
-                                            {0, 0, 1}, {4, 0, 1}, {4, 2, 1}, {0, 2, 1}}), spec);
+  mesher::mesh_block(
+      mesh,
+      mesher::hex_map(
+          {{0, 0, 0}, {4, 0, 0}, {4, 2, 0}, {0, 2, 0}, {0, 0, 1}, {4, 0, 1}, {4, 2, 1}, {0, 2, 1}}),
+      spec);
   const Model model = mesher::to_model(mesh, "bench");
   IncrementResult inc;
   for (const Vec3& x : model.coords) {
@@ -41,7 +44,8 @@ std::string write_results(int elements) {
   }
   Results results;
   results.increments.push_back(inc);
-  const std::string path = "/tmp/styk-gui-bench-" + std::to_string(model.element_count()) + ".styk.h5";
+  const std::string path =
+      "/tmp/styk-gui-bench-" + std::to_string(model.element_count()) + ".styk.h5";
   write_results_file(path, model, results);
   std::printf("%d elements (%d x %d x %d), %d nodes: %s\n", model.element_count(), nx, ny, nz,
               model.node_count(), path.c_str());
@@ -80,11 +84,13 @@ int main(int argc, char** argv) {
     settings.field = "S.mises";
     view.scene().rebuild(document, settings);
     const double t_scene = timer.nsecsElapsed() * 1e-9;
-    view.repaint();  // paints synchronously
+    view.repaint();       // paints synchronously
     view.grab_picture();  // waits for the GL to finish the frame
     const double t_first = timer.nsecsElapsed() * 1e-9;
-    std::printf("  open + first Mises contour: %.2f s (read %.2f s, scene %.2f s, first frame %.2f s); %zu triangles\n",
-                t_first, t_read, t_scene - t_read, t_first - t_scene, view.scene().triangle_count());
+    std::printf(
+        "  open + first Mises contour: %.2f s (read %.2f s, scene %.2f s, first frame %.2f s); %zu "
+        "triangles\n",
+        t_first, t_read, t_scene - t_read, t_first - t_scene, view.scene().triangle_count());
 
     const int frames = 60;
     const long drawn_before = view.frames_drawn();

@@ -9,8 +9,8 @@ namespace styk::cli {
 int elements_command() {
   PluginLibraries libraries;  // outlives the registry: plug-in code lives in it
   const ElementRegistry registry = make_registry(libraries);
-  fmt::print("{:<8} {:>5}  {:<13} {:<14} {:<14} {:<10} {}\n", "type", "nodes", "form",
-             "full rule", "reduced rule", "source", "description");
+  fmt::print("{:<8} {:>5}  {:<13} {:<14} {:<14} {:<10} {}\n", "type", "nodes", "form", "full rule",
+             "reduced rule", "source", "description");
   for (const std::string& name : registry.names()) {
     const ElementRegistry::Entry* entry = registry.entry(name);
     const TElement& e = *entry->element;

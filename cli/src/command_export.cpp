@@ -13,19 +13,22 @@ namespace styk::cli {
 namespace {
 
 bool ends_with(const std::string& s, const std::string& suffix) {
-  return s.size() >= suffix.size() && s.compare(s.size() - suffix.size(), suffix.size(), suffix) == 0;
+  return s.size() >= suffix.size() &&
+         s.compare(s.size() - suffix.size(), suffix.size(), suffix) == 0;
 }
 
 std::string default_output(const std::string& input) {
   for (const char* ext : {".styk.h5", ".inp", ".INP"})
-    if (ends_with(input, ext)) return input.substr(0, input.size() - std::string(ext).size()) + ".vtu";
+    if (ends_with(input, ext))
+      return input.substr(0, input.size() - std::string(ext).size()) + ".vtu";
   return input + ".vtu";
 }
 
 // The increment asked for: step 0 = last step, increment 0 = last increment of the step.
 const IncrementResult& pick_increment(const Results& results, int step, int increment,
                                       const std::string& path) {
-  if (results.increments.empty()) throw InputError({path, 0}, "the results file holds no increments");
+  if (results.increments.empty())
+    throw InputError({path, 0}, "the results file holds no increments");
   const int want_step = step > 0 ? step : results.increments.back().step;
   const IncrementResult* found = nullptr;
   std::string available;
@@ -34,8 +37,10 @@ const IncrementResult& pick_increment(const Results& results, int step, int incr
     if (inc.step == want_step && (increment == 0 || inc.increment == increment)) found = &inc;
   }
   if (!found)
-    throw InputError({path, 0}, fmt::format("no step {} increment {} in the results; step/increment "
-                                            "available:{}", want_step, increment, available));
+    throw InputError({path, 0},
+                     fmt::format("no step {} increment {} in the results; step/increment "
+                                 "available:{}",
+                                 want_step, increment, available));
   return *found;
 }
 

@@ -42,9 +42,12 @@ std::pair<long long, int> count_dofs(const Model& model, const ElementRegistry& 
 
 const char* solver_name(LinearSolverKind kind) {
   switch (kind) {
-    case LinearSolverKind::Cholmod: return "direct (CHOLMOD)";
-    case LinearSolverKind::Iterative: return "iterative (CG + AMG)";
-    case LinearSolverKind::Automatic: break;
+    case LinearSolverKind::Cholmod:
+      return "direct (CHOLMOD)";
+    case LinearSolverKind::Iterative:
+      return "iterative (CG + AMG)";
+    case LinearSolverKind::Automatic:
+      break;
   }
   return "automatic";
 }
@@ -78,7 +81,8 @@ int info_command(const InfoArgs& args) {
         "constraints)\n",
         dofs, rotating);
   fmt::print("node sets: {}\n", model.nsets.size());
-  for (const auto& [name, set] : model.nsets) fmt::print("  {:<24} {} nodes\n", name, set.nodes.size());
+  for (const auto& [name, set] : model.nsets)
+    fmt::print("  {:<24} {} nodes\n", name, set.nodes.size());
   fmt::print("element sets: {}\n", model.elsets.size());
   for (const auto& [name, set] : model.elsets)
     fmt::print("  {:<24} {} elements\n", name, set.elements.size());
@@ -124,9 +128,11 @@ int info_command(const InfoArgs& args) {
           s.outputs.size());
       continue;
     }
-    fmt::print("  step {} {}: static, time {}, solver {}; {} boundary, {} cload, {} dload, {} output requests\n",
-               k + 1, s.name, s.procedure.total_time, solver_name(s.procedure.solver),
-               s.boundaries.size(), s.cloads.size(), s.dloads.size(), s.outputs.size());
+    fmt::print(
+        "  step {} {}: static, time {}, solver {}; {} boundary, {} cload, {} dload, {} output "
+        "requests\n",
+        k + 1, s.name, s.procedure.total_time, solver_name(s.procedure.solver), s.boundaries.size(),
+        s.cloads.size(), s.dloads.size(), s.outputs.size());
   }
   return kOk;
 }

@@ -62,7 +62,8 @@ int mesh_command(const MeshArgs& args) {
   // Some builders solve (the bolted flange calibrates its preload), so say what is running.
   fmt::print(stderr, "building {} ...\n", args.builder);
   const auto start = std::chrono::steady_clock::now();
-  const mesher::BuildResult result = mesher::run_builder(args.builder, params, registry, studies::static_solve(registry));
+  const mesher::BuildResult result =
+      mesher::run_builder(args.builder, params, registry, studies::static_solve(registry));
   const std::chrono::duration<double> took = std::chrono::steady_clock::now() - start;
   fmt::print(stderr, "built {} in {:.1f} s\n", args.builder, took.count());
   AtomicTextFile file(args.output);

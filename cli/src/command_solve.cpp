@@ -82,8 +82,8 @@ int solve_here(const SolveArgs& args, const MpiWorld& world) {
 
   std::error_code ec;
   std::filesystem::create_directories(args.output_dir, ec);
-  if (ec) throw InputError({}, "cannot create output directory " + args.output_dir + ": " +
-                                   ec.message());
+  if (ec)
+    throw InputError({}, "cannot create output directory " + args.output_dir + ": " + ec.message());
   const std::string job = job_name(args.deck);
   const std::string h5_path = join_path(args.output_dir, job + ".styk.h5");
   const std::string dat_path = join_path(args.output_dir, job + ".dat");
@@ -102,7 +102,8 @@ int solve_here(const SolveArgs& args, const MpiWorld& world) {
     std::cerr << json_done_line(h5_path, dat_path, report.dofs, report.linear_solver,
                                 static_cast<int>(model.steps.size()))
               << std::endl;
-  std::cout << "results: " << h5_path << "\n" << "report:  " << dat_path << "\n";
+  std::cout << "results: " << h5_path << "\n"
+            << "report:  " << dat_path << "\n";
   std::cout << fmt::format("solved {} dofs with {} in {} step(s)\n", report.dofs,
                            report.linear_solver, model.steps.size());
   return kOk;
@@ -115,8 +116,10 @@ int solve_command(const SolveArgs& args) {
   if (args.ranks > 1 && !under_runner) return launch_ranks(args);
   const MpiWorld world = under_runner ? join_mpi_world() : MpiWorld{};
   if (args.ranks > 1 && args.ranks != world.size)
-    throw InputError({}, "--ranks " + std::to_string(args.ranks) + " under an MPI runner that "
-                             "started " + std::to_string(world.size) +
+    throw InputError({}, "--ranks " + std::to_string(args.ranks) +
+                             " under an MPI runner that "
+                             "started " +
+                             std::to_string(world.size) +
                              " ranks: the runner's -n decides (drop --ranks)");
   if (world.size == 1) return solve_here(args, world);
   // Errors every rank meets together (the same deck, collective solves) are reported once, by

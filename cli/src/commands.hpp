@@ -28,10 +28,10 @@ struct InfoArgs {
 int info_command(const InfoArgs& args);
 
 struct ExportArgs {
-  std::string input;            // .styk.h5 results file or .inp deck (mesh only)
-  std::string output;           // .vtu path; default: input stem + .vtu
-  int step = 0;                 // 0 = last
-  int increment = 0;            // 0 = last of the step
+  std::string input;   // .styk.h5 results file or .inp deck (mesh only)
+  std::string output;  // .vtu path; default: input stem + .vtu
+  int step = 0;        // 0 = last
+  int increment = 0;   // 0 = last of the step
 };
 int export_command(const ExportArgs& args);
 

@@ -7,11 +7,11 @@ namespace styk::cli {
 
 enum ExitCode : int {
   kOk = 0,
-  kBadInput = 1,       // InputError: "file:line: message"
-  kNotConverged = 2,   // NotConvergedError
-  kInternalError = 3,  // anything else: a bug in Styk
-  kUnverifiable = 4,   // `styk check`: a results file written before checksums, otherwise sound
-  kResourceLimit = 5,  // ResourceLimitError or std::bad_alloc: the model does not fit in memory
+  kBadInput = 1,        // InputError: "file:line: message"
+  kNotConverged = 2,    // NotConvergedError
+  kInternalError = 3,   // anything else: a bug in Styk
+  kUnverifiable = 4,    // `styk check`: a results file written before checksums, otherwise sound
+  kResourceLimit = 5,   // ResourceLimitError or std::bad_alloc: the model does not fit in memory
   kRunEnvironment = 6,  // a distributed run could not start (no MPI runner) or a rank died
 };
 

@@ -25,18 +25,23 @@ int main(int argc, char** argv) {
   app.set_version_flag("--version", "styk 0.1.0");
 
   SolveArgs solve;
-  CLI::App* solve_cmd = app.add_subcommand("solve", "Solve an .inp model; write MODEL.styk.h5 and MODEL.dat");
+  CLI::App* solve_cmd =
+      app.add_subcommand("solve", "Solve an .inp model; write MODEL.styk.h5 and MODEL.dat");
   solve_cmd->add_option("model", solve.deck, "Input deck (.inp)")->required();
-  solve_cmd->add_option("-o,--output-dir", solve.output_dir, "Directory for the results (default: current)");
-  solve_cmd->add_option("--solver", solve.solver,
-                        "Linear solver: auto (by model size), cholmod (direct), iterative (CG + AMG); "
-                        "overrides *STATIC, SOLVER=")
+  solve_cmd->add_option("-o,--output-dir", solve.output_dir,
+                        "Directory for the results (default: current)");
+  solve_cmd
+      ->add_option("--solver", solve.solver,
+                   "Linear solver: auto (by model size), cholmod (direct), iterative (CG + AMG); "
+                   "overrides *STATIC, SOLVER=")
       ->check(CLI::IsMember({"auto", "cholmod", "iterative"}));
-  solve_cmd->add_option("--threads", solve.threads, "Threads for assembly and recovery (0 = all cores)")
+  solve_cmd
+      ->add_option("--threads", solve.threads, "Threads for assembly and recovery (0 = all cores)")
       ->check(CLI::NonNegativeNumber);
-  solve_cmd->add_option("--memory-limit", solve.memory_limit_gb,
-                        "GB the direct solver's factor may take (default: 80 % of the memory); "
-                        "above it auto switches to the iterative solver, cholmod stops")
+  solve_cmd
+      ->add_option("--memory-limit", solve.memory_limit_gb,
+                   "GB the direct solver's factor may take (default: 80 % of the memory); "
+                   "above it auto switches to the iterative solver, cholmod stops")
       ->check(CLI::PositiveNumber);
   solve_cmd->add_flag("-q,--quiet", solve.quiet, "No progress lines on stderr");
   std::string progress_format = "text";
@@ -45,28 +50,34 @@ int main(int argc, char** argv) {
                    "Progress on stderr: text (for people) or json (one JSON object per line, "
                    "docs/cli.md \"Progress protocol\")")
       ->check(CLI::IsMember({"text", "json"}));
-  solve_cmd->add_option("--ranks", solve.ranks,
-                        "Solve across N MPI ranks on this machine: starts mpirun (or $STYK_MPIRUN) "
-                        "itself; under mpirun the runner's -n decides")
+  solve_cmd
+      ->add_option("--ranks", solve.ranks,
+                   "Solve across N MPI ranks on this machine: starts mpirun (or $STYK_MPIRUN) "
+                   "itself; under mpirun the runner's -n decides")
       ->check(CLI::NonNegativeNumber);
 
   InfoArgs info;
-  CLI::App* info_cmd = app.add_subcommand("info", "Read an .inp model and print counts, sets, materials, steps, DOFs");
+  CLI::App* info_cmd = app.add_subcommand(
+      "info", "Read an .inp model and print counts, sets, materials, steps, DOFs");
   info_cmd->add_option("model", info.deck, "Input deck (.inp)")->required();
 
   ExportArgs exp;
   bool vtu = false;
-  CLI::App* export_cmd = app.add_subcommand("export", "Export a results file (or a deck's mesh) for other programs");
+  CLI::App* export_cmd =
+      app.add_subcommand("export", "Export a results file (or a deck's mesh) for other programs");
   export_cmd->add_option("input", exp.input, "Results file (.styk.h5) or deck (.inp)")->required();
-  export_cmd->add_flag("--vtu", vtu, "Write a VTK XML unstructured grid (.vtu) for ParaView")->required();
+  export_cmd->add_flag("--vtu", vtu, "Write a VTK XML unstructured grid (.vtu) for ParaView")
+      ->required();
   export_cmd->add_option("-o,--output", exp.output, "Output file (default: input name with .vtu)");
-  export_cmd->add_option("--step", exp.step, "Step number (default: last)")->check(CLI::NonNegativeNumber);
+  export_cmd->add_option("--step", exp.step, "Step number (default: last)")
+      ->check(CLI::NonNegativeNumber);
   export_cmd->add_option("--inc", exp.increment, "Increment within the step (default: last)")
       ->check(CLI::NonNegativeNumber);
 
   CheckArgs check;
   CLI::App* check_cmd = app.add_subcommand(
-      "check", "Verify a results file: schema, checksums, finite values, consistency; exit 0 if whole");
+      "check",
+      "Verify a results file: schema, checksums, finite values, consistency; exit 0 if whole");
   check_cmd->add_option("results", check.results, "Results file (.styk.h5)")->required();
 
   MeshArgs mesh;
@@ -79,49 +90,95 @@ int main(int argc, char** argv) {
 
 #ifdef STYK_WITH_RENDER
   RenderArgs render;
-  CLI::App* render_cmd = app.add_subcommand("render", "Draw a results file (or a deck's mesh) headless into a PNG or BMP");
-  render_cmd->add_option("input", render.input, "Results file (.styk.h5) or deck (.inp, mesh only)")->required();
-  render_cmd->add_option("-o,--output", render.output, "Picture (.png or .bmp; .gif/.mp4 with --animate and ffmpeg); default: input name with .png");
-  render_cmd->add_option("--step", render.step, "Step number (default: last)")->check(CLI::NonNegativeNumber);
-  render_cmd->add_option("--inc", render.increment, "Increment within the step (default: last)")->check(CLI::NonNegativeNumber);
-  render_cmd->add_option("--field", render.field, "Contour field: U, U.x, RF.mag, S.mises, S.p1, S.11, E.22, ... (default: none)");
-  render_cmd->add_option("--averaging", render.averaging, "Stress/strain averaging: none, I, II, centroid (default: II)");
-  render_cmd->add_option("--fibre", render.fibre, "Shells: the fibre whose stress/strain is drawn: bottom, middle, top (default: top)");
-  render_cmd->add_option("--bands", render.bands, "Contour colours, 2..24 (default: 12)")->check(CLI::Range(2, 24));
+  CLI::App* render_cmd = app.add_subcommand(
+      "render", "Draw a results file (or a deck's mesh) headless into a PNG or BMP");
+  render_cmd->add_option("input", render.input, "Results file (.styk.h5) or deck (.inp, mesh only)")
+      ->required();
+  render_cmd->add_option(
+      "-o,--output", render.output,
+      "Picture (.png or .bmp; .gif/.mp4 with --animate and ffmpeg); default: input name with .png");
+  render_cmd->add_option("--step", render.step, "Step number (default: last)")
+      ->check(CLI::NonNegativeNumber);
+  render_cmd->add_option("--inc", render.increment, "Increment within the step (default: last)")
+      ->check(CLI::NonNegativeNumber);
+  render_cmd->add_option(
+      "--field", render.field,
+      "Contour field: U, U.x, RF.mag, S.mises, S.p1, S.11, E.22, ... (default: none)");
+  render_cmd->add_option("--averaging", render.averaging,
+                         "Stress/strain averaging: none, I, II, centroid (default: II)");
+  render_cmd->add_option(
+      "--fibre", render.fibre,
+      "Shells: the fibre whose stress/strain is drawn: bottom, middle, top (default: top)");
+  render_cmd->add_option("--bands", render.bands, "Contour colours, 2..24 (default: 12)")
+      ->check(CLI::Range(2, 24));
   render_cmd->add_flag("--smooth", render.smooth, "Continuous colours instead of bands");
   render_cmd->add_flag("--contact-only", render.contact_only,
                        "With a contact field: draw only the faces that carry contact output");
-  render_cmd->add_flag("--all-faces", render.all_faces,
-                       "With a contact field: draw every face even where the contact faces are hidden");
-  render_cmd->add_option("--contact-pair", render.contact_pair, "With a contact field: one *CONTACT PAIR's output, by its slave surface or number (1, 2, ...)");
-  render_cmd->add_option("--range", render.range, "Colour scale MIN,MAX (default: the field's range over the shown elements)");
-  render_cmd->add_flag("--ip-values", render.ip_values, "Draw the field's integration-point values as coloured points over the mesh");
-  render_cmd->add_option("--labels", render.labels, "Numbers of the seen entities: nodes, elements or nodes,elements");
-  render_cmd->add_flag("--unroll", render.unroll, "Unrolled map of a contact field over (angle, axial position), or (x, y) on a flat surface");
-  render_cmd->add_option("--unroll-axis", render.unroll_axis, "The fit's axis for --unroll: PX,PY,PZ,DX,DY,DZ (default: fitted)");
-  render_cmd->add_option("--samples", render.samples, "Samples per pixel smoothing the edges, 1..16 (default: 4)")->check(CLI::Range(1, 16));
-  render_cmd->add_option("--deform", render.deform, "Deformation scale: auto, none or a factor (default: auto with results)");
-  render_cmd->add_flag("--no-outline", render.no_outline, "No undeformed outline under the deformed shape");
-  render_cmd->add_option("--mode", render.mode, "points, wireframe, hidden, shaded, shaded-edges (default: shaded)");
+  render_cmd->add_flag(
+      "--all-faces", render.all_faces,
+      "With a contact field: draw every face even where the contact faces are hidden");
+  render_cmd->add_option("--contact-pair", render.contact_pair,
+                         "With a contact field: one *CONTACT PAIR's output, by its slave surface "
+                         "or number (1, 2, ...)");
+  render_cmd->add_option(
+      "--range", render.range,
+      "Colour scale MIN,MAX (default: the field's range over the shown elements)");
+  render_cmd->add_flag(
+      "--ip-values", render.ip_values,
+      "Draw the field's integration-point values as coloured points over the mesh");
+  render_cmd->add_option("--labels", render.labels,
+                         "Numbers of the seen entities: nodes, elements or nodes,elements");
+  render_cmd->add_flag(
+      "--unroll", render.unroll,
+      "Unrolled map of a contact field over (angle, axial position), or (x, y) on a flat surface");
+  render_cmd->add_option("--unroll-axis", render.unroll_axis,
+                         "The fit's axis for --unroll: PX,PY,PZ,DX,DY,DZ (default: fitted)");
+  render_cmd
+      ->add_option("--samples", render.samples,
+                   "Samples per pixel smoothing the edges, 1..16 (default: 4)")
+      ->check(CLI::Range(1, 16));
+  render_cmd->add_option("--deform", render.deform,
+                         "Deformation scale: auto, none or a factor (default: auto with results)");
+  render_cmd->add_flag("--no-outline", render.no_outline,
+                       "No undeformed outline under the deformed shape");
+  render_cmd->add_option("--mode", render.mode,
+                         "points, wireframe, hidden, shaded, shaded-edges (default: shaded)");
   render_cmd->add_option("--view", render.view, "iso, +x, -x, +y, -y, +z, -z (default: iso)");
-  render_cmd->add_option("--azimuth", render.azimuth, "Turn the view about the screen vertical, degrees");
-  render_cmd->add_option("--elevation", render.elevation, "Raise the eye about the screen horizontal, degrees");
-  render_cmd->add_option("--zoom", render.zoom, "Zoom factor (> 1 enlarges)")->check(CLI::PositiveNumber);
-  render_cmd->add_flag("--perspective", render.perspective, "Perspective instead of orthographic projection");
-  render_cmd->add_option("--layers", render.layers, "Element sets shown as layers, comma-separated (default: whole model)");
-  render_cmd->add_option("--hide-layers", render.hide_layers, "Layers (among --layers) not shown, comma-separated");
+  render_cmd->add_option("--azimuth", render.azimuth,
+                         "Turn the view about the screen vertical, degrees");
+  render_cmd->add_option("--elevation", render.elevation,
+                         "Raise the eye about the screen horizontal, degrees");
+  render_cmd->add_option("--zoom", render.zoom, "Zoom factor (> 1 enlarges)")
+      ->check(CLI::PositiveNumber);
+  render_cmd->add_flag("--perspective", render.perspective,
+                       "Perspective instead of orthographic projection");
+  render_cmd->add_option("--layers", render.layers,
+                         "Element sets shown as layers, comma-separated (default: whole model)");
+  render_cmd->add_option("--hide-layers", render.hide_layers,
+                         "Layers (among --layers) not shown, comma-separated");
   render_cmd->add_option("--elements", render.elements, "Element id range FIRST-LAST");
   render_cmd->add_option("--types", render.types, "Element types, comma-separated");
   render_cmd->add_option("--size", render.size, "Picture size WIDTHxHEIGHT (default: 1600x1200)");
-  render_cmd->add_option("--revolve", render.revolve, "Draw axisymmetric elements (CAX...) as the body swept about the y axis through this many degrees (0 < angle <= 360)")->check(CLI::Range(0.0, 360.0));
-  render_cmd->add_option("--revolve-segments", render.revolve_segments, "Sectors of the --revolve sweep (default: one per 15 degrees)")->check(CLI::PositiveNumber);
-  render_cmd->add_option("--animate", render.animate, "Write N frames of the deformation from 0 to the scale")->check(CLI::PositiveNumber);
+  render_cmd
+      ->add_option("--revolve", render.revolve,
+                   "Draw axisymmetric elements (CAX...) as the body swept about the y axis through "
+                   "this many degrees (0 < angle <= 360)")
+      ->check(CLI::Range(0.0, 360.0));
+  render_cmd
+      ->add_option("--revolve-segments", render.revolve_segments,
+                   "Sectors of the --revolve sweep (default: one per 15 degrees)")
+      ->check(CLI::PositiveNumber);
+  render_cmd
+      ->add_option("--animate", render.animate,
+                   "Write N frames of the deformation from 0 to the scale")
+      ->check(CLI::PositiveNumber);
 #endif
 
   VerifyArgs verify;
   CLI::App* verify_cmd = app.add_subcommand(
       "verify", "Run the SPEC §3.1 element tests for every element; print or write Tab 3.13");
-  verify_cmd->add_flag("--list", verify.list, "List the test cases (SPEC section, builder, measure)");
+  verify_cmd->add_flag("--list", verify.list,
+                       "List the test cases (SPEC section, builder, measure)");
   verify_cmd->add_option("--case", verify.case_name, "Run one case (see --list) for every element");
   verify_cmd->add_option("--table", verify.table, "Regenerate a table: 3.13 (SPEC §3.1.9 grades)");
   verify_cmd->add_option("--write", verify.write_path,
@@ -129,8 +186,7 @@ int main(int argc, char** argv) {
 
   StudyArgs study;
   CLI::App* study_cmd = app.add_subcommand(
-      "study",
-      "Studies: accuracy atlas, stability sweeps, model size, the SPEC §4 joint reports");
+      "study", "Studies: accuracy atlas, stability sweeps, model size, the SPEC §4 joint reports");
   study_cmd->require_subcommand(1);
   CLI::App* study_run =
       study_cmd->add_subcommand("run", "One run: build, solve, measure; print its CSV row");
@@ -194,25 +250,27 @@ int main(int argc, char** argv) {
 
   if (progress_format == "json") solve.progress = ProgressFormat::JsonLines;
   const ErrorOutput errors = *solve_cmd && solve.progress == ProgressFormat::JsonLines
-                                ? ErrorOutput::JsonLines
-                                : ErrorOutput::Text;
-  return run_reporting_errors([&]() -> int {
-    if (*solve_cmd) return solve_command(solve);
-    if (*info_cmd) return info_command(info);
-    if (*export_cmd) return export_command(exp);
-    if (*check_cmd) return check_command(check);
+                                 ? ErrorOutput::JsonLines
+                                 : ErrorOutput::Text;
+  return run_reporting_errors(
+      [&]() -> int {
+        if (*solve_cmd) return solve_command(solve);
+        if (*info_cmd) return info_command(info);
+        if (*export_cmd) return export_command(exp);
+        if (*check_cmd) return check_command(check);
 #ifdef STYK_WITH_RENDER
-    if (*render_cmd) return render_command(render);
+        if (*render_cmd) return render_command(render);
 #endif
-    if (*mesh_cmd) {
-      mesh.params = mesh_cmd->remaining();
-      return mesh_command(mesh);
-    }
-    if (*verify_cmd) return verify_command(verify);
-    if (*study_cmd) {
-      for (CLI::App* sub : study_cmd->get_subcommands()) study.kind = sub->get_name();
-      return study_command(study);
-    }
-    return elements_command();
-  }, errors);
+        if (*mesh_cmd) {
+          mesh.params = mesh_cmd->remaining();
+          return mesh_command(mesh);
+        }
+        if (*verify_cmd) return verify_command(verify);
+        if (*study_cmd) {
+          for (CLI::App* sub : study_cmd->get_subcommands()) study.kind = sub->get_name();
+          return study_command(study);
+        }
+        return elements_command();
+      },
+      errors);
 }

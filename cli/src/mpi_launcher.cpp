@@ -54,7 +54,8 @@ std::vector<std::string> runner_command(const SolveArgs& args, const std::string
   if (args.memory_limit_gb > 0.0)
     command.insert(command.end(), {"--memory-limit", format_number(args.memory_limit_gb)});
   if (args.quiet) command.push_back("-q");
-  if (args.progress == ProgressFormat::JsonLines) command.insert(command.end(), {"--progress", "json"});
+  if (args.progress == ProgressFormat::JsonLines)
+    command.insert(command.end(), {"--progress", "json"});
   return command;
 }
 
@@ -67,8 +68,8 @@ int run_and_wait(const std::vector<std::string>& command) {
   std::cout.flush();
   std::cerr.flush();
   const pid_t child = fork();
-  if (child < 0) throw std::runtime_error(std::string("cannot start the MPI runner: ") +
-                                          std::strerror(errno));
+  if (child < 0)
+    throw std::runtime_error(std::string("cannot start the MPI runner: ") + std::strerror(errno));
   if (child == 0) {
     execv(argv[0], argv.data());
     _exit(127);

@@ -38,7 +38,7 @@ struct RenderArgs {
   std::string elements;     // element id range FIRST-LAST
   std::string types;        // comma-separated element types
   std::string size = "1600x1200";
-  int animate = 0;  // > 0: that many frames of the deformation from 0 to the scale
+  int animate = 0;           // > 0: that many frames of the deformation from 0 to the scale
   double revolve = 0.0;      // > 0: axisymmetric elements drawn swept through this many degrees
   int revolve_segments = 0;  // sectors of the sweep; 0 = one per 15 degrees
 };

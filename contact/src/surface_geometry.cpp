@@ -98,7 +98,9 @@ std::array<double, 2> face_coordinates(const PlacedFace& f, const Vec3& xi) {
     Eigen::Matrix<double, 3, 2> T;
     T << dp, dq;
     const Eigen::Vector2d step =
-        (T.transpose() * T).ldlt().solve(T.transpose() * (target - Eigen::Vector3d(at[0], at[1], at[2])));
+        (T.transpose() * T)
+            .ldlt()
+            .solve(T.transpose() * (target - Eigen::Vector3d(at[0], at[1], at[2])));
     pq[0] += step[0];
     pq[1] += step[1];
     if (step.lpNorm<Eigen::Infinity>() < 1e-14) break;
@@ -126,7 +128,8 @@ void face_map(const PlacedFace& f, double p, double q, Eigen::Vector3d& x, Eigen
   x = f.geometry.X.transpose() * N;
   xp = f.geometry.X.transpose() * (dN * dp);
   // An edge's second direction is z itself (the element has no extent along it).
-  xq = is_edge(f) ? Eigen::Vector3d::UnitZ() : Eigen::Vector3d(f.geometry.X.transpose() * (dN * dq));
+  xq =
+      is_edge(f) ? Eigen::Vector3d::UnitZ() : Eigen::Vector3d(f.geometry.X.transpose() * (dN * dq));
 }
 
 Eigen::Vector3d outward_normal(const PlacedFace& f, double p, double q) {

@@ -225,8 +225,7 @@ void TElement::stiffness(const ElementGeometry& g, const ElementMaterial& materi
                          Eigen::MatrixXd& K, const ElementOptions& options) const {
   check_geometry(g, *this);
   element_detail::ElementSystem system;
-  element_detail::integrate_system(*this, g, material, rule(kind), options, false, nullptr,
-                                   system);
+  element_detail::integrate_system(*this, g, material, rule(kind), options, false, nullptr, system);
   K = std::move(system.Kuu);
   if (system.Kaa.rows() > 0) {
     // Static condensation of the incompatible modes: K = Kuu - Kua Kaa^-1 Kua^T.
@@ -358,24 +357,24 @@ void TElement::strains_stresses(const ElementGeometry& g, const ElementMaterial&
     engineering.noalias() = op.B() * u;
     if (modes.size() > 0) engineering.noalias() += op.G() * modes;
     // sigma = D (eps - eps_th) + sigma0 = D eps - (D eps_th - sigma0).
-    stress.row(k).noalias() = (law.D() * engineering - law.prestress(initial_stress, k)).transpose();
+    stress.row(k).noalias() =
+        (law.D() * engineering - law.prestress(initial_stress, k)).transpose();
     complete_strain(law.point(), engineering);
     strain.row(k) = engineering.transpose();
     strain.row(k).tail<3>() *= 0.5;  // report tensor shear components eps_ij = gamma_ij / 2
   }
 }
 
-void TElement::strains_stresses(const ElementGeometry& g, const Material& material,
-                                RuleKind kind, const Eigen::Ref<const Eigen::VectorXd>& u,
-                                Eigen::MatrixXd& strain, Eigen::MatrixXd& stress,
-                                const ElementOptions& options,
+void TElement::strains_stresses(const ElementGeometry& g, const Material& material, RuleKind kind,
+                                const Eigen::Ref<const Eigen::VectorXd>& u, Eigen::MatrixXd& strain,
+                                Eigen::MatrixXd& stress, const ElementOptions& options,
                                 const Eigen::VectorXd* nodal_dT) const {
   if (!nodal_dT) {
     strains_stresses(g, ElementMaterial(material), kind, u, strain, stress, options);
     return;
   }
-  strains_stresses(g, with_temperature_change(material, *nodal_dT, *this), kind, u, strain,
-                   stress, options);
+  strains_stresses(g, with_temperature_change(material, *nodal_dT, *this), kind, u, strain, stress,
+                   options);
 }
 
 void TElement::point_volumes(const ElementGeometry& g, RuleKind kind, Eigen::VectorXd& dv) const {
@@ -391,8 +390,8 @@ void TElement::point_volumes(const ElementGeometry& g, RuleKind kind, Eigen::Vec
   }
 }
 
-void TElement::point_laws(const ElementGeometry& g, const ElementMaterial& material,
-                          RuleKind kind, std::vector<MaterialPoint>& laws) const {
+void TElement::point_laws(const ElementGeometry& g, const ElementMaterial& material, RuleKind kind,
+                          std::vector<MaterialPoint>& laws) const {
   check_geometry(g, *this);
   const IntegrationRule r = rule(kind);
   const int n = node_count();

@@ -9,9 +9,7 @@ namespace {
 
 Eigen::Vector3d vec(const Vec3& v) { return {v[0], v[1], v[2]}; }
 
-double scale_of(const LocalAxes& axes) {
-  return std::max(vec(axes.a).norm(), vec(axes.b).norm());
-}
+double scale_of(const LocalAxes& axes) { return std::max(vec(axes.a).norm(), vec(axes.b).norm()); }
 
 // The component of x - a normal to the axis a -> b (cylindrical systems).
 Eigen::Vector3d radial(const LocalAxes& axes, const Vec3& x) {
@@ -33,8 +31,7 @@ std::string axes_defect(const LocalAxes& axes) {
       return "point b must not lie on the line of a (it gives the local x-y plane)";
     return "";
   }
-  if (!((b - a).norm() > kAxesTolerance * scale))
-    return "the two axis points a and b must differ";
+  if (!((b - a).norm() > kAxesTolerance * scale)) return "the two axis points a and b must differ";
   return "";
 }
 

@@ -104,7 +104,7 @@ IntegrationRule Beam::rule(RuleKind kind) const {
 }
 
 double Beam::point_measure(const ElementGeometry& g, const Eigen::Ref<const Eigen::VectorXd>& /*N*/,
-                       const Eigen::Ref<const Eigen::MatrixXd>& dN,
+                           const Eigen::Ref<const Eigen::MatrixXd>& dN,
                            Eigen::Ref<Eigen::MatrixXd> dNdx, int point) const {
   const Eigen::Vector3d tangent = g.X.transpose() * dN.col(0);
   const double J = tangent.norm();

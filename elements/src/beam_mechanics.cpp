@@ -148,12 +148,13 @@ void Beam::body_load(const ElementGeometry& g, double density, RuleKind,
   // Mass per length density A; one Gauss point more than the nodes integrates the linear field
   // of a centrifugal load exactly on a straight element.
   const double mass = density * beam_section_properties(*g.section->beam).area;
-  line_load(*this, g, node_count() + 1,
-            [&](const StationFrame&, const Eigen::Vector3d& x) {
-              const Vec3 a = acceleration.at({x(0), x(1), x(2)});
-              return Eigen::Vector3d(mass * a[0], mass * a[1], mass * a[2]);
-            },
-            f);
+  line_load(
+      *this, g, node_count() + 1,
+      [&](const StationFrame&, const Eigen::Vector3d& x) {
+        const Vec3 a = acceleration.at({x(0), x(1), x(2)});
+        return Eigen::Vector3d(mass * a[0], mass * a[1], mass * a[2]);
+      },
+      f);
 }
 
 void Beam::pressure_load(const ElementGeometry& g, int face, double p, Eigen::VectorXd& f) const {
@@ -169,11 +170,12 @@ void Beam::pressure_load(const ElementGeometry& g, int face, double p, Eigen::Ve
                                   "of the plane, so P1 has nothing to load; use P2 (along the "
                                   "in-plane normal n2)");
   // Gauss rule with as many points as nodes: exact for a uniform load on a straight element.
-  line_load(*this, g, node_count(),
-            [&](const StationFrame& frame, const Eigen::Vector3d&) -> Eigen::Vector3d {
-              return p * (face == 0 ? frame.n1 : frame.n2);
-            },
-            f);
+  line_load(
+      *this, g, node_count(),
+      [&](const StationFrame& frame, const Eigen::Vector3d&) -> Eigen::Vector3d {
+        return p * (face == 0 ? frame.n1 : frame.n2);
+      },
+      f);
 }
 
 void Beam::section_resultants(const ElementGeometry& g, const ElementMaterial& material,
@@ -193,8 +195,8 @@ void Beam::section_resultants(const ElementGeometry& g, const ElementMaterial& m
 
 void Beam::strains_stresses(const ElementGeometry& g, const ElementMaterial& material,
                             RuleKind kind, const Eigen::Ref<const Eigen::VectorXd>& u,
-                            Eigen::MatrixXd& strain, Eigen::MatrixXd& stress,
-                            const ElementOptions&, const Eigen::MatrixXd* initial_stress) const {
+                            Eigen::MatrixXd& strain, Eigen::MatrixXd& stress, const ElementOptions&,
+                            const Eigen::MatrixXd* initial_stress) const {
   if (initial_stress != nullptr)
     throw InputError(g.where, beam_detail::label(*this, g) +
                                   ": *INITIAL CONDITIONS, TYPE=STRESS is not supported on beams");

@@ -2,8 +2,8 @@
 
 #include <memory>
 
-#include "styk/elements/beam.hpp"
 #include "styk/elements/axisymmetric.hpp"
+#include "styk/elements/beam.hpp"
 #include "styk/elements/c3d20.hpp"
 #include "styk/elements/c3d20r.hpp"
 #include "styk/elements/c3d27.hpp"
@@ -28,10 +28,10 @@ void register_builtin_elements(ElementRegistry& registry) {
   registry.add(std::make_unique<C3D20>(), source);
   registry.add(std::make_unique<C3D20R>(), source);
   registry.add(std::make_unique<C3D27>(), source);
-  registry.add(std::make_unique<PlaneQuad4>(PlaneKind::Stress), source);  // CPS4
-  registry.add(std::make_unique<PlaneQuad4>(PlaneKind::Strain), source);  // CPE4
-  registry.add(std::make_unique<PlaneQuad8>(PlaneKind::Stress), source);  // CPS8
-  registry.add(std::make_unique<PlaneQuad8>(PlaneKind::Strain), source);  // CPE8
+  registry.add(std::make_unique<PlaneQuad4>(PlaneKind::Stress), source);        // CPS4
+  registry.add(std::make_unique<PlaneQuad4>(PlaneKind::Strain), source);        // CPE4
+  registry.add(std::make_unique<PlaneQuad8>(PlaneKind::Stress), source);        // CPS8
+  registry.add(std::make_unique<PlaneQuad8>(PlaneKind::Strain), source);        // CPE8
   registry.add(std::make_unique<PlaneQuad8>(PlaneKind::Stress, true), source);  // CPS8R
   registry.add(std::make_unique<PlaneQuad8>(PlaneKind::Strain, true), source);  // CPE8R
   registry.add(std::make_unique<C3D4>(), source);

@@ -69,7 +69,8 @@ void PlaneElement::dee(const MaterialPoint& material, Matrix6d& D) const {
   }
 }
 
-double PlaneElement::point_measure(const ElementGeometry& g, const Eigen::Ref<const Eigen::VectorXd>&,
+double PlaneElement::point_measure(const ElementGeometry& g,
+                                   const Eigen::Ref<const Eigen::VectorXd>&,
                                    const Eigen::Ref<const Eigen::MatrixXd>& dN,
                                    Eigen::Ref<Eigen::MatrixXd> dNdx, int point) const {
   check_thickness(g, *this);
@@ -112,8 +113,7 @@ void PlaneElement::complete_strain(const MaterialPoint& material,
     }
   }
   const Eigen::Vector3d out = Doo.inverse() * (Doi * mechanical_in);
-  for (int i = 0; i < 3; ++i)
-    engineering(kOut[i]) = material.thermal_strain(kOut[i]) - out(i);
+  for (int i = 0; i < 3; ++i) engineering(kOut[i]) = material.thermal_strain(kOut[i]) - out(i);
 }
 
 }  // namespace styk

@@ -21,7 +21,10 @@ IntegrationRule PlaneQuad4::rule(RuleKind kind) const {
 }
 
 PlaneQuad8::PlaneQuad8(PlaneKind kind, bool reduced)
-    : PlaneElement(kind), reduced_(reduced), nodes_(quad8_natural_nodes()), edges_(quad_edges(true)) {}
+    : PlaneElement(kind),
+      reduced_(reduced),
+      nodes_(quad8_natural_nodes()),
+      edges_(quad_edges(true)) {}
 
 std::string PlaneQuad8::description() const {
   return "8-node quadratic quadrilateral, " + kind_words() +

@@ -86,8 +86,8 @@ double surface_point_measure(const TElement& element, const ElementGeometry& g,
   const double area = normal.norm();
   const double scale = std::max(g.X.cwiseAbs().maxCoeff(), 1e-300);
   if (!(area > 1e-12 * scale * scale))
-    throw InputError(g.where, label(element, g) + ": " + degenerate + " at point " +
-                                  std::to_string(point));
+    throw InputError(g.where,
+                     label(element, g) + ": " + degenerate + " at point " + std::to_string(point));
   Eigen::Matrix3d J;
   J << g1, g2, normal / area;
   const Eigen::Matrix3d inverse = J.inverse();  // rows: the dual vectors g^1, g^2, n
@@ -110,7 +110,8 @@ void simpson(int n, std::vector<double>& points, std::vector<double>& weights) {
   }
 }
 
-ShellSetup section_setup(const TElement& shell, const ElementGeometry& g, const Material& material) {
+ShellSetup section_setup(const TElement& shell, const ElementGeometry& g,
+                         const Material& material) {
   const int n = shell.node_count();
   if (g.X.rows() != n || g.X.cols() != 3)
     throw InputError(g.where, label(shell, g) + ": has " + std::to_string(g.X.rows()) +

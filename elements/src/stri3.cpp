@@ -12,7 +12,8 @@ namespace {
 // The triangle's 3-point rule (points inside, weights 1/6: exact to second order).
 IntegrationRule triangle_rule() {
   IntegrationRule r;
-  r.points = {{1.0 / 6.0, 1.0 / 6.0, 0.0}, {2.0 / 3.0, 1.0 / 6.0, 0.0}, {1.0 / 6.0, 2.0 / 3.0, 0.0}};
+  r.points = {
+      {1.0 / 6.0, 1.0 / 6.0, 0.0}, {2.0 / 3.0, 1.0 / 6.0, 0.0}, {1.0 / 6.0, 2.0 / 3.0, 0.0}};
   r.weights = {1.0 / 6.0, 1.0 / 6.0, 1.0 / 6.0};
   return r;
 }

@@ -34,7 +34,8 @@ Frame frame(const Stri3& element, const ElementGeometry& g) {
   Frame f;
   f.R = shell_detail::lamina_axes_of_normal(normal);
   for (int c = 0; c < 3; ++c)
-    f.x.row(c) = (f.R.leftCols<2>().transpose() * (g.X.row(c) - g.X.row(0)).transpose()).transpose();
+    f.x.row(c) =
+        (f.R.leftCols<2>().transpose() * (g.X.row(c) - g.X.row(0)).transpose()).transpose();
   for (int k = 0; k < 6; ++k) f.L.block<3, 3>(3 * k, 3 * k) = f.R.transpose();
   f.area = 0.5 * normal.norm();
   return f;
@@ -52,7 +53,8 @@ Op3 membrane(const Frame& f) {
 template <int Rows>
 Eigen::Matrix<double, Rows, 18> plate_columns(const Eigen::Matrix<double, Rows, 9>& plate) {
   Eigen::Matrix<double, Rows, 18> B = Eigen::Matrix<double, Rows, 18>::Zero();
-  for (int a = 0; a < 3; ++a) B.template middleCols<3>(6 * a + 2) = plate.template middleCols<3>(3 * a);
+  for (int a = 0; a < 3; ++a)
+    B.template middleCols<3>(6 * a + 2) = plate.template middleCols<3>(3 * a);
   return B;
 }
 
@@ -84,7 +86,8 @@ Row18 drilling(const Frame& f, double xi, double eta) {
 const IntegrationRule& surface_rule() {
   static const IntegrationRule r = [] {
     IntegrationRule s;
-    s.points = {{1.0 / 6.0, 1.0 / 6.0, 0.0}, {2.0 / 3.0, 1.0 / 6.0, 0.0}, {1.0 / 6.0, 2.0 / 3.0, 0.0}};
+    s.points = {
+        {1.0 / 6.0, 1.0 / 6.0, 0.0}, {2.0 / 3.0, 1.0 / 6.0, 0.0}, {1.0 / 6.0, 2.0 / 3.0, 0.0}};
     s.weights = {1.0 / 6.0, 1.0 / 6.0, 1.0 / 6.0};
     return s;
   }();
@@ -98,7 +101,9 @@ void check_displacements(const Stri3& element, const ElementGeometry& g,
                                 std::to_string(u.size()) + " entries, expected 18");
 }
 
-Eigen::Matrix3d plane_stress(const shell_detail::ShellSetup& s) { return s.D.topLeftCorner<3, 3>(); }
+Eigen::Matrix3d plane_stress(const shell_detail::ShellSetup& s) {
+  return s.D.topLeftCorner<3, 3>();
+}
 
 void put_tensor(const Eigen::Matrix3d& m, Eigen::MatrixXd& rows, Eigen::Index row) {
   rows.row(row) << m(0, 0), m(1, 1), m(2, 2), m(0, 1), m(0, 2), m(1, 2);
@@ -129,9 +134,10 @@ void Stri3::stiffness(const ElementGeometry& g, const ElementMaterial& material,
   K = 0.5 * (K + K.transpose()).eval();
 }
 
-void Stri3::strains_stresses(const ElementGeometry& g, const ElementMaterial& material, RuleKind kind,
-                             const Eigen::Ref<const Eigen::VectorXd>& u, Eigen::MatrixXd& strain,
-                             Eigen::MatrixXd& stress, const ElementOptions& options,
+void Stri3::strains_stresses(const ElementGeometry& g, const ElementMaterial& material,
+                             RuleKind kind, const Eigen::Ref<const Eigen::VectorXd>& u,
+                             Eigen::MatrixXd& strain, Eigen::MatrixXd& stress,
+                             const ElementOptions& options,
                              const Eigen::MatrixXd* initial_stress) const {
   Eigen::VectorXd unused;
   eigenstrain_load(g, material, kind, unused, options, initial_stress);  // refuses both

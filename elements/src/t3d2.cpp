@@ -49,8 +49,9 @@ void T3D2::dee(const MaterialPoint& material, Matrix6d& D) const {
   // Uniaxial along the bar: the modulus of an isotropic law. A direction-dependent law or
   // expansion would need the bar's axis in the material axes, which Styk does not model.
   if (!material.isotropic || !material.isotropic_expansion)
-    throw InputError({}, "element type T3D2 takes an isotropic material only (*ELASTIC, "
-                         "TYPE=ISO and *EXPANSION, TYPE=ISO)");
+    throw InputError({},
+                     "element type T3D2 takes an isotropic material only (*ELASTIC, "
+                     "TYPE=ISO and *EXPANSION, TYPE=ISO)");
   D.setZero();
   D(0, 0) = material.young;  // uniaxial: no lateral stress, whatever nu
 }

@@ -137,8 +137,7 @@ void mesh_bolted_flange(Mesh& mesh, const std::string& type, const FlangeLayout&
     throw std::invalid_argument(
         "bolted flange: the ring needs two layers (gasket and head contact layers differ)");
   if (m.gasket_layers < 1 || m.neck_layers < 1 || m.outer_rings < 1 || m.shank_layers < 1 ||
-      m.head_layers < 1 || !(m.gasket_half > 0) ||
-      !(m.ring_thickness > 0))
+      m.head_layers < 1 || !(m.gasket_half > 0) || !(m.ring_thickness > 0))
     throw std::invalid_argument("bolted flange: counts must be >= 1, the gasket thicker than 0");
   const double z_bottom = m.gasket_half, z_top = z_bottom + m.ring_thickness;
   const double z_neck = z_top + G::kNeckHeight, z_head = z_top + G::kHeadHeight;

@@ -2,8 +2,8 @@
 // 22.5 deg sector 0 <= theta <= 22.5 deg about the pipe axis z, half the joint (z >= 0, the
 // gasket's mid-plane z = 0 is a symmetry plane), the bolt on the sector plane theta = 0 (y = 0),
 // cut through its axis (y >= 0 kept). Stand-in geometry of SPEC §4.6: flange Ø50/Ø165, ring 20
-// thick (FlangeLayout::ring_thickness), neck Ø60/Ø50 rising 30; gasket Ø50/Ø108; bolt on PCD 130, hole Ø18, shank Ø14, head
-// Ø24 x 10. docs/mesher.md ("Bolted flange") shows the block layout.
+// thick (FlangeLayout::ring_thickness), neck Ø60/Ø50 rising 30; gasket Ø50/Ø108; bolt on PCD 130,
+// hole Ø18, shank Ø14, head Ø24 x 10. docs/mesher.md ("Bolted flange") shows the block layout.
 #pragma once
 
 #include <string>
@@ -13,11 +13,11 @@
 namespace styk::mesher::detail {
 
 struct FlangeLayout {
-  double gasket_half = 2.5;  // half the gasket thickness (the model holds z = 0 .. gasket_half)
+  double gasket_half = 2.5;    // half the gasket thickness (the model holds z = 0 .. gasket_half)
   double ring_thickness = 20;  // the flange ring's (its geometry is in the thesis' lost figure)
-  int gasket_rings = 8;      // radial elements of the gasket (= flange elements above it)
-  int neck_rings = 3;        // radial elements of the neck wall (part of gasket_rings)
-  int ring_layers = 20;      // through the flange ring's thickness
+  int gasket_rings = 8;        // radial elements of the gasket (= flange elements above it)
+  int neck_rings = 3;          // radial elements of the neck wall (part of gasket_rings)
+  int ring_layers = 20;        // through the flange ring's thickness
   int neck_layers = 15;
   int gasket_layers = 3;  // through the half gasket
   int outer_rings = 1;    // radial elements between the bolt region and the rim

@@ -34,8 +34,8 @@ namespace {
 const TElement& family_element(const ElementRegistry& registry, const std::string& family) {
   const TElement* element = registry.find(family);
   if (!element)
-    throw InputError({"styk mesh", 0}, "element type " + family +
-                                           " is not registered (are the plug-ins loaded?)");
+    throw InputError({"styk mesh", 0},
+                     "element type " + family + " is not registered (are the plug-ins loaded?)");
   return *element;
 }
 

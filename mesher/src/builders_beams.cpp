@@ -12,8 +12,8 @@ namespace styk::mesher::detail {
 namespace {
 
 // The brick families and the tetrahedra and wedges split from bricks (mesher/split.hpp).
-const std::vector<std::string> kFamilies = {"C3D8",  "C3D20", "C3D14", "C3D21", "C3D28",
-                                            "C3D4",  "C3D10", "C3D6",  "C3D15"};
+const std::vector<std::string> kFamilies = {"C3D8", "C3D20", "C3D14", "C3D21", "C3D28",
+                                            "C3D4", "C3D10", "C3D6",  "C3D15"};
 
 std::string fmt_number(double v) {
   char buf[32];
@@ -24,11 +24,12 @@ std::string fmt_number(double v) {
 // A box beam along x: size (L, width y, height z), TIPFACE = x = L, CONTACT = the face of the
 // C3D21/C3D28 layer: the z = 0 face (bottom), or the y = 0 side face (side: with one element
 // across the width every element has a face there, so the whole beam is of the family).
-Mesh box_beam(const ElementRegistry& registry, const std::string& family, const Vec3& size, const std::array<int, 3>& divisions,
+Mesh box_beam(const ElementRegistry& registry, const std::string& family, const Vec3& size,
+              const std::array<int, 3>& divisions,
               const std::function<void(Mesh&)>& distort = nullptr, bool side_layer = false) {
   Mesh mesh;
-  const Block b =
-      mesh_block(mesh, box_map({0, 0, 0}, size), {base_type(registry, family), divisions, {1, 1, 1}, "EALL"});
+  const Block b = mesh_block(mesh, box_map({0, 0, 0}, size),
+                             {base_type(registry, family), divisions, {1, 1, 1}, "EALL"});
   mesh.add_to_surface("ROOTFACE", b.side_faces(0, -1));
   mesh.add_to_surface("TIPFACE", b.side_faces(0, +1));
   mesh.add_to_surface("CONTACT", side_layer ? b.side_faces(1, -1) : b.side_faces(2, -1));
@@ -104,7 +105,8 @@ BuildResult cantilever(const BuilderParams& p, const ElementRegistry& registry) 
   const double P = p.number("force");
   const bool side_layer = p.choice("layer", {"bottom", "side"}) == "side";
   BuildResult r;
-  r.mesh = box_beam(registry, fam, {L, b, h}, {nx, 1, nz}, cantilever_distortion(p, L, h, nx), side_layer);
+  r.mesh = box_beam(registry, fam, {L, b, h}, {nx, 1, nz}, cantilever_distortion(p, L, h, nx),
+                    side_layer);
   const double E = p.positive("young");
   r.model = finish_model(r.mesh,
                          "SPEC 2.1 cantilever " + fam + " " + mesh_text + ": P = " + fmt_number(P) +
@@ -192,7 +194,8 @@ BuildResult curved_beam(const BuilderParams& p, const ElementRegistry& registry)
     return Vec3{r * std::cos(a), r * std::sin(a), z};
   };
   BuildResult r;
-  const Block b = mesh_block(r.mesh, map, {base_type(registry, fam), {1, nr, n}, {1, 1, 1}, "EALL"});
+  const Block b =
+      mesh_block(r.mesh, map, {base_type(registry, fam), {1, nr, n}, {1, 1, 1}, "EALL"});
   r.mesh.add_to_surface("ROOTFACE", b.side_faces(2, -1));
   r.mesh.add_to_surface("TIPFACE", b.side_faces(2, +1));
   r.mesh.add_to_surface("CONTACT", b.side_faces(0, -1));
@@ -224,7 +227,8 @@ BuildResult twisted_beam(const BuilderParams& p, const ElementRegistry& registry
   const PathMap path = [=](double s) { return Vec3{L * s, 0, 0}; };
   const BlockMap map = sweep(section, path, {0, 1, 0}, [](double s) { return 0.5 * kPi * s; });
   BuildResult r;
-  const Block b = mesh_block(r.mesh, map, {base_type(registry, fam), {across, 1, n}, {1, 1, 1}, "EALL"});
+  const Block b =
+      mesh_block(r.mesh, map, {base_type(registry, fam), {across, 1, n}, {1, 1, 1}, "EALL"});
   r.mesh.add_to_surface("CONTACT", b.side_faces(0, -1));  // the lower row's outer face
   std::vector<int> lower;
   for (const FaceRef& f : b.side_faces(0, -1)) lower.push_back(f.element);

@@ -300,11 +300,10 @@ BuildResult bolted_flange(const BuilderParams& p, const ElementRegistry& registr
                                  "8; half joint), "
                                : "1/32 model (22.5 deg sector, half joint), ") +
           f.family + ": flange D50/D165 x " + fmt_number(f.layout.ring_thickness) +
-          ", neck D60/D50 x 30, gasket D50/D108 x " +
-          fmt_number(2 * f.layout.gasket_half) + " (E " + fmt_number(f.young_gasket) +
-          "), M16 on PCD 130, mu = " + f.mu_text + "; preload " + fmt_number(f.preload / 1000) +
-          " kN (" + fmt_number(bolt_force / 1000) + " kN in the " +
-          (f.cyclic ? "sector's bolt" : "half bolt of the sector") + "), then " +
+          ", neck D60/D50 x 30, gasket D50/D108 x " + fmt_number(2 * f.layout.gasket_half) +
+          " (E " + fmt_number(f.young_gasket) + "), M16 on PCD 130, mu = " + f.mu_text +
+          "; preload " + fmt_number(f.preload / 1000) + " kN (" + fmt_number(bolt_force / 1000) +
+          " kN in the " + (f.cyclic ? "sector's bolt" : "half bolt of the sector") + "), then " +
           fmt_number(f.pressure) + " MPa inside" +
           (f.end_cap ? "" : " without the end-cap thrust") +
           (f.penetration ? ", penetrating the opened gasket interface" : "") +

@@ -74,9 +74,8 @@ BlockMap sleeve_block(const NotchShape& notch, double f0, double f1, double z0, 
 void mesh_sleeve(Mesh& mesh, const std::string& type, const FitMesh& m, const NotchShape& notch,
                  double angle, double sweep, int around) {
   if (notch.notch != Notch::FaceGroove) {
-    const Block b =
-        mesh_block(mesh, sleeve_block(notch, 0, 1, kFitStart, kFitEnd, angle, sweep),
-                   {type, {m.sleeve_rings, around, m.fit_rows}, {1, 1, 1}, "SLEEVE"});
+    const Block b = mesh_block(mesh, sleeve_block(notch, 0, 1, kFitStart, kFitEnd, angle, sweep),
+                               {type, {m.sleeve_rings, around, m.fit_rows}, {1, 1, 1}, "SLEEVE"});
     mesh.add_to_surface("SLEEVE_TOP", b.side_faces(2, +1));
     return;
   }
@@ -205,11 +204,11 @@ constexpr int kFitSectors = 4;
 // The builder's parameters, checked.
 struct FitCase {
   std::string family, model_name, load_case, fit, mu_text;
-  std::string base;     // the brick type the family is meshed from (C3D8 or C3D20)
-  bool full = false;    // model B
-  bool sector = false;  // model B as a 90 deg sector with cyclic symmetry (--sector yes)
-  bool thin = false;    // model C: a thin sector between two symmetry planes
-  int thin_around = 2;  // model C: elements around
+  std::string base;          // the brick type the family is meshed from (C3D8 or C3D20)
+  bool full = false;         // model B
+  bool sector = false;       // model B as a 90 deg sector with cyclic symmetry (--sector yes)
+  bool thin = false;         // model C: a thin sector between two symmetry planes
+  int thin_around = 2;       // model C: elements around
   double sweep = 0.5 * kPi;  // angle of a quarter, or of model C's sector
   FitMesh mesh;
   NotchShape notch;
@@ -235,8 +234,9 @@ FitCase read_fit_case(const BuilderParams& p, const ElementRegistry& registry) {
   if (c.sector && !c.full) p.fail("--sector yes needs --model B (model A is already a quarter)");
   c.fit = p.choice("fit", {"thermal", "clearance"});
   const std::string notch = to_upper(p.choice("notch", {"none", "I", "II"}));
-  c.notch.notch =
-      notch == "I" ? Notch::FaceGroove : notch == "II" ? Notch::SleeveRelief : Notch::None;
+  c.notch.notch = notch == "I"    ? Notch::FaceGroove
+                  : notch == "II" ? Notch::SleeveRelief
+                                  : Notch::None;
   c.notch.groove_lip = p.positive("groove-lip");
   c.notch.groove_width = p.positive("groove-width");
   c.notch.groove_depth = p.positive("groove-depth");
@@ -246,9 +246,11 @@ FitCase read_fit_case(const BuilderParams& p, const ElementRegistry& registry) {
     p.fail("--groove-lip + --groove-width must stay below the sleeve's wall 5");
   if (c.notch.relief_depth >= kSleeveRadius - kShaftRadius ||
       c.notch.relief_length > 0.5 * (kFitEnd - kFitStart))
-    p.fail("--relief-depth must stay below the sleeve's wall 5 and --relief-length at most half "
-           "the sleeve's length 10");
-  if (c.notch.notch == Notch::SleeveRelief && (c.load_case == "torque" || c.load_case == "rotation"))
+    p.fail(
+        "--relief-depth must stay below the sleeve's wall 5 and --relief-length at most half "
+        "the sleeve's length 10");
+  if (c.notch.notch == Notch::SleeveRelief &&
+      (c.load_case == "torque" || c.load_case == "rotation"))
     p.fail("--notch II turns the sleeve's outer diameter down at its ends, where load case " +
            c.load_case + " acts on the outer circle of radius 15: use --notch none or I");
   c.mesh.around = p.count("around", 2);
@@ -411,14 +413,14 @@ void add_load_steps(Model& model, const Mesh& mesh, const FitCase& c, const Buil
 std::string fit_heading(const FitCase& c, double young, double poisson, double interference) {
   const std::string loading = c.load_case == "axial"    ? "axial pressure on the sleeve top"
                               : c.load_case == "torque" ? "torque on the sleeve"
-                              : c.load_case == "fit"    ? "nothing more"
-                                                        : "the sleeve's lower outer circle turned by a prescribed angle";
+                              : c.load_case == "fit"
+                                  ? "nothing more"
+                                  : "the sleeve's lower outer circle turned by a prescribed angle";
   const std::string model_text =
       c.full   ? (c.sector ? " (90 deg sector with cyclic symmetry, N = 4)" : " (full)")
       : c.thin ? " (sector of " + fmt_number(c.sweep * 180 / kPi) + " deg)"
                : " (quarter)";
-  return "SPEC 4.2 shrink fit, model " + c.model_name + model_text +
-         ", " + c.family +
+  return "SPEC 4.2 shrink fit, model " + c.model_name + model_text + ", " + c.family +
          ": shaft 60 x D20, sleeve 20 x D20/D30 centred, E = " + fmt_number(young) +
          ", nu = " + fmt_number(poisson) + ", mu = " + c.mu_text + "; step 1 " +
          (c.fit == "thermal"
@@ -496,7 +498,8 @@ void add_shrink_fit_builder(std::vector<BuilderInfo>& all) {
          "--sector-around elements around (symmetry planes; heating and axial load only)"},
         {"load-case", "auto",
          "axial (step 2A, pressure on the sleeve top), torque (2B, model B: force couples), "
-         "rotation (model B: the sleeve's rim turned by --rotation, torque as reaction) or fit (the "
+         "rotation (model B: the sleeve's rim turned by --rotation, torque as reaction) or fit "
+         "(the "
          "heating step alone); auto: A and C axial, B torque"},
         {"sector-around", "2",
          "model C: elements around the thin sector (even; 2 = 15 deg with --around 12)"},

@@ -13,9 +13,9 @@ namespace {
 
 const std::vector<std::string> kFamilies = {"C3D8", "C3D20", "C3D14", "C3D21", "C3D28"};
 // The brick families and the tetrahedra and wedges split from bricks (mesher/split.hpp).
-const std::vector<std::string> kAllFamilies = {
-    "C3D8", "C3D20", "C3D14",  "C3D21", "C3D28", "C3D8R", "C3D8I",
-    "C3D20R", "C3D27", "C3D4", "C3D10", "C3D6",  "C3D15"};
+const std::vector<std::string> kAllFamilies = {"C3D8",  "C3D20", "C3D14",  "C3D21", "C3D28",
+                                               "C3D8R", "C3D8I", "C3D20R", "C3D27", "C3D4",
+                                               "C3D10", "C3D6",  "C3D15"};
 
 bool near(double a, double b, double tol) { return std::abs(a - b) < tol; }
 

@@ -20,7 +20,8 @@ void add_node_set(Model& model, const std::string& name, std::vector<int> nodes)
 std::vector<std::pair<int, double>> top_edge_midpoint(const BoxMesh& box) {
   const auto g = box.grid_size();
   const int i = g[0] - 1, k = g[2] - 1;
-  if (g[1] % 2 == 1 && box.node_at(i, g[1] / 2, k) >= 0) return {{box.node_at(i, g[1] / 2, k), 1.0}};
+  if (g[1] % 2 == 1 && box.node_at(i, g[1] / 2, k) >= 0)
+    return {{box.node_at(i, g[1] / 2, k), 1.0}};
   const int j_lo = (g[1] - 1) / 2, j_hi = g[1] / 2;
   return {{box.node_at(i, j_lo, k), 0.5}, {box.node_at(i, j_hi, k), 0.5}};
 }
@@ -64,7 +65,8 @@ Model make_cantilever(const CantileverSpec& spec) {
     for (const auto& [node, share] : top_edge_midpoint(box)) {
       loaded.push_back(node);
       for (int dof = 0; dof < 3; ++dof)
-        if (spec.force[dof] != 0.0) step.cloads.push_back({node, dof + 1, share * spec.force[dof], {}});
+        if (spec.force[dof] != 0.0)
+          step.cloads.push_back({node, dof + 1, share * spec.force[dof], {}});
     }
     add_node_set(model, "TIPMID", loaded);
   }

@@ -70,9 +70,9 @@ Plan make_plan(const ElementRegistry& registry, const std::string& type) {
     throw std::invalid_argument("element conversion: " + plan.type + " names contact face S" +
                                 std::to_string(plan.how.contact_face + 1) + ", which it lacks");
   for (int f = 0; f < plan.target->face_count(); ++f)
-    plan.conforms.push_back(f < plan.base->face_count() &&
-                            same_points(face_points(*plan.target, f),
-                                        face_points(*plan.base, f), 1e-9));
+    plan.conforms.push_back(
+        f < plan.base->face_count() &&
+        same_points(face_points(*plan.target, f), face_points(*plan.base, f), 1e-9));
   return plan;
 }
 
@@ -118,9 +118,8 @@ Orientation orientation_to(const Plan& plan, int e, int face) {
   Orientation o;
   if (!plan.base->rotation_between(plan.how.contact_face, face, o.R))
     throw std::invalid_argument("element conversion: " + element_name(e) + " (" + plan.how.base +
-                                ") cannot be turned so that its face S" +
-                                std::to_string(face + 1) + " becomes the contact face of " +
-                                plan.type);
+                                ") cannot be turned so that its face S" + std::to_string(face + 1) +
+                                " becomes the contact face of " + plan.type);
   return o;
 }
 
@@ -188,15 +187,15 @@ void close_layer(const Mesh& mesh, const Plan& plan, std::map<int, int>& layer,
           if (by_corners.at(free).size() != 1) continue;  // shared: not a free face
           Orientation candidate;
           if (!plan.base->rotation_between(plan.how.contact_face, h, candidate.R)) continue;
-          if (same_points(ours,
-                          converted_face(mesh, plan, other.element, candidate, other.face), tol))
+          if (same_points(ours, converted_face(mesh, plan, other.element, candidate, other.face),
+                          tol))
             join = h;
         }
         if (join < 0)
           throw std::invalid_argument(
               "element conversion: the " + plan.type + " layer on surface " + to_upper(surface) +
-              " cannot be closed: " + element_name(other.element) + " borders " +
-              element_name(e) + " through a face that only another " + plan.type +
+              " cannot be closed: " + element_name(other.element) + " borders " + element_name(e) +
+              " through a face that only another " + plan.type +
               " conforms with, but has no free face to turn into its contact face");
         layer.emplace(other.element, join);
         queue.push_back(other.element);

@@ -5,8 +5,8 @@
 
 namespace styk::mesher {
 
-std::vector<ConcentratedLoad> uniform_traction_loads(const BoxMesh& box,
-                                                     int axis, int side, const Vec3& total) {
+std::vector<ConcentratedLoad> uniform_traction_loads(const BoxMesh& box, int axis, int side,
+                                                     const Vec3& total) {
   const int b = (axis + 1) % 3, c = (axis + 2) % 3;  // the two in-plane directions
   const auto grid = box.grid_size();
   const int step = box.step();
@@ -24,9 +24,12 @@ std::vector<ConcentratedLoad> uniform_traction_loads(const BoxMesh& box,
             w = 0.25;
           } else {
             const int odd = (ob % 2) + (oc % 2);
-            if (odd == 0) w = -1.0 / 12.0;      // corner of an 8-node face
-            else if (odd == 1) w = 1.0 / 3.0;   // mid-edge
-            else continue;                      // face centre: no node
+            if (odd == 0)
+              w = -1.0 / 12.0;  // corner of an 8-node face
+            else if (odd == 1)
+              w = 1.0 / 3.0;  // mid-edge
+            else
+              continue;  // face centre: no node
           }
           int address[3];
           address[axis] = fixed;

@@ -5,7 +5,6 @@
 #include <limits>
 #include <stdexcept>
 
-
 namespace styk::mesher {
 namespace {
 

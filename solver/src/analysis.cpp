@@ -130,8 +130,7 @@ Results run_static_analysis(const Model& model, const ElementRegistry& registry,
     const PhaseRecorder::Scope phase(phases, "check");
     if (model.steps.empty())
       throw InputError(whole_model, "the model has no *STEP: there is nothing to analyse");
-    if (model.element_count() == 0)
-      throw InputError(whole_model, "the model has no elements");
+    if (model.element_count() == 0) throw InputError(whole_model, "the model has no elements");
     prepared = prepare_model(model, registry);
     check_output_requests(model, prepared);
     conditions = accumulate_step_conditions(model, prepared);
@@ -220,7 +219,8 @@ Results run_static_analysis(const Model& model, const ElementRegistry& registry,
       } catch (const FactorTooLarge& too_large) {
         const bool automatic = options.force == LinearSolverKind::Automatic &&
                                step.procedure.solver == LinearSolverKind::Automatic;
-        if (!automatic || share || !kHaveIterativeSolver || !constraints.empty() || prepared.has_rotations())
+        if (!automatic || share || !kHaveIterativeSolver || !constraints.empty() ||
+            prepared.has_rotations())
           throw;
         phases.info(std::string(too_large.what()) + "; switching to the iterative solver");
         set_up_solver(LinearSolverKind::Iterative, known);

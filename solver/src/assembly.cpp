@@ -47,9 +47,10 @@ void assemble_stiffness(const Model& model, const PreparedModel& prepared,
         const int e = colouring.order[first + i];
         if (owned != nullptr && !(*owned)[e]) continue;
         element_geometry(model, e, s.geometry);
-        const ElementOptions options{model.sections[model.elements[e].section].selective_volumetric};
-        prepared.formulation[e]->stiffness(s.geometry, states.stiffness_law(e), prepared.rule_kind[e],
-                                           s.Ke, options);
+        const ElementOptions options{
+            model.sections[model.elements[e].section].selective_volumetric};
+        prepared.formulation[e]->stiffness(s.geometry, states.stiffness_law(e),
+                                           prepared.rule_kind[e], s.Ke, options);
         const int n = model.elements[e].node_count;
         const int m = prepared.formulation[e]->node_dofs();
         const int* nodes = model.element_nodes(e);

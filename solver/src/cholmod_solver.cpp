@@ -331,8 +331,8 @@ class CholmodSolver final : public LinearSolver {
     cholmod_l_sdmult(A_.get(), 0, one, minus_one, x, r.get(), c);
     const double residual = cholmod_l_norm_dense(r.get(), 0, c);
     if (!(matrix_norm_ >= 0.0)) matrix_norm_ = cholmod_l_norm_sparse(A_.get(), 0, c);
-    const double scale = matrix_norm_ * cholmod_l_norm_dense(x, 0, c) +
-                         cholmod_l_norm_dense(b, 0, c);
+    const double scale =
+        matrix_norm_ * cholmod_l_norm_dense(x, 0, c) + cholmod_l_norm_dense(b, 0, c);
     const double backward_error = scale > 0.0 ? residual / scale : 0.0;
     if (scale > 0.0 && !(residual <= kBackwardErrorLimit * scale))
       throw InputError(SourceLoc{context_.model.source, 0},

@@ -166,8 +166,7 @@ std::string full_slip_report(const Model& model, const IncrementResult& incremen
   for (const CyclicSymmetry& c : model.cyclic_symmetries) {
     const Eigen::Vector3d axis = (as_eigen(c.b) - as_eigen(c.a)).normalized();
     // Moment about the axis through a: (M_origin - a x F) . axis.
-    const double m =
-        (as_eigen(r.moment) - as_eigen(c.a).cross(as_eigen(r.force))).dot(axis);
+    const double m = (as_eigen(r.moment) - as_eigen(c.a).cross(as_eigen(r.force))).dot(axis);
     text += format("; about the axis of cyclic symmetry %.6g per sector, %.6g on the whole", m,
                    m * c.sectors) +
             format(" structure (%.0f sectors)", c.sectors);
@@ -334,9 +333,9 @@ Results run_contact_analysis(const Model& model, const ElementRegistry& registry
     // amplitude of a static step, applied to the temperature field too, so an increment at step
     // fraction tau carries tau of the step's temperature change (docs/contact.md).
     StepLoads end;
-    end.mechanical = kinematic.plus_global(kinematic.nodal_forces(model, prepared, conditions[k]),
-                                           assemble_body_loads(model, prepared, states,
-                                                               conditions[k]));
+    end.mechanical =
+        kinematic.plus_global(kinematic.nodal_forces(model, prepared, conditions[k]),
+                              assemble_body_loads(model, prepared, states, conditions[k]));
     end.dT = temperature_changes[k];
     if (!end.dT.empty() || !model.initial_stresses.empty()) {
       const PhaseRecorder::Scope phase(phases, "assemble");
@@ -463,10 +462,9 @@ Results run_contact_analysis(const Model& model, const ElementRegistry& registry
         const ElementStates states_t(model, prepared, k,
                                      temperature_t.empty() ? nullptr : &temperature_t);
         const OutputNeeds needs = output_needs(model, k);
-        const RecoveryInput input{reaction_dofs,          u,
-                                  loads,                  &states_t,
-                                  &kinematic.rotations(), needs.energies,
-                                  needs.thermal_strains};
+        const RecoveryInput input{
+            reaction_dofs,        u, loads, &states_t, &kinematic.rotations(), needs.energies,
+            needs.thermal_strains};
         recover_increment(model, prepared, input, threads, increment);
         averaging.apply(threads, increment);
         if (needs.error_estimate)

@@ -12,8 +12,8 @@
 namespace styk::solver_detail {
 
 struct RankShare {
-  RankRows rows;                    // the active dofs this rank owns
-  std::vector<char> owns_element;   // per element: assembled by this rank
+  RankRows rows;                   // the active dofs this rank owns
+  std::vector<char> owns_element;  // per element: assembled by this rank
 };
 
 // Rows split at node boundaries; an element belongs to the rank owning its first active node.

@@ -99,9 +99,9 @@ void report_rank_shares(const RankRows& rows, int contributed, double seconds,
   MPI_Gather(mine, 3, MPI_DOUBLE, all.data(), 3, MPI_DOUBLE, 0, PETSC_COMM_WORLD);
   if (rows.rank != 0) return;
   for (int r = 0; r < rows.size; ++r)
-    phases.info(format("rank %.0f: owns %.0f rows, ", r, all[3 * r], 0.0) +
-                format("its elements gave %.0f rows, added in %.2f s", all[3 * r + 1],
-                       all[3 * r + 2]));
+    phases.info(
+        format("rank %.0f: owns %.0f rows, ", r, all[3 * r], 0.0) +
+        format("its elements gave %.0f rows, added in %.2f s", all[3 * r + 1], all[3 * r + 2]));
 }
 
 void attach_rigid_body_modes(Mat A, const RankRows& rows, const std::vector<double>& coordinates) {
@@ -140,7 +140,8 @@ DistributedSystem::DistributedSystem(const RankRows& rows, const CsrView& K,
   Mat A = petsc_->A;
   petsc_check(MatSetSizes(A, local, local, K.rows, K.rows), "MatSetSizes");
   petsc_check(MatSetType(A, MATAIJ), "MatSetType");
-  if (settings_.block_size > 1) petsc_check(MatSetBlockSize(A, settings_.block_size), "MatSetBlockSize");
+  if (settings_.block_size > 1)
+    petsc_check(MatSetBlockSize(A, settings_.block_size), "MatSetBlockSize");
   preallocate(A, rows_, K);
 
   // This rank's part of the free rows and of the coupling K_fp; and of the free diagonal, whose
@@ -216,9 +217,9 @@ DistributedSystem::~DistributedSystem() = default;
 
 std::string DistributedSystem::description() const {
   const std::string ranks = " on " + std::to_string(rows_.size) + " MPI ranks";
-  return settings_.direct ? "MUMPS distributed Cholesky (PETSc)" + ranks
-                          : "PETSc CG + GAMG (smoothed aggregation, rigid-body near-null space)" +
-                                ranks;
+  return settings_.direct
+             ? "MUMPS distributed Cholesky (PETSc)" + ranks
+             : "PETSc CG + GAMG (smoothed aggregation, rigid-body near-null space)" + ranks;
 }
 
 std::vector<double> DistributedSystem::solve(const std::vector<double>& f,
@@ -260,10 +261,10 @@ std::vector<double> DistributedSystem::solve(const std::vector<double>& f,
         throw InputError(settings_.where, "the " + settings_.what +
                                               " matrix is singular (MUMPS): the model is a "
                                               "mechanism or an element is degenerate");
-      throw NotConvergedError(format(
-          "the iterative solver (CG + GAMG, distributed) did not converge: %.0f iterations "
-          "(PETSc reason %.0f)",
-          static_cast<double>(its), static_cast<double>(reason)));
+      throw NotConvergedError(
+          format("the iterative solver (CG + GAMG, distributed) did not converge: %.0f iterations "
+                 "(PETSc reason %.0f)",
+                 static_cast<double>(its), static_cast<double>(reason)));
     }
     // The true residual, whatever the solver.
     petsc_check(MatMult(petsc_->A, x, petsc_->r), "MatMult");

@@ -39,14 +39,14 @@ struct CsrView {
 };
 
 struct DistributedSettings {
-  bool direct = true;         // MUMPS Cholesky; otherwise CG + GAMG
-  double tolerance = 1e-7;    // CG's relative residual
+  bool direct = true;            // MUMPS Cholesky; otherwise CG + GAMG
+  double tolerance = 1e-7;       // CG's relative residual
   double residual_limit = 1e-6;  // the true relative residual a solution must reach
-  int block_size = 1;         // dofs per node when every node has the same number
+  int block_size = 1;            // dofs per node when every node has the same number
   // 3 per active node for the rigid-body near-null space of GAMG (block size 3); empty: none.
   std::vector<double> coordinates;
   std::string what = "stiffness";  // names the matrix in messages
-  SourceLoc where;                  // the deck, for a singular matrix
+  SourceLoc where;                 // the deck, for a singular matrix
 };
 
 class DistributedSystem {

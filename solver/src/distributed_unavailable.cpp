@@ -7,9 +7,9 @@ namespace styk::solver_detail {
 
 struct DistributedSystem::Petsc {};
 
-DistributedSystem::DistributedSystem(const RankRows& rows, const CsrView&,
-                                     const std::vector<int>&, const DofPartition& partition,
-                                     DistributedSettings settings, const PhaseRecorder& phases)
+DistributedSystem::DistributedSystem(const RankRows& rows, const CsrView&, const std::vector<int>&,
+                                     const DofPartition& partition, DistributedSettings settings,
+                                     const PhaseRecorder& phases)
     : rows_(rows), partition_(partition), settings_(std::move(settings)), phases_(phases) {
   throw std::runtime_error("this build has no PETSc/MPI and cannot solve distributed");
 }

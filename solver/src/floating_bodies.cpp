@@ -33,8 +33,7 @@ std::string text(const char* pattern, double a, double b = 0.0, double c = 0.0) 
 }  // namespace
 
 FloatingBodies find_floating_bodies(const Model& model, const PreparedModel& prepared,
-                                    const NodeGraph& graph,
-                                    const std::vector<Restraint>& given,
+                                    const NodeGraph& graph, const std::vector<Restraint>& given,
                                     const std::vector<int>& prescribed,
                                     const std::vector<int>& known, const NodeRotations& rotations,
                                     const std::vector<char>& touches_contact) {

@@ -124,13 +124,13 @@ class GamgSolver final : public LinearSolver {
     coupling_ = extract_coupling(K, partition);
     eliminate_prescribed(K);
     const PetscInt n = K.rows();
-    petsc_check(MatCreateSeqAIJWithArrays(PETSC_COMM_SELF, n, n, K.row_ptr().data(),
-                                          K.col().data(), K.values().data(), A_.out()),
+    petsc_check(MatCreateSeqAIJWithArrays(PETSC_COMM_SELF, n, n, K.row_ptr().data(), K.col().data(),
+                                          K.values().data(), A_.out()),
                 "MatCreateSeqAIJWithArrays");
     petsc_check(MatSetBlockSize(A_.get(), 3), "MatSetBlockSize");
     attach_rigid_body_modes();
-    product_ = ParallelProduct{K.row_ptr().data(), K.col().data(), K.values().data(),
-                               K.rows() / 3, context_.threads};
+    product_ = ParallelProduct{K.row_ptr().data(), K.col().data(), K.values().data(), K.rows() / 3,
+                               context_.threads};
     petsc_check(MatCreateShell(PETSC_COMM_SELF, n, n, n, n, &product_, operator_.out()),
                 "MatCreateShell");
     petsc_check(MatShellSetOperation(operator_.get(), MATOP_MULT,
@@ -193,10 +193,10 @@ class GamgSolver final : public LinearSolver {
       KSPGetResidualNorm(ksp_.get(), &residual);
       iterations_ = static_cast<int>(its);
       if (reason < 0)
-        throw NotConvergedError(format(
-            "the iterative solver (CG + GAMG) did not converge: %.0f iterations, relative "
-            "residual %.3g (PETSc reason %.0f)",
-            static_cast<double>(its), residual / b_norm, static_cast<double>(reason)));
+        throw NotConvergedError(
+            format("the iterative solver (CG + GAMG) did not converge: %.0f iterations, relative "
+                   "residual %.3g (PETSc reason %.0f)",
+                   static_cast<double>(its), residual / b_norm, static_cast<double>(reason)));
       // Check the true residual, not CG's recursively updated one.
       petsc_check(VecDuplicate(b.get(), r.out()), "VecDuplicate");
       petsc_check(MatMult(operator_.get(), x.get(), r.get()), "MatMult");

@@ -18,7 +18,9 @@ class KspProgress {
       : phases_(phases), every_(every) {}
 
   // Installs the monitor on `ksp`; this object must outlive the KSP's solves.
-  PetscErrorCode attach(KSP ksp) { return KSPMonitorSet(ksp, &KspProgress::monitor, this, nullptr); }
+  PetscErrorCode attach(KSP ksp) {
+    return KSPMonitorSet(ksp, &KspProgress::monitor, this, nullptr);
+  }
 
   // Call before each solve: the norm relative residuals are measured against.
   void start(double rhs_norm) {

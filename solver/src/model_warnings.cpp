@@ -167,12 +167,13 @@ void locking_warnings(const Model& model, const PreparedModel& prepared,
     const Section& section = model.sections[key.first];
     const Material& material = *entry.second;
     const TElement& f = *key.second;
-    const std::string cure =
-        linear_tetrahedron(f) ? "use quadratic tetrahedra (C3D10) or bricks with "
-                                "TECHNIQUE=SELECTIVE"
-        : f.rule(RuleKind::Full).size() > 1 ? "add TECHNIQUE=SELECTIVE to the *SOLID SECTION"
-                                            : "use C3D8I or C3D20R (TECHNIQUE=SELECTIVE cannot help "
-                                              "a one-point rule)";
+    const std::string cure = linear_tetrahedron(f)
+                                 ? "use quadratic tetrahedra (C3D10) or bricks with "
+                                   "TECHNIQUE=SELECTIVE"
+                             : f.rule(RuleKind::Full).size() > 1
+                                 ? "add TECHNIQUE=SELECTIVE to the *SOLID SECTION"
+                                 : "use C3D8I or C3D20R (TECHNIQUE=SELECTIVE cannot help "
+                                   "a one-point rule)";
     warnings.push_back(section.where.file + ":" + std::to_string(section.where.line) + ": " +
                        std::to_string(entry.first) + " " + f.name() + " elements of element set " +
                        section.elset + " lock volumetrically: material " + material.name +

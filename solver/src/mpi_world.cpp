@@ -26,8 +26,8 @@ bool started_by_mpi_runner() {
 }
 
 int mpi_ranks_on_this_machine() {
-  const int local = environment_int("OMPI_COMM_WORLD_LOCAL_SIZE",
-                                    environment_int("MPI_LOCALNRANKS", 1));
+  const int local =
+      environment_int("OMPI_COMM_WORLD_LOCAL_SIZE", environment_int("MPI_LOCALNRANKS", 1));
   return local > 0 ? local : 1;
 }
 

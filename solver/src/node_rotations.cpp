@@ -24,12 +24,12 @@ NodeRotations NodeRotations::from_transforms(const Model& model, const PreparedM
       Eigen::Matrix3d R;
       if (!local_axes_at(transform.axes, model.coords[node], R)) {
         const std::string defect = axes_defect(transform.axes);
-        throw InputError(transform.where,
-                         "*TRANSFORM: the local system is undefined at node " +
-                             std::to_string(model.node_ids[node]) + ": " +
-                             (defect.empty() ? "it " + axes_defect_at(transform.axes,
-                                                                      model.coords[node])
-                                             : defect));
+        throw InputError(
+            transform.where,
+            "*TRANSFORM: the local system is undefined at node " +
+                std::to_string(model.node_ids[node]) + ": " +
+                (defect.empty() ? "it " + axes_defect_at(transform.axes, model.coords[node])
+                                : defect));
       }
       if (out.rotation_of_node_[a] >= 0)
         throw InputError(transform.where,

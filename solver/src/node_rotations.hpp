@@ -11,8 +11,8 @@
 #include <Eigen/Core>
 
 #include "prepared_model.hpp"
-#include "styk/core/local_axes.hpp"
 #include "stiffness_matrix.hpp"
+#include "styk/core/local_axes.hpp"
 
 namespace styk::solver_detail {
 

@@ -45,8 +45,9 @@ void check_section_measure(const Model& model, const Element& element,
   if (formulation.section_measure() == SectionMeasure::Area && !section.thickness)
     throw InputError(section.where, "the *SOLID SECTION of element set " + section.elset +
                                         " gives no cross-section area (its first data line), "
-                                        "which element " + std::to_string(element.id) +
-                                        " of type " + element.type + " needs");
+                                        "which element " +
+                                        std::to_string(element.id) + " of type " + element.type +
+                                        " needs");
   // A bar's uniaxial law is isotropic: a direction-dependent one would need the bar's axis in
   // the material axes.
   const Material& material = model.materials[section.material_index];
@@ -55,8 +56,8 @@ void check_section_measure(const Model& model, const Element& element,
   if (formulation.section_measure() == SectionMeasure::Area && !isotropic)
     throw InputError(section.where, "element set " + section.elset + " holds " + element.type +
                                         " elements (bars), which take an isotropic material "
-                                        "only; material " + material.name +
-                                        " is orthotropic or anisotropic");
+                                        "only; material " +
+                                        material.name + " is orthotropic or anisotropic");
   // A beam integrates its section with one E and nu: a constant isotropic law.
   const bool constant = material.young && material.poisson && material.elastic_table.empty() &&
                         material.expansion_table.empty();
@@ -104,8 +105,8 @@ PreparedModel prepare_model(const Model& model, const ElementRegistry& registry)
     const Element& element = model.elements[e];
     const TElement* formulation = registry.find(element.type);
     if (formulation == nullptr) {
-      std::string message = "element " + std::to_string(element.id) + " has type " +
-                            element.type + ", which no built-in element or plug-in provides";
+      std::string message = "element " + std::to_string(element.id) + " has type " + element.type +
+                            ", which no built-in element or plug-in provides";
       if (!registry.searched_paths.empty())
         message += " (plug-ins searched in " + registry.searched_paths + ")";
       throw InputError(element.where, message);
@@ -114,8 +115,7 @@ PreparedModel prepare_model(const Model& model, const ElementRegistry& registry)
       throw InputError(element.where, "element " + std::to_string(element.id) + " of type " +
                                           element.type + " has " +
                                           std::to_string(element.node_count) + " nodes, " +
-                                          std::to_string(formulation->node_count()) +
-                                          " expected");
+                                          std::to_string(formulation->node_count()) + " expected");
     if (element.section < 0 || element.section >= static_cast<int>(model.sections.size()))
       throw InputError(element.where, "element " + std::to_string(element.id) +
                                           " has no section: add it to an element set named "
@@ -140,8 +140,8 @@ PreparedModel prepare_model(const Model& model, const ElementRegistry& registry)
     const int* nodes = model.element_nodes(e);
     for (int k = 0; k < element.node_count; ++k) {
       if (nodes[k] < 0 || nodes[k] >= model.node_count())
-        throw InputError(element.where, "element " + std::to_string(element.id) +
-                                            " refers to an undefined node");
+        throw InputError(element.where,
+                         "element " + std::to_string(element.id) + " refers to an undefined node");
       prepared.active_of_node[nodes[k]] = 0;
       stiffened_bits[nodes[k]] |= bits;
       dofs_of_node[nodes[k]] =
@@ -215,9 +215,10 @@ void check_output_requests(const Model& model, const PreparedModel& prepared) {
     for (const OutputRequest& request : step.outputs)
       for (const std::string& var : request.vars) {
         if ((var == "UR" || var == "RM") && !prepared.has_rotations())
-          throw InputError(request.where, "output variable " + var +
-                                              " needs nodes with rotations (beam or shell elements); no "
-                                              "node of this model carries any");
+          throw InputError(request.where,
+                           "output variable " + var +
+                               " needs nodes with rotations (beam or shell elements); no "
+                               "node of this model carries any");
         if ((var == "SF" || var == "SM") && !stations)
           throw InputError(request.where, "output variable " + var +
                                               " (section forces and moments) needs beam or "

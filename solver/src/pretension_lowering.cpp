@@ -77,13 +77,11 @@ void lower_pretension_sections(Model& lowered, const ElementRegistry& registry,
     }
     // Plane and axisymmetric elements move in the x-y plane only: their nodes have no z dof, so
     // the section takes n and t in that plane and no equation along d = z.
-    const bool planar = std::all_of(surface.faces.begin(), surface.faces.end(),
-                                    [&](const SurfaceFace& sf) {
-                                      const ElementForm form =
-                                          registry.find(lowered.elements[sf.element].type)->form();
-                                      return form == ElementForm::Planar ||
-                                             form == ElementForm::Axisymmetric;
-                                    });
+    const bool planar =
+        std::all_of(surface.faces.begin(), surface.faces.end(), [&](const SurfaceFace& sf) {
+          const ElementForm form = registry.find(lowered.elements[sf.element].type)->form();
+          return form == ElementForm::Planar || form == ElementForm::Axisymmetric;
+        });
     if (planar && std::abs(n[2]) > 1e-12)
       throw InputError(section.where, "*PRE-TENSION SECTION: the normal of surface " +
                                           section.surface +

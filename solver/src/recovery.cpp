@@ -160,8 +160,7 @@ void recover_increment(const Model& model, const PreparedModel& prepared,
       const bool continuum = element.section_measure() != SectionMeasure::Beam &&
                              element.section_measure() != SectionMeasure::Shell;
       if (continuum && (input.energies || input.thermal_strains))
-        element_energies(element, s.geometry, law, prepared.rule_kind[e], sigma0, e, first, s,
-                         out);
+        element_energies(element, s.geometry, law, prepared.rule_kind[e], sigma0, e, first, s, out);
       if (!out.ip_position.empty()) {
         element.point_positions(s.geometry, prepared.rule_kind[e], s.positions);
         for (int p = 0; p < s.positions.rows(); ++p)

@@ -22,7 +22,7 @@ struct RecoveryInput {
   // The elements' material state (law, temperatures, initial stresses), or none: the materials
   // of their sections at the initial temperatures.
   const ElementStates* states = nullptr;
-  const NodeRotations* rotations = nullptr;       // the nodal systems, or none (all global)
+  const NodeRotations* rotations = nullptr;  // the nodal systems, or none (all global)
   // Also fill ENER, element_volume and element_energy (energies) and THE (thermal strains).
   bool energies = false;
   bool thermal_strains = false;

@@ -66,10 +66,10 @@ int reduced_shell_mesh_modes(const Model& model, const PreparedModel& prepared) 
     if (!is_shell(*prepared.formulation[e])) continue;
     const auto key = std::make_pair(prepared.formulation[e], prepared.rule_kind[e]);
     const auto known = single_modes.find(key);
-    const bool candidate = known != single_modes.end()
-                               ? known->second
-                               : (single_modes[key] = spurious_shell_modes(*key.first, key.second,
-                                                                           1) > 0);
+    const bool candidate =
+        known != single_modes.end()
+            ? known->second
+            : (single_modes[key] = spurious_shell_modes(*key.first, key.second, 1) > 0);
     if (candidate) elements.push_back(e);
   }
   if (elements.empty() || static_cast<int>(elements.size()) > kWholeMeshLimit) return -1;
@@ -196,7 +196,8 @@ std::vector<std::string> shell_warnings(const Model& model, const PreparedModel&
       warnings.push_back(
           "the mesh of reduced-integration shell elements (" + std::to_string(modes) +
           " zero-energy modes beyond the rigid motions when assembled without supports, "
-          "checked whole as it has at most " + std::to_string(kWholeMeshLimit) +
+          "checked whole as it has at most " +
+          std::to_string(kWholeMeshLimit) +
           " elements): where the supports do not restrain them the model is singular; use "
           "more elements or the fully integrated types (S8, S9)");
   }

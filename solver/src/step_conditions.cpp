@@ -22,8 +22,7 @@ int checked_dof(const Model& model, const PreparedModel& prepared, int node, int
                                 "rotations 4, 5, 6");
   const int active = prepared.active_of_node[node];
   if (active < 0)
-    throw InputError(where, std::string(what) + " on node " +
-                                std::to_string(model.node_ids[node]) +
+    throw InputError(where, std::string(what) + " on node " + std::to_string(model.node_ids[node]) +
                                 ", which belongs to no element (it has no stiffness)");
   const int index = prepared.dof(active, dof - 1);
   if (index < 0)
@@ -112,8 +111,7 @@ std::map<int, double> with_distributed(const Model& model, const PreparedModel& 
                                       " of a distributing coupling's surface has a *TRANSFORM, "
                                       "which Styk does not combine with the carried loads");
     for (int d = 0; d < 3; ++d)
-      loads[checked_dof(model, prepared, node, d + 1, {}, "distributed coupling load")] +=
-          force[d];
+      loads[checked_dof(model, prepared, node, d + 1, {}, "distributed coupling load")] += force[d];
   }
   return loads;
 }

@@ -14,12 +14,12 @@ struct DofValue {
 };
 
 struct StepConditions {
-  std::vector<DofValue> prescribed;            // sorted by dof, one entry per dof
+  std::vector<DofValue> prescribed;  // sorted by dof, one entry per dof
   // The prescribed dofs of *BOUNDARY, FIXED (sorted): their value is the displacement the
   // previous step ended with (nodal system), filled in by the step driver (0 in the first step).
   std::vector<int> fixed;
-  std::vector<DofValue> nodal_loads;           // sorted by dof, one entry per dof
-  std::vector<DistributedLoad> pressures;      // one per (element, face); face 1-based as given
+  std::vector<DofValue> nodal_loads;       // sorted by dof, one entry per dof
+  std::vector<DistributedLoad> pressures;  // one per (element, face); face 1-based as given
   // *DLOAD GRAV / CENTRIF: one gravity load per (element, direction), one centrifugal load per
   // element (a later one replaces an earlier one, as in CalculiX).
   std::vector<BodyLoad> body_loads;

@@ -16,7 +16,8 @@ void node_elements(const Model& model, const PreparedModel& prepared, std::vecto
   ptr.assign(nodes + 1, 0);
   for (int e = 0; e < model.element_count(); ++e) {
     const int* en = model.element_nodes(e);
-    for (int k = 0; k < model.elements[e].node_count; ++k) ++ptr[prepared.active_of_node[en[k]] + 1];
+    for (int k = 0; k < model.elements[e].node_count; ++k)
+      ++ptr[prepared.active_of_node[en[k]] + 1];
   }
   for (int a = 0; a < nodes; ++a) ptr[a + 1] += ptr[a];
   elements.resize(ptr[nodes]);
@@ -120,9 +121,8 @@ ElementColouring colour_elements(const Model& model, const PreparedModel& prepar
     base += 64;
   }
   ElementColouring colouring;
-  const int colours = model.element_count() == 0
-                          ? 0
-                          : *std::max_element(colour.begin(), colour.end()) + 1;
+  const int colours =
+      model.element_count() == 0 ? 0 : *std::max_element(colour.begin(), colour.end()) + 1;
   colouring.ptr.assign(colours + 1, 0);
   for (int c : colour) ++colouring.ptr[c + 1];
   for (int c = 0; c < colours; ++c) colouring.ptr[c + 1] += colouring.ptr[c];

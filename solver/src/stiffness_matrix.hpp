@@ -23,7 +23,7 @@ struct NodeGraph {
 
 // Element colouring for lock-free assembly: no two elements of one colour share a node.
 struct ElementColouring {
-  std::vector<int> ptr;       // colour c: elements order[ptr[c] .. ptr[c+1])
+  std::vector<int> ptr;  // colour c: elements order[ptr[c] .. ptr[c+1])
   std::vector<int> order;
   int colours() const { return static_cast<int>(ptr.size()) - 1; }
 };

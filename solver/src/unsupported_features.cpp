@@ -12,8 +12,9 @@ void reject_unsupported_features(const Model& model) {
   for (const Step& step : model.steps) scalar = scalar || step.kind != StepKind::Static;
   if (!scalar) return;
   auto refuse = [](const SourceLoc& where, const std::string& what) {
-    throw InputError(where, what + " constrains displacements; a *HEAT TRANSFER or *COUPLED "
-                                   "THERMAL-ELECTRICAL deck cannot use it");
+    throw InputError(where, what +
+                                " constrains displacements; a *HEAT TRANSFER or *COUPLED "
+                                "THERMAL-ELECTRICAL deck cannot use it");
   };
   if (!model.ties.empty()) refuse(model.ties.front().where, "*TIE");
   if (!model.couplings.empty()) refuse(model.couplings.front().where, "*COUPLING");

@@ -23,7 +23,9 @@ class StderrProgress final : public styk::ProgressSink {
   void end(const std::string& phase, double seconds) override {
     std::fprintf(stderr, "[%s] %.3f s\n", phase.c_str(), seconds);
   }
-  void info(const std::string& message) override { std::fprintf(stderr, "  %s\n", message.c_str()); }
+  void info(const std::string& message) override {
+    std::fprintf(stderr, "  %s\n", message.c_str());
+  }
 };
 
 }  // namespace

@@ -46,9 +46,7 @@ std::vector<BadDeck> read_manifest() {
   return decks;
 }
 
-bool directory_is_empty(const std::string& dir) {
-  return !fs::exists(dir) || fs::is_empty(dir);
-}
+bool directory_is_empty(const std::string& dir) { return !fs::exists(dir) || fs::is_empty(dir); }
 
 void expect_rejected(const BadDeck& d, const std::string& scratch) {
   const std::string out = scratch + "/out";
@@ -65,9 +63,7 @@ void expect_rejected(const BadDeck& d, const std::string& scratch) {
   EXPECT_TRUE(directory_is_empty(out)) << "a rejected deck must leave no output behind";
 }
 
-TEST(CliBadInput, ManifestHasAtLeastTwentyDecks) {
-  EXPECT_GE(read_manifest().size(), 20u);
-}
+TEST(CliBadInput, ManifestHasAtLeastTwentyDecks) { EXPECT_GE(read_manifest().size(), 20u); }
 
 TEST(CliBadInput, EveryManifestDeckIsRejectedWithFileLineAndReason) {
   const std::string scratch = scratch_dir("bad_input_manifest");

@@ -36,26 +36,29 @@ namespace fs = std::filesystem;
 // The cantilever deck with tip load `load` (docs: file comment).
 std::string beam_deck(double load) {
   constexpr int nx = 40, ny = 5, nz = 5;
-  const auto id = [](int i, int j, int k) { return k * (nx + 1) * (ny + 1) + j * (nx + 1) + i + 1; };
+  const auto id = [](int i, int j, int k) {
+    return k * (nx + 1) * (ny + 1) + j * (nx + 1) + i + 1;
+  };
   std::ostringstream out;
   out << "*NODE, NSET=NALL\n";
   for (int k = 0; k <= nz; ++k)
     for (int j = 0; j <= ny; ++j)
-      for (int i = 0; i <= nx; ++i) out << id(i, j, k) << ", " << i << ", " << j << ", " << k << "\n";
+      for (int i = 0; i <= nx; ++i)
+        out << id(i, j, k) << ", " << i << ", " << j << ", " << k << "\n";
   out << "*ELEMENT, TYPE=C3D8, ELSET=EALL\n";
   int e = 1;
   for (int k = 0; k < nz; ++k)
     for (int j = 0; j < ny; ++j)
       for (int i = 0; i < nx; ++i)
-        out << e++ << ", " << id(i, j, k) << ", " << id(i + 1, j, k) << ", "
-            << id(i + 1, j + 1, k) << ", " << id(i, j + 1, k) << ", " << id(i, j, k + 1) << ", "
-            << id(i + 1, j, k + 1) << ", " << id(i + 1, j + 1, k + 1) << ", "
-            << id(i, j + 1, k + 1) << "\n";
+        out << e++ << ", " << id(i, j, k) << ", " << id(i + 1, j, k) << ", " << id(i + 1, j + 1, k)
+            << ", " << id(i, j + 1, k) << ", " << id(i, j, k + 1) << ", " << id(i + 1, j, k + 1)
+            << ", " << id(i + 1, j + 1, k + 1) << ", " << id(i, j + 1, k + 1) << "\n";
   out << "*MATERIAL, NAME=STEEL\n*ELASTIC\n210000., 0.3\n"
       << "*SOLID SECTION, ELSET=EALL, MATERIAL=STEEL\n*BOUNDARY\n";
   for (int k = 0; k <= nz; ++k)
     for (int j = 0; j <= ny; ++j) out << id(0, j, k) << ", 1, 3\n";
-  out << "*STEP\n*STATIC\n*CLOAD\n" << id(nx, ny, nz) << ", 3, " << load << "\n"
+  out << "*STEP\n*STATIC\n*CLOAD\n"
+      << id(nx, ny, nz) << ", 3, " << load << "\n"
       << "*NODE PRINT, NSET=NALL\nU\n*EL PRINT, ELSET=EALL\nS, E\n*END STEP\n";
   return out.str();
 }
@@ -177,7 +180,8 @@ TEST_F(CliCrashSafety, AKilledWriteLeavesThePreviousResults) {
 // the cause, the previous results unchanged, no temporary. styk ignores SIGXFSZ, so the limit
 // fails the write instead of killing the process, as a full disk would.
 TEST_F(CliCrashSafety, AFullDiskStopsWithExitFiveAndKeepsThePreviousResults) {
-  const CommandResult run = run_command("bash -c \"ulimit -f 64; exec " + solve_command() + "\"", dir_);
+  const CommandResult run =
+      run_command("bash -c \"ulimit -f 64; exec " + solve_command() + "\"", dir_);
   EXPECT_EQ(run.exit_code, 5) << run.err;
   EXPECT_NE(run.err.find("resource limit: cannot write"), std::string::npos) << run.err;
   EXPECT_NE(run.err.find("size limit of this process"), std::string::npos) << run.err;

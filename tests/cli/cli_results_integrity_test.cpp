@@ -4,8 +4,8 @@
 // short, a zeroed block, a NaN written behind the checksums — and on the files of an older Styk.
 // Each damaged file: exit 1, "file: dataset ...: ... — the file is damaged" on stderr, no output
 // left behind. And `styk solve` refuses to write results that overflowed to Inf/NaN (exit 2).
-#include <cctype>
 #include <gtest/gtest.h>
+#include <cctype>
 
 #include <algorithm>
 #include <cmath>

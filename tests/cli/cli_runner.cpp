@@ -20,8 +20,8 @@ std::string read_file(const std::string& path) {
 CommandResult run_command(const std::string& command, const std::string& workdir) {
   const std::string out_path = workdir + "/.stdout";
   const std::string err_path = workdir + "/.stderr";
-  const std::string full = "cd '" + workdir + "' && " + command + " >'" + out_path + "' 2>'" +
-                           err_path + "' </dev/null";
+  const std::string full =
+      "cd '" + workdir + "' && " + command + " >'" + out_path + "' 2>'" + err_path + "' </dev/null";
   const int status = std::system(full.c_str());
   CommandResult r;
   r.exit_code = (status != -1 && WIFEXITED(status)) ? WEXITSTATUS(status) : -1;

@@ -64,8 +64,8 @@ TEST(Cli, MemoryLimitStopsTheDirectSolverBeforeFactorising) {
   EXPECT_FALSE(fs::exists(dir + "/out/cantilever-c3d20.styk.h5"));
   EXPECT_FALSE(fs::exists(dir + "/out/cantilever-c3d20.dat"));
 
-  const CommandResult automatic = run_command(
-      styk_executable() + " solve '" + kSample + "' --memory-limit 1e-5 -o auto", dir);
+  const CommandResult automatic =
+      run_command(styk_executable() + " solve '" + kSample + "' --memory-limit 1e-5 -o auto", dir);
   ASSERT_EQ(automatic.exit_code, 0) << automatic.err;
   EXPECT_NE(automatic.err.find("switching to the iterative solver"), std::string::npos)
       << automatic.err;
@@ -87,12 +87,11 @@ TEST(Cli, ElementsListsTheBuiltIns) {
   EXPECT_NE(r.out.find("C3D20"), std::string::npos);
   EXPECT_NE(r.out.find("built-in"), std::string::npos);
   // The tetrahedra, wedges and rings, each with its form and CalculiX's rules.
-  for (const char* line : {"C3D4         4  solid         1-point tetrahedron",
-                           "C3D10       10  solid         4-point tetrahedron",
-                           "C3D6         6  solid         1x2 wedge",
-                           "C3D15       15  solid         3x3 wedge",
-                           "CAX8R        8  axisymmetric  2x2 Gauss",
-                           "CPS8R        8  planar        2x2 Gauss"})
+  for (const char* line :
+       {"C3D4         4  solid         1-point tetrahedron",
+        "C3D10       10  solid         4-point tetrahedron",
+        "C3D6         6  solid         1x2 wedge", "C3D15       15  solid         3x3 wedge",
+        "CAX8R        8  axisymmetric  2x2 Gauss", "CPS8R        8  planar        2x2 Gauss"})
     EXPECT_NE(r.out.find(line), std::string::npos) << line << "\n" << r.out;
 }
 

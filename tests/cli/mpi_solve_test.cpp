@@ -12,11 +12,11 @@
 
 #include <gtest/gtest.h>
 
+#include "../support/test_scratch.hpp"
 #include "cli_runner.hpp"
 #include "styk/inp/writer.hpp"
 #include "styk/io/results_file.hpp"
 #include "styk/mesher/cantilever.hpp"
-#include "../support/test_scratch.hpp"
 
 namespace styk::testing {
 namespace {
@@ -59,8 +59,8 @@ std::string thermal_equation_deck() {
   const std::size_t after_elastic = deck.find('\n', deck.find('\n', elastic) + 1) + 1;
   deck.insert(after_elastic, "*EXPANSION\n1.2E-5\n");
   std::ostringstream model_level;
-  model_level << "*INITIAL CONDITIONS, TYPE=TEMPERATURE\n" << temperature_lines(0.0)
-              << "*EQUATION\n2\n"
+  model_level << "*INITIAL CONDITIONS, TYPE=TEMPERATURE\n"
+              << temperature_lines(0.0) << "*EQUATION\n2\n"
               << model.node_ids[top] << ", 1, 1.0, " << model.node_ids[bottom] << ", 1, -0.5\n";
   deck.insert(deck.find("*STEP"), model_level.str());
   deck.insert(deck.find("*END STEP"), "*TEMPERATURE\n" + temperature_lines(1.0));
@@ -180,9 +180,9 @@ bool results_left(const fs::path& out) {
 TEST(MpiSolve, MissingRunnerIsAClearErrorAndWritesNothing) {
   const fs::path dir = test::test_scratch_dir("mpi");
   write_text(dir / "beam.inp", thermal_equation_deck());
-  const CommandResult run = run_command(
-      "env PATH=/nonexistent " + styk_executable() + " solve beam.inp -o out --ranks 2",
-      dir.string());
+  const CommandResult run =
+      run_command("env PATH=/nonexistent " + styk_executable() + " solve beam.inp -o out --ranks 2",
+                  dir.string());
   EXPECT_EQ(run.exit_code, 6) << run.err;
   EXPECT_NE(run.err.find("needs an MPI runner, and 'mpirun' was not found on PATH"),
             std::string::npos)
@@ -203,11 +203,12 @@ TEST(MpiSolve, DyingRankIsAClearErrorAndWritesNothing) {
              "#!/bin/bash\n"
              "args=()\n"
              "for a in \"$@\"; do\n"
-             "  if [[ \"$a\" == */styk ]]; then args+=(\"" + (dir / "die_on_rank1.sh").string() +
+             "  if [[ \"$a\" == */styk ]]; then args+=(\"" +
+                 (dir / "die_on_rank1.sh").string() +
                  "\"); fi\n"
-             "  args+=(\"$a\")\n"
-             "done\n"
-             "exec mpirun \"${args[@]}\"\n");
+                 "  args+=(\"$a\")\n"
+                 "done\n"
+                 "exec mpirun \"${args[@]}\"\n");
   fs::permissions(dir / "die_on_rank1.sh", fs::perms::owner_all);
   fs::permissions(dir / "runner.sh", fs::perms::owner_all);
   const CommandResult run = run_command("env STYK_MPIRUN=" + (dir / "runner.sh").string() + " " +

@@ -23,9 +23,7 @@ namespace {
 struct Registry {
   PluginLibraries libraries;
   ElementRegistry registry;
-  Registry() {
-    setup_element_registry(registry, libraries, {build_plugin_directory()});
-  }
+  Registry() { setup_element_registry(registry, libraries, {build_plugin_directory()}); }
 };
 
 // The shortening of the half bolt's cut end that step PRELOAD prescribes.
@@ -44,10 +42,9 @@ TEST(ChildProcessSolve, BoltedFlangeCalibratesAsInProcess) {
       {"element", "C3D21"},  {"ring-layers", "2"}, {"neck-layers", "1"},  {"gasket-layers", "1"},
       {"shank-layers", "1"}, {"head-layers", "1"}, {"gasket-rings", "4"}, {"neck-rings", "1"}};
   const mesher::BuildResult child = mesher::run_builder(
-      "bolted-flange", coarse, r.registry,
-      child_process_solve(SolveRunner::locate_styk_program()));
-  const mesher::BuildResult in_process = mesher::run_builder(
-      "bolted-flange", coarse, r.registry, studies::static_solve(r.registry));
+      "bolted-flange", coarse, r.registry, child_process_solve(SolveRunner::locate_styk_program()));
+  const mesher::BuildResult in_process =
+      mesher::run_builder("bolted-flange", coarse, r.registry, studies::static_solve(r.registry));
   const double expected = preload_shortening(in_process.model);
   ASSERT_LT(expected, 0.0);
   EXPECT_NEAR(preload_shortening(child.model), expected, 1e-12 * std::abs(expected));

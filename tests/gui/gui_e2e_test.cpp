@@ -46,8 +46,10 @@ gui::FormDialog* open_dialog(gui::MainWindow& w, const QString& action) {
 }
 
 void set_text(gui::FormDialog* d, const QString& key, const QString& value) {
-  if (auto* e = d->findChild<QLineEdit*>(key)) e->setText(value);
-  else if (auto* c = d->findChild<QComboBox*>(key)) c->setCurrentText(value);
+  if (auto* e = d->findChild<QLineEdit*>(key))
+    e->setText(value);
+  else if (auto* c = d->findChild<QComboBox*>(key))
+    c->setCurrentText(value);
 }
 
 render::Image to_image(const QImage& picture) {
@@ -148,10 +150,12 @@ class GuiEndToEnd : public QObject {
     const render_test::CompareResult r = render_test::compare_images(actual, expected, 24);
     if (!r.same_size || r.fraction > 0.005) {
       render::write_png((kOutput + "/e2e-mises.actual.png").toStdString(), actual);
-      if (r.same_size) render::write_png((kOutput + "/e2e-mises.diff.png").toStdString(), r.difference);
+      if (r.same_size)
+        render::write_png((kOutput + "/e2e-mises.diff.png").toStdString(), r.difference);
     }
     QVERIFY(r.same_size);
-    QVERIFY2(r.fraction <= 0.005, qPrintable(QString("%1 % of the pixels differ").arg(100 * r.fraction)));
+    QVERIFY2(r.fraction <= 0.005,
+             qPrintable(QString("%1 % of the pixels differ").arg(100 * r.fraction)));
   }
 
   void probesAndCharts() {

@@ -72,8 +72,7 @@ class GuiFilterGeometry : public QObject {
   void initTestCase() {
     QStandardPaths::setTestModeEnabled(true);
     qputenv("STYK_GUI_NO_MESSAGE_BOXES", "1");
-    (void)styk::setup_element_registry(registry_, libraries_,
-                                       {styk::build_plugin_directory()});
+    (void)styk::setup_element_registry(registry_, libraries_, {styk::build_plugin_directory()});
     window_ = std::make_unique<gui::MainWindow>(registry_);
     window_->view()->setFixedSize(640, 480);
     window_->show();
@@ -147,9 +146,10 @@ class GuiFilterGeometry : public QObject {
     QVERIFY2(straight.startsWith("15 0 0; 10 10 0; 0 15 0; 5 5 0; 15 0 5;"), qPrintable(straight));
     d->findChild<QCheckBox*>("curved")->setChecked(true);
     // The outer arc's midpoints pulled inside the inner wall: the block folds.
-    const QString folded = "15 0 0; 3 3 0; 0 15 0; 7.0710678118655 7.0710678118655 0; "
-                           "15 0 5; 3 3 5; 0 15 5; 7.0710678118655 7.0710678118655 5; "
-                           "10 0 2.5; 20 0 2.5; 0 20 2.5; 0 10 2.5";
+    const QString folded =
+        "15 0 0; 3 3 0; 0 15 0; 7.0710678118655 7.0710678118655 0; "
+        "15 0 5; 3 3 5; 0 15 5; 7.0710678118655 7.0710678118655 5; "
+        "10 0 2.5; 20 0 2.5; 0 20 2.5; 0 10 2.5";
     set_text(d, "mid_edges", folded);
     d->accept();
     QVERIFY(d->isVisible());

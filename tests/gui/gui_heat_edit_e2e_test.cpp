@@ -21,8 +21,8 @@
 #include "gl_view.hpp"
 #include "main_window.hpp"
 #include "model_tree.hpp"
-#include "styk/elements/element_setup.hpp"
 #include "session/picking.hpp"
+#include "styk/elements/element_setup.hpp"
 
 using namespace styk;
 
@@ -242,9 +242,9 @@ class HeatWallWalkThrough : public QObject {
   // The *DFLUX and *ORIENTATION dialogs, driven like the others (after the solve: a flux is an edit
   // that drops the results). A pressure in the heat step points to Face flux.
   void faceFluxAndOrientationDialogs() {
-    const QString pressure = fill_and_accept(
-        *window_, "action_pressure",
-        {{"surface", "WALL_TOP"}, {"magnitude", "1"}, {"step", "1 HEAT"}});
+    const QString pressure =
+        fill_and_accept(*window_, "action_pressure",
+                        {{"surface", "WALL_TOP"}, {"magnitude", "1"}, {"step", "1 HEAT"}});
     QVERIFY2(pressure.contains("Model > Face flux"), qPrintable(pressure));
     close_dialogs(*window_);
     QCOMPARE(fill_and_accept(*window_, "action_flux",
@@ -257,18 +257,14 @@ class HeatWallWalkThrough : public QObject {
     // One *DFLUX per face of the top: 4 x 12 elements around and across, one face each.
     QCOMPARE(window_->document().model().steps.at(0).dfluxes.size(), std::size_t(48));
     QVERIFY(!window_->document().results());
-    QCOMPARE(fill_and_accept(*window_, "action_orientation",
-                             {{"name", "AXIS"},
-                              {"system", "cylindrical"},
-                              {"a", "0 0 0"},
-                              {"b", "0 0 0"}}),
+    QCOMPARE(fill_and_accept(
+                 *window_, "action_orientation",
+                 {{"name", "AXIS"}, {"system", "cylindrical"}, {"a", "0 0 0"}, {"b", "0 0 0"}}),
              QString("the two axis points a and b must differ"));
     close_dialogs(*window_);
-    QCOMPARE(fill_and_accept(*window_, "action_orientation",
-                             {{"name", "AXIS"},
-                              {"system", "cylindrical"},
-                              {"a", "0 0 0"},
-                              {"b", "0 0 1"}}),
+    QCOMPARE(fill_and_accept(
+                 *window_, "action_orientation",
+                 {{"name", "AXIS"}, {"system", "cylindrical"}, {"a", "0 0 0"}, {"b", "0 0 1"}}),
              QString());
     QCOMPARE(window_->document().model().orientations.count("AXIS"), std::size_t(1));
     window_->document().undo();

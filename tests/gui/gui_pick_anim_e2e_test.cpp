@@ -22,8 +22,8 @@
 #include "gl_view.hpp"
 #include "main_window.hpp"
 #include "results_panel.hpp"
-#include "styk/elements/element_setup.hpp"
 #include "session/picking.hpp"
+#include "styk/elements/element_setup.hpp"
 #include "styk/render/image.hpp"
 
 using namespace styk;

@@ -37,8 +37,8 @@
 #include "main_window.hpp"
 #include "model_tree.hpp"
 #include "results_panel.hpp"
-#include "styk/elements/element_setup.hpp"
 #include "session/picking.hpp"
+#include "styk/elements/element_setup.hpp"
 
 using namespace styk;
 

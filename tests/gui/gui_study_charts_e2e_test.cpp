@@ -20,8 +20,8 @@
 #include <fstream>
 
 #include "main_window.hpp"
-#include "styk/elements/element_setup.hpp"
 #include "study_chart_window.hpp"
+#include "styk/elements/element_setup.hpp"
 #include "styk/studies/results/run_record.hpp"
 
 using namespace styk;

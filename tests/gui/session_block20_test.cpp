@@ -75,9 +75,7 @@ double quadratic_body_volume(double half_angle) {
 
 class Block20Test : public ::testing::Test {
  protected:
-  Block20Test() {
-    setup_element_registry(registry, libraries, {build_plugin_directory()});
-  }
+  Block20Test() { setup_element_registry(registry, libraries, {build_plugin_directory()}); }
   PluginLibraries libraries;
   ElementRegistry registry;
   Model model;

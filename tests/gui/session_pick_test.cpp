@@ -389,8 +389,7 @@ TEST_F(PickTest, BarsArePickedAsElementsAndHiddenBehindSolids) {
   for (const PickedItem& i : seen.pick_box(0, 0, 399, 299, PickKind::Element))
     boxed.push_back(i.element);
   EXPECT_NE(std::find(boxed.begin(), boxed.end(), out_set.elements.back()), boxed.end());
-  for (const PickedItem& i : seen.pick_box(0, 0, 399, 299, PickKind::Face))
-    EXPECT_GE(i.face, 1);
+  for (const PickedItem& i : seen.pick_box(0, 0, 399, 299, PickKind::Face)) EXPECT_GE(i.face, 1);
   // Seen from +x the BEHIND bar lies behind the block's end face: its pixels pick the block.
   ViewState from_plus_x;
   from_plus_x.spec.name = "+x";

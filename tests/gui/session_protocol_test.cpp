@@ -45,7 +45,8 @@ TEST(SolveProtocol, PhasesInfoWarningsErrorsAndDone) {
   EXPECT_EQ(l.kind, SolveLine::Kind::Error);
   EXPECT_EQ(l.where.file, "");
   EXPECT_EQ(l.exit_code, 2);
-  l = parse_solve_line(R"({"dofs":4320,"event":"done","results":"/a/b.styk.h5","styk_progress":1})");
+  l = parse_solve_line(
+      R"({"dofs":4320,"event":"done","results":"/a/b.styk.h5","styk_progress":1})");
   EXPECT_EQ(l.kind, SolveLine::Kind::Done);
   EXPECT_EQ(l.results, "/a/b.styk.h5");
 }
@@ -64,16 +65,16 @@ TEST(SolveProtocol, LinesThatAreNoEventStayText) {
 
 TEST(SolveProtocol, ProgressRisesThroughThePhases) {
   int last = -1;
-  for (const char* phase :
-       {"read", "check", "pattern", "assemble", "order", "factorise", "solve", "recover", "write"}) {
+  for (const char* phase : {"read", "check", "pattern", "assemble", "order", "factorise", "solve",
+                            "recover", "write"}) {
     EXPECT_GT(phase_progress(phase), last) << phase;
     last = phase_progress(phase);
   }
   EXPECT_LT(last, 100);
   EXPECT_EQ(phase_progress("unknown"), -1);
   const std::vector<std::string> args = solve_arguments("m.inp", "/tmp/out");
-  EXPECT_EQ(args, (std::vector<std::string>{"solve", "m.inp", "-o", "/tmp/out", "--progress",
-                                            "json"}));
+  EXPECT_EQ(args,
+            (std::vector<std::string>{"solve", "m.inp", "-o", "/tmp/out", "--progress", "json"}));
 }
 
 // The solver's side: `styk solve --progress json` on a deck with an error and on the sample
@@ -82,9 +83,7 @@ TEST(SolveProtocol, ProgressRisesThroughThePhases) {
 TEST(SolveProtocol, TheSolverSpeaksTheProtocol) {
   const std::string dir = testing::scratch_dir("solve_protocol");
   const std::string styk = testing::styk_executable();
-  {
-    std::ofstream(dir + "/bad.inp") << "*NODE\n1, 0, 0, 0\n*CLOAD\n9, 1, 1.\n";
-  }
+  { std::ofstream(dir + "/bad.inp") << "*NODE\n1, 0, 0, 0\n*CLOAD\n9, 1, 1.\n"; }
   const testing::CommandResult bad =
       testing::run_command(styk + " solve bad.inp --progress json", dir);
   EXPECT_EQ(bad.exit_code, 1);

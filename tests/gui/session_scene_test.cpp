@@ -78,8 +78,8 @@ TEST_F(SceneTest, MisesContourAndDeformationFromTheResults) {
   const double umax = render::max_displacement(doc.results()->increments.back(), {});
   const render::Frame& frame = scene.frame(640, 480, {});
   const auto& g = frame.geometry;
-  const double diagonal = std::hypot(g.upper[0] - g.lower[0], g.upper[1] - g.lower[1],
-                                     g.upper[2] - g.lower[2]);
+  const double diagonal =
+      std::hypot(g.upper[0] - g.lower[0], g.upper[1] - g.lower[1], g.upper[2] - g.lower[2]);
   EXPECT_GT(scene.deformation_scale() * umax, 0.05 * diagonal);
   EXPECT_LT(scene.deformation_scale() * umax, 0.2 * diagonal);
   settings.auto_scale = false;
@@ -126,8 +126,8 @@ TEST_F(SceneTest, ProbeFindsTheNodeUnderTheCursorAndItsValue) {
   for (int n : tip->nodes) {
     const Vec3& x = doc.model().coords[n];
     const Vec3& o = frame.geometry.origin;
-    const auto ndc = render::project(frame.camera, {float(x[0] - o[0]), float(x[1] - o[1]),
-                                                    float(x[2] - o[2])});
+    const auto ndc =
+        render::project(frame.camera, {float(x[0] - o[0]), float(x[1] - o[1]), float(x[2] - o[2])});
     if (ndc[2] < nearest) nearest = ndc[2], target = n;
   }
   const Vec3& x = doc.model().coords[target];

@@ -67,8 +67,8 @@ TEST_F(ValidationTest, BlockDialogRefusesBadInput) {
   EXPECT_EQ(refusal([&] { check_block(in, model, registry); }), "(accepted)");
   // Left-handed corners: the mesher refuses, the dialog says so.
   in.use_corners = true;
-  in.corners = {{{0, 0, 0}, {0, 1, 0}, {1, 1, 0}, {1, 0, 0}, {0, 0, 1}, {0, 1, 1}, {1, 1, 1},
-                 {1, 0, 1}}};
+  in.corners = {
+      {{0, 0, 0}, {0, 1, 0}, {1, 1, 0}, {1, 0, 0}, {0, 0, 1}, {0, 1, 1}, {1, 1, 1}, {1, 0, 1}}};
   EXPECT_NE(refusal([&] { model_with_block(model, in, registry); }).find("the mesher refuses"),
             std::string::npos);
 }
@@ -134,30 +134,52 @@ TEST_F(ValidationTest, LoadAndBoundaryDialogsRefuseBadInput) {
   in.material = "STEEL";
   Model m = model_with_block(model, in, registry);
   m.nsets["EMPTY"] = NodeSet{"EMPTY", {}, {}};
-  EXPECT_EQ(refusal([&] { boundary_command(m, {"EMPTY", 1, 3, 0.0, -1}); }),
+  EXPECT_EQ(refusal([&] {
+              boundary_command(m, {"EMPTY", 1, 3, 0.0, -1});
+            }),
             "node set EMPTY is empty");
-  EXPECT_EQ(refusal([&] { boundary_command(m, {"NOWHERE", 1, 3, 0.0, -1}); }),
+  EXPECT_EQ(refusal([&] {
+              boundary_command(m, {"NOWHERE", 1, 3, 0.0, -1});
+            }),
             "no node set NOWHERE in the model");
-  EXPECT_EQ(refusal([&] { boundary_command(m, {"BLOCK_XMIN", 3, 1, 0.0, -1}); }),
+  EXPECT_EQ(refusal([&] {
+              boundary_command(m, {"BLOCK_XMIN", 3, 1, 0.0, -1});
+            }),
             "last dof must not be below the first dof");
-  EXPECT_EQ(refusal([&] { boundary_command(m, {"BLOCK_XMIN", 0, 3, 0.0, -1}); }),
+  EXPECT_EQ(refusal([&] {
+              boundary_command(m, {"BLOCK_XMIN", 0, 3, 0.0, -1});
+            }),
             "first dof must be 1, 2, 3 (x, y, z), 4, 5, 6 (rotations), 11 (temperature) or 9 "
             "(electric potential), not 0");
-  EXPECT_EQ(refusal([&] { cload_command(m, {"BLOCK_XMAX", 3, -1.0, false, 0}); }),
+  EXPECT_EQ(refusal([&] {
+              cload_command(m, {"BLOCK_XMAX", 3, -1.0, false, 0});
+            }),
             "the model has no step: add a step first");
-  EXPECT_EQ(refusal([&] { step_command(m, {"S", 2.0, 1.0}); }),
+  EXPECT_EQ(refusal([&] {
+              step_command(m, {"S", 2.0, 1.0});
+            }),
             "initial increment must be > 0 and not above the total time");
   step_command(m, {"S", 1.0, 1.0})->redo(m);
   EXPECT_EQ(refusal([&] { step_command(m, {"s", 1.0, 1.0}); }), "step s exists already");
-  EXPECT_EQ(refusal([&] { cload_command(m, {"BLOCK_XMAX", 3, 0.0, false, 0}); }),
+  EXPECT_EQ(refusal([&] {
+              cload_command(m, {"BLOCK_XMAX", 3, 0.0, false, 0});
+            }),
             "a load of 0 does nothing; enter a value");
-  EXPECT_EQ(refusal([&] { pressure_command(m, {"NOSURF", "", 1, 1.0, 0}); }),
+  EXPECT_EQ(refusal([&] {
+              pressure_command(m, {"NOSURF", "", 1, 1.0, 0});
+            }),
             "no surface NOSURF in the model");
-  EXPECT_EQ(refusal([&] { pressure_command(m, {"", "BLOCK", 7, 1.0, 0}); }),
+  EXPECT_EQ(refusal([&] {
+              pressure_command(m, {"", "BLOCK", 7, 1.0, 0});
+            }),
             "face must be 1..6 (S1..S6)");
-  EXPECT_EQ(refusal([&] { material_command(m, {"steel", 1.0, 0.3, 0.0}); }),
+  EXPECT_EQ(refusal([&] {
+              material_command(m, {"steel", 1.0, 0.3, 0.0});
+            }),
             "material STEEL exists already");
-  EXPECT_EQ(refusal([&] { material_command(m, {"X", 1.0, 0.5, 0.0}); }),
+  EXPECT_EQ(refusal([&] {
+              material_command(m, {"X", 1.0, 0.5, 0.0});
+            }),
             "Poisson's ratio must lie between -1 and 0.5 (exclusive)");
   EXPECT_EQ(refusal([&] { section_command(m, {"BLOCK", "STEEL"}); }).substr(0, 10), "element 1 ");
 

@@ -177,7 +177,8 @@ TEST(Fields, StressErrorEstimatePerElement) {
   inc.increment = 1;
   inc.S_nodal_I = {Tensor6{}, Tensor6{}};
   inc.ERR = {3.5, 12.25};
-  const render::ScalarField err = render::evaluate_field(model, inc, "err", render::Averaging::None);
+  const render::ScalarField err =
+      render::evaluate_field(model, inc, "err", render::Averaging::None);
   EXPECT_EQ(err.location, render::FieldLocation::Element);
   EXPECT_EQ(err.values, inc.ERR);
   EXPECT_THROW(render::evaluate_field(model, inc, "ERR.x", render::Averaging::None), InputError);

@@ -8,11 +8,11 @@
 #include <sstream>
 #include <string>
 
+#include "../support/test_scratch.hpp"
 #include "styk/core/element_registry.hpp"
 #include "styk/elements/builtin.hpp"
 #include "styk/inp/reader.hpp"
 #include "styk/solver/analysis.hpp"
-#include "../support/test_scratch.hpp"
 
 namespace styk::test {
 

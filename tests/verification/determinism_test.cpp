@@ -80,7 +80,8 @@ TEST_P(Determinism, OneTwoAndFourThreadsAndARepeatGiveTheSameBits) {
   const Case& c = GetParam();
   const Results one = solve(c.sample, 1, c.solver, c.heated);
   ASSERT_FALSE(one.increments.empty());
-  expect_identical(one, solve(c.sample, 1, c.solver, c.heated), std::string(c.label) + ", repeated");
+  expect_identical(one, solve(c.sample, 1, c.solver, c.heated),
+                   std::string(c.label) + ", repeated");
   for (int threads : {2, 4})
     expect_identical(one, solve(c.sample, threads, c.solver, c.heated),
                      std::string(c.label) + ", " + std::to_string(threads) + " threads");

@@ -79,8 +79,7 @@ TEST(JointReports, ShrinkFit) {
   for (const char* variant : {"_notchI", "_notchII"}) {
     EXPECT_LT(r.figure(std::string("pressure_edge") + variant), r.figure("pressure_edge"))
         << variant;
-    EXPECT_LT(r.figure(std::string("pressure_max") + variant), r.figure("pressure_max"))
-        << variant;
+    EXPECT_LT(r.figure(std::string("pressure_max") + variant), r.figure("pressure_max")) << variant;
   }
   expect_measured(r, "shaft_mises", 126.469);
   expect_measured(r, "sleeve_mises", 294.752);

@@ -57,7 +57,8 @@ Model flat_patch(const Side& slave, const Side& master, double master_young) {
     mesher::convert_elements(mesh, test::shared_registry(), "C3D21", "UPPER_BOTTOM");
   if (master.type == "C3D21")
     mesher::convert_elements(mesh, test::shared_registry(), "C3D21", "LOWER_TOP");
-  for (const auto& [side, body] : {std::make_pair(slave, "UPPER"), std::make_pair(master, "LOWER")}) {
+  for (const auto& [side, body] :
+       {std::make_pair(slave, "UPPER"), std::make_pair(master, "LOWER")}) {
     const std::vector<int> bricks = mesh.element_sets.at(body);
     if (tetrahedra(side.type))
       mesher::split_to_tetrahedra(mesh, test::shared_registry(), side.type, bricks);
@@ -129,12 +130,9 @@ PatchResult solve_patch(const ElementRegistry& registry, const Side& slave, cons
 TEST_F(NodeToSurfaceContact, FlatPatchOverAStiffMasterIsUniform) {
   // Also on the faces of tetrahedra and wedges (triangles; the linear ones as slaves, whose corner
   // areas are A/3 > 0; the quadratic ones as masters, projected on exactly).
-  const std::pair<Side, Side> cases[] = {{{"C3D8", 3}, {"C3D8", 4}},
-                                         {{"C3D8", 4}, {"C3D8", 3}},
-                                         {{"C3D21", 3}, {"C3D20", 4}},
-                                         {{"C3D21", 4}, {"C3D20", 3}},
-                                         {{"C3D4", 3}, {"C3D4", 4}},
-                                         {{"C3D6", 3}, {"C3D15", 4}},
+  const std::pair<Side, Side> cases[] = {{{"C3D8", 3}, {"C3D8", 4}},   {{"C3D8", 4}, {"C3D8", 3}},
+                                         {{"C3D21", 3}, {"C3D20", 4}}, {{"C3D21", 4}, {"C3D20", 3}},
+                                         {{"C3D4", 3}, {"C3D4", 4}},   {{"C3D6", 3}, {"C3D15", 4}},
                                          {{"C3D8", 3}, {"C3D10", 4}}};
   for (const auto& [slave, master] : cases) {
     SCOPED_TRACE(slave.type + " " + std::to_string(slave.divisions) + " on " + master.type + " " +

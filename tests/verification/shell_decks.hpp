@@ -12,11 +12,11 @@
 #include <string>
 #include <vector>
 
+#include "../support/test_scratch.hpp"
 #include "styk/core/element_registry.hpp"
 #include "styk/elements/builtin.hpp"
 #include "styk/inp/reader.hpp"
 #include "styk/solver/analysis.hpp"
-#include "../support/test_scratch.hpp"
 
 namespace styk::test {
 
@@ -37,9 +37,7 @@ struct ShellGrid {
 
 inline bool grid_triangles(const ShellGrid& g) { return g.type == "STRI3"; }
 
-inline int grid_order(const ShellGrid& g) {
-  return g.type[1] == '4' || grid_triangles(g) ? 1 : 2;
-}
+inline int grid_order(const ShellGrid& g) { return g.type[1] == '4' || grid_triangles(g) ? 1 : 2; }
 
 // The node id of grid point (i, j): row-major over the (order nx + 1) x (order ny + 1) grid.
 inline int grid_node(const ShellGrid& g, int i, int j) {
@@ -129,8 +127,9 @@ inline ShellGrid cantilever_strip(const std::string& type, double P, int nx = 4,
   load << "*CLOAD\n";
   for (int j = 0; j <= jmax; ++j) {  // consistent nodal shares of a uniform edge shear
     const double share = p == 1 ? ((j == 0 || j == jmax) ? 0.5 : 1.0)
-                                : (j % 2 == 1 ? 2.0 / 3.0
-                                              : (j == 0 || j == jmax) ? 1.0 / 6.0 : 1.0 / 3.0);
+                                : (j % 2 == 1              ? 2.0 / 3.0
+                                   : (j == 0 || j == jmax) ? 1.0 / 6.0
+                                                           : 1.0 / 3.0);
     load << grid_node(g, imax, j) << ", 3, " << P * share / g.ny << "\n";
   }
   g.load = load.str() + extra_step_lines;

@@ -258,8 +258,8 @@ TEST(ShellObstacleCourse, PinchedHemisphereWithHole) {
 // known for here.
 struct TwistedCase {
   const char* type;
-  int refine;              // 1: 12 x 2, 2: 24 x 4
-  double in, out;          // asserted to 1e-3
+  int refine;                // 1: 12 x 2, 2: 24 x 4
+  double in, out;            // asserted to 1e-3
   double band_in, band_out;  // |styk / reference - 1|
 };
 
@@ -310,10 +310,11 @@ TEST(ShellObstacleCourse, ThinTwistedBeam) {
     const int nx = 12 * c.refine, ny = 2 * c.refine;
     const double in = twisted_beam_tip(c.type, nx, ny, 0.0032, 1e-6, 3, registry);
     const double out = twisted_beam_tip(c.type, nx, ny, 0.0032, 1e-6, 2, registry);
-    std::printf("thin twisted beam %s %dx%d: in-plane %.5g (%.2f %%), out-of-plane %.5g "
-                "(%.2f %%)\n",
-                c.type, nx, ny, in, 100.0 * (in / in_reference - 1.0), out,
-                100.0 * (out / out_reference - 1.0));
+    std::printf(
+        "thin twisted beam %s %dx%d: in-plane %.5g (%.2f %%), out-of-plane %.5g "
+        "(%.2f %%)\n",
+        c.type, nx, ny, in, 100.0 * (in / in_reference - 1.0), out,
+        100.0 * (out / out_reference - 1.0));
     EXPECT_NEAR(in, c.in, 1e-3 * c.in) << c.type;
     EXPECT_NEAR(out, c.out, 1e-3 * c.out) << c.type;
     EXPECT_LE(std::abs(in / in_reference - 1.0), c.band_in) << c.type;
@@ -364,18 +365,15 @@ TEST(ShellObstacleCourse, ThinTwistedBeamWithoutSupportIsRefusedAsSingular) {
   const std::string floating = refusal(beam, "thin_beam_floating.inp",
                                        [](int, int, int, int) { return std::vector<int>{}; });
   EXPECT_NE(floating.find("the model can move freely in x"), std::string::npos) << floating;
-  const std::string hinged =
-      refusal(beam, "thin_beam_hinged.inp", [](int i, int j, int, int) {
-        return i == 0 && j == 1 ? std::vector<int>{1, 2, 3} : std::vector<int>{};
-      });
-  EXPECT_NE(hinged.find("the model can rotate freely about the axis"), std::string::npos)
-      << hinged;
+  const std::string hinged = refusal(beam, "thin_beam_hinged.inp", [](int i, int j, int, int) {
+    return i == 0 && j == 1 ? std::vector<int>{1, 2, 3} : std::vector<int>{};
+  });
+  EXPECT_NE(hinged.find("the model can rotate freely about the axis"), std::string::npos) << hinged;
   test::ShellGrid square = twisted_beam("S8R", 1, 1, 0.0032);
   square.map = [](double s, double r) { return std::array<double, 3>{1.1 * s, 1.1 * r, 0.0}; };
-  const std::string modes =
-      refusal(square, "thin_s8r_corner.inp", [](int i, int j, int, int) {
-        return i == 0 && j == 0 ? std::vector<int>{1, 2, 3, 4, 5, 6} : std::vector<int>{};
-      });
+  const std::string modes = refusal(square, "thin_s8r_corner.inp", [](int i, int j, int, int) {
+    return i == 0 && j == 0 ? std::vector<int>{1, 2, 3, 4, 5, 6} : std::vector<int>{};
+  });
   std::printf("corner-clamped S8R: %s\n", modes.c_str());
   EXPECT_NE(modes.find("the stiffness matrix is singular at node"), std::string::npos) << modes;
 }

@@ -71,9 +71,10 @@ TEST(ShellSectionForces, CantileverStripTransverseShearEqualsTheEdgeShear) {
         root_moment = std::min(root_moment, moments(k, 0));
       }
     }
-    std::printf("%s: largest |M11| %.6g (P / b = %g at the root); Q13 mean %.9g, worst %.4f; "
-                "Q23 mean %.6g\n",
-                type, -root_moment, Q, q13_sum / stations, q13_worst, q23_sum / stations);
+    std::printf(
+        "%s: largest |M11| %.6g (P / b = %g at the root); Q13 mean %.9g, worst %.4f; "
+        "Q23 mean %.6g\n",
+        type, -root_moment, Q, q13_sum / stations, q13_worst, q23_sum / stations);
     if (kirchhoff) {
       // The DKT's shear force differentiates its moments, which are only approximately linear
       // on this coarse strip: measured mean Q13 9.4624 (-5.4 %), worst station -23.5 %, mean Q23

@@ -35,11 +35,10 @@ struct Solved {
 };
 
 Solved solve_strip(const std::string& type, const ElementRegistry& registry) {
-  const test::ShellGrid g =
-      test::cantilever_strip(type, kP, 4, "*EL PRINT, ELSET=SHELL\nSF\n");
-  Solved out{test::read_shell_deck("shear_output_" + type + ".inp", test::shell_grid_deck(g),
-                                   registry),
-             {}};
+  const test::ShellGrid g = test::cantilever_strip(type, kP, 4, "*EL PRINT, ELSET=SHELL\nSF\n");
+  Solved out{
+      test::read_shell_deck("shear_output_" + type + ".inp", test::shell_grid_deck(g), registry),
+      {}};
   out.results = run_static_analysis(out.model, registry, SolveOptions{}, nullptr, nullptr);
   return out;
 }

@@ -89,13 +89,14 @@ std::vector<std::string> clamped_mesh_warnings(const std::string& type, int nx, 
   g.load = "*DLOAD\nSHELL, P, 10.\n";
   AnalysisReport report;
   try {
-    test::solve_grid(g, "mesh_" + type + "_" + std::to_string(nx) + "x" + std::to_string(ny) +
-                            ".inp",
+    test::solve_grid(g,
+                     "mesh_" + type + "_" + std::to_string(nx) + "x" + std::to_string(ny) + ".inp",
                      0, 0, registry, &report);
   } catch (const InputError& e) {
     report.warnings.push_back(std::string("refused: ") + e.what());
   }
-  for (const std::string& w : report.warnings) std::printf("%s %dx%d: %s\n", type.c_str(), nx, ny, w.c_str());
+  for (const std::string& w : report.warnings)
+    std::printf("%s %dx%d: %s\n", type.c_str(), nx, ny, w.c_str());
   return report.warnings;
 }
 
@@ -109,8 +110,7 @@ TEST(ShellWarnings, SmallReducedMeshesAreCheckedWhole) {
     EXPECT_EQ(count_containing(clamped_mesh_warnings("S8R", nx, 1), "zero-energy modes"), 0) << nx;
   EXPECT_EQ(count_containing(clamped_mesh_warnings("S8R", 4, 2), "zero-energy modes"), 0);
   for (const char* type : {"S4R", "S8", "S9", "STRI3"})
-    EXPECT_EQ(count_containing(clamped_mesh_warnings(type, 1, 1), "zero-energy modes"), 0)
-        << type;
+    EXPECT_EQ(count_containing(clamped_mesh_warnings(type, 1, 1), "zero-energy modes"), 0) << type;
 }
 
 }  // namespace

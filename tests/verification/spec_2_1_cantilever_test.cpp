@@ -19,7 +19,10 @@ namespace {
 
 constexpr double kBeamTheory = 5.0 * 150.0 * 150.0 * 150.0 / (3.0 * 70000.0 * 2.5 * 125.0 / 12.0);
 
-struct Mesh { int along; int through; };
+struct Mesh {
+  int along;
+  int through;
+};
 constexpr Mesh kMeshes[4] = {{6, 1}, {12, 2}, {12, 4}, {24, 8}};
 
 double tip_deflection(const std::string& type, Mesh mesh) {
@@ -48,10 +51,11 @@ TEST(Spec2_1, C3D8FullIntegrationLocks) {
   std::printf("SPEC 2.1 C3D8 full  | mesh | styk     | CalculiX | thesis  | styk/thesis\n");
   for (int m = 0; m < 4; ++m) {
     const double u = tip_deflection("C3D8", kMeshes[m]);
-    std::printf("                    | %2dx%d | %.5f  | %.4f   | %.4f  | %+.2f %%\n", kMeshes[m].along,
-                kMeshes[m].through, u, expected[m], thesis[m], 100.0 * (u / thesis[m] - 1.0));
-    EXPECT_NEAR(u, expected[m], 1e-3 * expected[m]) << "mesh " << kMeshes[m].along << "x"
-                                                    << kMeshes[m].through;
+    std::printf("                    | %2dx%d | %.5f  | %.4f   | %.4f  | %+.2f %%\n",
+                kMeshes[m].along, kMeshes[m].through, u, expected[m], thesis[m],
+                100.0 * (u / thesis[m] - 1.0));
+    EXPECT_NEAR(u, expected[m], 1e-3 * expected[m])
+        << "mesh " << kMeshes[m].along << "x" << kMeshes[m].through;
     // The thesis' values sit 0.1-0.7 % above (SPEC §2.1); they must stay within 1 %.
     EXPECT_NEAR(u, thesis[m], 1e-2 * thesis[m]);
   }

@@ -43,14 +43,17 @@ struct Case {
 
 void run_table(const char* title, mesher::CantileverSpec::Load load, int dof, double theory,
                const Case (&cases)[2]) {
-  std::printf("SPEC 3.1.1 %s, theory %.4e\n  element  n   styk        expected    Abaqus      grade(styk) grade(Abaqus)\n",
-              title, theory);
+  std::printf(
+      "SPEC 3.1.1 %s, theory %.4e\n  element  n   styk        expected    Abaqus      grade(styk) "
+      "grade(Abaqus)\n",
+      title, theory);
   for (const Case& c : cases)
     for (int i = 0; i < 3; ++i) {
       const double u = beam_tip(c.element, kDivisions[i], load, dof);
       std::printf("  %-6s %3d   %.4e  %.4e  %.4e  %c           %c\n", c.element, kDivisions[i], u,
                   c.expected[i], c.abaqus[i], grade(u, theory), grade(c.abaqus[i], theory));
-      EXPECT_NEAR(u, c.expected[i], c.tolerance * c.expected[i]) << c.element << " n=" << kDivisions[i];
+      EXPECT_NEAR(u, c.expected[i], c.tolerance * c.expected[i])
+          << c.element << " n=" << kDivisions[i];
     }
 }
 
@@ -58,12 +61,14 @@ TEST(Spec3_1_1, Tension1a) {
   // Expected: C3D20 = the thesis' Abaqus C3D20 2.9826e-5 / 2.9910e-5 / 2.9949e-5, tolerance
   // 0.01 %; C3D8 = CalculiX 2.20 2.95683e-5 / 2.97826e-5 / 2.98882e-5, tolerance 0.01 % (Abaqus
   // C3D8: 2.9841e-5 / 2.9916e-5 / 2.9951e-5). All grade A against theory 3.0e-5.
-  const Case cases[2] = {{"C3D8", {2.9841e-5, 2.9916e-5, 2.9951e-5}, {2.95683e-5, 2.97826e-5, 2.98882e-5}, 1e-4},
-                         {"C3D20", {2.9826e-5, 2.9910e-5, 2.9949e-5}, {2.9826e-5, 2.9910e-5, 2.9949e-5}, 1e-4}};
+  const Case cases[2] = {
+      {"C3D8", {2.9841e-5, 2.9916e-5, 2.9951e-5}, {2.95683e-5, 2.97826e-5, 2.98882e-5}, 1e-4},
+      {"C3D20", {2.9826e-5, 2.9910e-5, 2.9949e-5}, {2.9826e-5, 2.9910e-5, 2.9949e-5}, 1e-4}};
   run_table("1a tension", mesher::CantileverSpec::Load::EndTraction, 0, 3.0e-5, cases);
   for (int n : kDivisions)
     for (const char* type : {"C3D8", "C3D20"})
-      EXPECT_EQ(grade(beam_tip(type, n, mesher::CantileverSpec::Load::EndTraction, 0), 3.0e-5), 'A');
+      EXPECT_EQ(grade(beam_tip(type, n, mesher::CantileverSpec::Load::EndTraction, 0), 3.0e-5),
+                'A');
 }
 
 TEST(Spec3_1_1, Bending1b) {
@@ -72,8 +77,9 @@ TEST(Spec3_1_1, Bending1b) {
   // 6.26863e-2, tolerance 0.01 %: the plain full-integration brick locks in shear (grades E / E /
   // D); Abaqus' selectively integrated C3D8 gives 1.0765e-2 / 3.8360e-2 / 0.1070 (E / D / A).
   // C3D8 has no mid-edge node: the point load is split over the two top-edge end nodes.
-  const Case cases[2] = {{"C3D8", {1.0765e-2, 3.8360e-2, 0.1070}, {1.00433e-2, 3.05754e-2, 6.26863e-2}, 1e-4},
-                         {"C3D20", {0.1049, 0.1066, 0.1074}, {0.1049, 0.1066, 0.1074}, 5e-4}};
+  const Case cases[2] = {
+      {"C3D8", {1.0765e-2, 3.8360e-2, 0.1070}, {1.00433e-2, 3.05754e-2, 6.26863e-2}, 1e-4},
+      {"C3D20", {0.1049, 0.1066, 0.1074}, {0.1049, 0.1066, 0.1074}, 5e-4}};
   run_table("1b bending", mesher::CantileverSpec::Load::TopEdgeMidpoint, 2, 0.108, cases);
   const auto load = mesher::CantileverSpec::Load::TopEdgeMidpoint;
   EXPECT_EQ(grade(beam_tip("C3D20", 6, load, 2), 0.108), 'B');

@@ -138,16 +138,16 @@ TEST_P(PatchTest, ConstantStressEverywhere) {
   expect_patch_state(model, inc);
 }
 
-INSTANTIATE_TEST_SUITE_P(Spec3_1_8, PatchTest,
-                         ::testing::Values(PatchCase{"C3D8", "C3D8"}, PatchCase{"C3D20", "C3D20"},
-                                           PatchCase{"C3D14", "C3D14"}, PatchCase{"C3D20", "C3D21"},
-                                           PatchCase{"C3D20", "C3D28"}, PatchCase{"C3D8R", "C3D8R"},
-                                           PatchCase{"C3D8I", "C3D8I"}, PatchCase{"C3D20R", "C3D20R"},
-                                           PatchCase{"C3D27", "C3D27"}, PatchCase{"TMPL8", "TMPL8"}),
-                         [](const ::testing::TestParamInfo<PatchCase>& param_info) {
-                           return std::string(param_info.param.outer) + "_in_" +
-                                  param_info.param.inner;
-                         });
+INSTANTIATE_TEST_SUITE_P(
+    Spec3_1_8, PatchTest,
+    ::testing::Values(PatchCase{"C3D8", "C3D8"}, PatchCase{"C3D20", "C3D20"},
+                      PatchCase{"C3D14", "C3D14"}, PatchCase{"C3D20", "C3D21"},
+                      PatchCase{"C3D20", "C3D28"}, PatchCase{"C3D8R", "C3D8R"},
+                      PatchCase{"C3D8I", "C3D8I"}, PatchCase{"C3D20R", "C3D20R"},
+                      PatchCase{"C3D27", "C3D27"}, PatchCase{"TMPL8", "TMPL8"}),
+    [](const ::testing::TestParamInfo<PatchCase>& param_info) {
+      return std::string(param_info.param.outer) + "_in_" + param_info.param.inner;
+    });
 
 }  // namespace
 }  // namespace styk

@@ -7,8 +7,8 @@
 // three nodes and C3D28 as the smoothest; Styk's C3D28 rises monotonically up to the last contact
 // element but also oscillates inside it (measured 1.397, 1.289, 1.406, then 4.67 at the edge,
 // where the exact pressure is singular), so monotonicity is asserted for all but the last three
-// positions and the edge value must be the maximum. The pressure at a position along the punch is the mean over the nodes across the
-// width.
+// positions and the edge value must be the maximum. The pressure at a position along the punch is
+// the mean over the nodes across the width.
 #include <algorithm>
 #include <cmath>
 #include <cstdio>

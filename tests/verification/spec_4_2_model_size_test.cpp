@@ -21,8 +21,9 @@ namespace {
 std::map<std::string, double> fit_answer(const ElementRegistry& registry,
                                          const std::string& model) {
   ProblemSetup setup = find_problem("shrink-fit-full")->setup(0);
-  setup.args = {{"model", model},     {"load-case", "fit"},  {"around", "4"},   {"sector-around", "2"},
-                {"shaft-rings", "2"}, {"sleeve-rings", "2"}, {"fit-rows", "4"}, {"end-rows", "2"}};
+  setup.args = {{"model", model},       {"load-case", "fit"}, {"around", "4"},
+                {"sector-around", "2"}, {"shaft-rings", "2"}, {"sleeve-rings", "2"},
+                {"fit-rows", "4"},      {"end-rows", "2"}};
   const Model m = build_problem_model(setup, "C3D21", registry);
   const Results results = run_static_analysis(m, registry, SolveOptions{}, nullptr, nullptr);
   return setup.quantities(m, results);

@@ -186,8 +186,8 @@ TEST(Spec73Plates, Tab72KirchhoffTriangleSeries) {
   double previous_error = 0.0;
   for (int k = 0; k < 6; ++k) {
     const double w = centre("STRI3", quarter[k], 0.001, registry) * 1e-9;
-    std::printf("whole plate %dx%d: STRI3 %.6g (Kirchhoff %.6g)\n", 2 * quarter[k],
-                2 * quarter[k], w, kirchhoff);
+    std::printf("whole plate %dx%d: STRI3 %.6g (Kirchhoff %.6g)\n", 2 * quarter[k], 2 * quarter[k],
+                w, kirchhoff);
     EXPECT_NEAR(w, stri3[k], 5e-4 * stri3[k]);
     const double error = w - kirchhoff;
     if (k >= 3) {

@@ -111,8 +111,7 @@ void DeckReader::on_equation(const KeywordLine& kw) {
       std::optional<DataLine> line = next_data_line();
       if (!line)
         throw InputError(count_line->where, "the equation announces " + std::to_string(count) +
-                                                " terms but gives " +
-                                                std::to_string(terms.size()));
+                                                " terms but gives " + std::to_string(terms.size()));
       const std::size_t n = line->fields.size();
       const std::int64_t missing = count - static_cast<std::int64_t>(terms.size());
       if (n % 3 != 0 || n == 0 || n > 12 || static_cast<std::int64_t>(n / 3) > missing)
@@ -152,8 +151,7 @@ void DeckReader::on_equation(const KeywordLine& kw) {
                              "one node, which every copy uses)");
       copies = t.nodes.size();
     }
-    for (std::size_t c = 0; c < copies; ++c)
-      add_equation(terms, c, count_line->where);
+    for (std::size_t c = 0; c < copies; ++c) add_equation(terms, c, count_line->where);
     any = true;
   }
   if (!any)

@@ -95,7 +95,8 @@ std::string shortest_number(double value) {
   // CalculiX reads at most 20 characters per field and refuses a longer number: write the most
   // significant digits that fit (13 at least, for e-100 and beyond; a rounding of 5e-14 or less).
   for (int digits = 16; digits > 0; --digits) {
-    const auto r = std::to_chars(buf, buf + sizeof buf, value, std::chars_format::scientific, digits);
+    const auto r =
+        std::to_chars(buf, buf + sizeof buf, value, std::chars_format::scientific, digits);
     if (r.ptr - buf <= kMaxFieldChars) return std::string(buf, r.ptr);
   }
   return std::string(buf, result.ptr);  // not reached: 1 digit always fits

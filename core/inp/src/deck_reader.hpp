@@ -177,7 +177,7 @@ class DeckReader {
   const ElementRegistry& registry_;
   DeckCompleteness completeness_;
   Model model_;
-  int material_ = -1;  // the *MATERIAL block being read, -1 outside one
+  int material_ = -1;        // the *MATERIAL block being read, -1 outside one
   std::string interaction_;  // the *SURFACE INTERACTION block being read, empty outside one
   // *CLEARANCE lines, matched with their contact pair when the deck is complete.
   struct PendingClearance {
@@ -188,7 +188,7 @@ class DeckReader {
   std::vector<PendingClearance> clearances_;
   bool in_step_ = false;
   bool coupling_open_ = false;  // a *COUPLING waits for its *KINEMATIC / *DISTRIBUTING
-  std::string last_keyword_;  // for "takes no data lines" messages
+  std::string last_keyword_;    // for "takes no data lines" messages
   // Where each node was defined (file index into files_, line), for duplicate-id messages.
   std::vector<std::pair<int, int>> node_lines_;
   std::vector<std::string> files_;

@@ -22,7 +22,8 @@ std::string_view without_plus(std::string_view text) {
 // E ("1.d0", "2.5D-3"): the text with its one D or d read as e, or empty when it has none.
 std::string with_e_exponent(std::string_view text) {
   const std::size_t d = text.find_first_of("dD");
-  if (d == std::string_view::npos || d == 0 || text.find_first_of("dD", d + 1) != std::string_view::npos)
+  if (d == std::string_view::npos || d == 0 ||
+      text.find_first_of("dD", d + 1) != std::string_view::npos)
     return {};
   std::string e(text);
   e[d] = 'e';

@@ -44,8 +44,8 @@ void DeckReader::read_output_parameters(const KeywordLine& kw, OutputRequest& re
   if (const Parameter* output = kw.find("OUTPUT")) {
     const std::string value = normalize_name(output->value);
     if (value != "2D" && value != "3D")
-      throw InputError(kw.where, "OUTPUT=" + output->value + " of " + kw.label() +
-                                     ": expected 2D or 3D");
+      throw InputError(kw.where,
+                       "OUTPUT=" + output->value + " of " + kw.label() + ": expected 2D or 3D");
   }
   for (const char* name : {"FREQUENCY", "FREQUENCYF"})
     if (const Parameter* frequency = kw.find(name)) {

@@ -45,8 +45,8 @@ std::string what_step_takes(StepKind kind) {
 // (*CONTACT PRINT's own variables belong to mechanical steps).
 const std::vector<std::string>& variables(StepKind kind) {
   static const std::vector<std::string> kStatic = {
-      "U",   "RF",  "UR",  "RM",   "S",   "E",   "SF",  "SM",  "CSTR", "CDIS",  "CSTATUS",
-      "ENER", "ELSE", "EVOL", "CENT", "THE", "ERR", "NOE", "SOF", "SOM", "SOAREA"};
+      "U",    "RF",   "UR",   "RM",   "S",   "E",   "SF",  "SM",  "CSTR", "CDIS",  "CSTATUS",
+      "ENER", "ELSE", "EVOL", "CENT", "THE", "ERR", "NOE", "SOF", "SOM",  "SOAREA"};
   static const std::vector<std::string> kHeat = {"NT", "RFL", "HFL"};
   static const std::vector<std::string> kElectric = {"EPOT", "RECUR", "ECD"};
   return kind == StepKind::HeatTransfer         ? kHeat

@@ -110,8 +110,9 @@ void DeckReader::on_boundary(const KeywordLine& kw) {
   // FIXED: hold the displacement of the end of the previous step (CalculiX), step data only.
   const bool fixed = kw.find("FIXED") != nullptr;
   if (fixed && !in_step_)
-    throw InputError(kw.where, "*BOUNDARY, FIXED holds the displacements of the previous step: "
-                               "it belongs inside a step");
+    throw InputError(kw.where,
+                     "*BOUNDARY, FIXED holds the displacements of the previous step: "
+                     "it belongs inside a step");
   std::vector<Boundary>& target = in_step_ ? current_step().boundaries : model_.boundaries;
   if (in_step_ && fresh) current_step().boundary_op_new = true;
   while (std::optional<DataLine> line = next_data_line()) {
@@ -136,8 +137,9 @@ void DeckReader::on_boundary(const KeywordLine& kw) {
                                         " is smaller than first dof " + std::to_string(first));
     const bool has_value = line->fields.size() > 3 && !line->fields[3].empty();
     if (fixed && has_value)
-      throw InputError(line->where, "*BOUNDARY, FIXED takes no value: the dofs keep the "
-                                    "displacement of the end of the previous step");
+      throw InputError(line->where,
+                       "*BOUNDARY, FIXED takes no value: the dofs keep the "
+                       "displacement of the end of the previous step");
     if (fixed && last > 3)
       throw InputError(line->where, "*BOUNDARY, FIXED holds displacements (dofs 1..3)");
     const double value = has_value ? real_field(*line, 3, "value") : 0.0;

@@ -28,8 +28,9 @@ void DeckReader::on_initial_conditions(const KeywordLine& kw) {
                                    " is not supported; Styk reads TYPE=TEMPERATURE and "
                                    "TYPE=STRESS");
   if (kw.find("USER"))
-    throw InputError(kw.where, "*INITIAL CONDITIONS, USER needs a user subroutine, which Styk "
-                               "does not run");
+    throw InputError(kw.where,
+                     "*INITIAL CONDITIONS, USER needs a user subroutine, which Styk "
+                     "does not run");
   bool any = false;
   while (std::optional<DataLine> line = next_data_line()) {
     expect_fields(*line, 2, 2, "node or node set, temperature");

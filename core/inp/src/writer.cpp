@@ -237,7 +237,8 @@ void write_step(const Model& model, const Step& step, std::ostream& out) {
       out << (o.kind == OutputRequest::Kind::SectionPrint ? ", FREQUENCYF=" : ", FREQUENCY=")
           << *o.frequency;
     if (o.position == OutputRequest::Position::Centroidal) out << ", POSITION=CENTROIDAL";
-    if (o.position == OutputRequest::Position::AveragedAtNodes) out << ", POSITION=AVERAGED AT NODES";
+    if (o.position == OutputRequest::Position::AveragedAtNodes)
+      out << ", POSITION=AVERAGED AT NODES";
     out << '\n';
     for (std::size_t i = 0; i < o.vars.size(); ++i) out << (i ? ", " : "") << o.vars[i];
     out << '\n';

@@ -203,8 +203,8 @@ class DatPrinter {
           char point[16];
           std::snprintf(point, sizeof point, " %3d", p - inc.ip_offset[e] + 1);
           out_ << point;
-          const Tensor6 shown = orientation ? in_material_axes(*orientation, field[p], inc, p)
-                                            : field[p];
+          const Tensor6 shown =
+              orientation ? in_material_axes(*orientation, field[p], inc, p) : field[p];
           for (const double v : shown) out_ << ' ' << io::fortran_e13_6(v);
           if (orientation) {
             char name[32];

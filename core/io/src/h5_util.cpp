@@ -177,8 +177,8 @@ void check_unchunked_storage(hid_t dataset, const std::string& name, std::uint64
   const haddr_t offset = H5Dget_offset(dataset);
   Handle file(H5Iget_file_id(dataset), H5Fclose, "cannot find the file of " + name);
   hsize_t file_size = 0;
-  if (H5Fget_filesize(file.get(), &file_size) < 0 || offset == HADDR_UNDEF ||
-      offset > file_size || bytes > file_size - offset)
+  if (H5Fget_filesize(file.get(), &file_size) < 0 || offset == HADDR_UNDEF || offset > file_size ||
+      bytes > file_size - offset)
     throw Error(damaged);
 }
 

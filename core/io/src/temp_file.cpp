@@ -126,7 +126,8 @@ void TempFile::throw_if_out_of_space(const std::string& what, int error) const {
   const std::optional<std::string> cause = out_of_space_cause(temp_path_, error);
   if (cause)
     throw ResourceLimitError(what + ": " + *cause + "; nothing was written and the previous " +
-                             final_path_ + ", if any, is unchanged (free space, or write "
+                             final_path_ +
+                             ", if any, is unchanged (free space, or write "
                              "elsewhere with -o)");
 }
 

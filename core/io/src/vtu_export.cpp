@@ -2,8 +2,8 @@
 // array is written inline as format="binary": base64 of [byte count as UInt64][raw little-endian
 // values], header and values encoded as one stream, which is what VTK expects for uncompressed
 // inline data.
-#include <cerrno>
 #include <algorithm>
+#include <cerrno>
 #include <cmath>
 #include <cstdint>
 #include <cstring>
@@ -16,8 +16,8 @@
 #include <vector>
 
 #include "base64.hpp"
-#include "styk/io/vtu_export.hpp"
 #include "styk/io/temp_file.hpp"
+#include "styk/io/vtu_export.hpp"
 
 namespace styk {
 
@@ -175,18 +175,17 @@ std::map<std::string, VtkCell> cells_of_types(const Model& model, const ElementR
     if (cells.count(element.type)) continue;
     const TElement* formulation = registry.find(element.type);
     if (formulation == nullptr) {
-      std::string message = "element " + std::to_string(element.id) + " has type " +
-                            element.type + ", which no loaded formulation describes";
+      std::string message = "element " + std::to_string(element.id) + " has type " + element.type +
+                            ", which no loaded formulation describes";
       if (!registry.searched_paths.empty())
         message += " (plug-ins searched in " + registry.searched_paths + ")";
       throw InputError(element.where, message + ": it cannot be exported");
     }
     VtkCell cell = formulation->vtk_cell();
-    const bool valid =
-        cell.type > 0 && !cell.nodes.empty() &&
-        std::all_of(cell.nodes.begin(), cell.nodes.end(), [&](int k) {
-          return k >= 0 && k < formulation->node_count() && k < element.node_count;
-        });
+    const bool valid = cell.type > 0 && !cell.nodes.empty() &&
+                       std::all_of(cell.nodes.begin(), cell.nodes.end(), [&](int k) {
+                         return k >= 0 && k < formulation->node_count() && k < element.node_count;
+                       });
     if (!valid)
       throw InputError(element.where, "element " + std::to_string(element.id) + " (" +
                                           element.type +
@@ -305,8 +304,8 @@ VtuExportSummary write_vtu(const std::string& path, const Model& model,
       for (const int e : exported) {
         const int first = inc->station_offset[e], last = inc->station_offset[e + 1];
         const TElement* type = registry.find(model.elements[e].type);
-        const bool shell = last > first && type != nullptr &&
-                           type->section_measure() == SectionMeasure::Shell;
+        const bool shell =
+            last > first && type != nullptr && type->section_measure() == SectionMeasure::Shell;
         double q[2] = {0.0, 0.0};
         for (int p = first; shell && p < last; ++p)
           for (int k = 0; k < 2; ++k) q[k] += inc->SFQ[p][k];

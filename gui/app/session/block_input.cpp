@@ -135,8 +135,7 @@ void check_block(const BlockInput& in, const Model& model, const ElementRegistry
   const std::string type = to_upper(in.type);
   const std::vector<std::string> types = brick_types(registry);
   if (std::find(types.begin(), types.end(), type) == types.end())
-    refuse("element type " + in.type + " cannot be meshed here; use " +
-           brick_type_list(registry));
+    refuse("element type " + in.type + " cannot be meshed here; use " + brick_type_list(registry));
   if (needs_layer_side(registry, type) &&
       std::find(kSides.begin(), kSides.end(), to_upper(in.layer_side)) == kSides.end())
     refuse("layer side must be one of XMIN, XMAX, YMIN, YMAX, ZMIN, ZMAX");

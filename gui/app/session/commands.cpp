@@ -188,13 +188,13 @@ std::unique_ptr<Command> make_add_boundaries(int step, std::vector<Boundary> bou
 }
 std::unique_ptr<Command> make_add_cloads(int step, std::vector<ConcentratedLoad> loads,
                                          std::string text) {
-  return std::make_unique<AppendEntries<ConcentratedLoad>>(std::move(text), step,
-                                                           std::move(loads), &cloads_of);
+  return std::make_unique<AppendEntries<ConcentratedLoad>>(std::move(text), step, std::move(loads),
+                                                           &cloads_of);
 }
 std::unique_ptr<Command> make_add_dloads(int step, std::vector<DistributedLoad> loads,
                                          std::string text) {
-  return std::make_unique<AppendEntries<DistributedLoad>>(std::move(text), step,
-                                                          std::move(loads), &dloads_of);
+  return std::make_unique<AppendEntries<DistributedLoad>>(std::move(text), step, std::move(loads),
+                                                          &dloads_of);
 }
 std::unique_ptr<Command> make_add_node_set(NodeSet set) {
   return std::make_unique<AddNodeSet>(std::move(set));

@@ -46,8 +46,8 @@ class UndoStack {
 
  private:
   std::vector<std::unique_ptr<Command>> commands_;
-  std::size_t index_ = 0;   // commands_[0 .. index_) are applied
-  std::size_t clean_ = 0;   // index_ at the last save; npos when that state is gone
+  std::size_t index_ = 0;  // commands_[0 .. index_) are applied
+  std::size_t clean_ = 0;  // index_ at the last save; npos when that state is gone
 };
 
 // The model before and after (mesh edits, builders, block meshing).

@@ -1,6 +1,6 @@
 // The session's document: the Model being edited, optionally the results of one analysis of it,
-// the layers, the view's element filter, and the edit history. No Qt here, so it is tested without a display; the main window
-// owns one Document and redraws when revision() changes.
+// the layers, the view's element filter, and the edit history. No Qt here, so it is tested without
+// a display; the main window owns one Document and redraws when revision() changes.
 #pragma once
 
 #include <memory>

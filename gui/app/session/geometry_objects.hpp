@@ -46,9 +46,9 @@ struct LineInput {
   Vec3 a{0, 0, 0};
   Vec3 b{1, 0, 0};
   int divisions = 4;
-  double grading = 1.0;  // last / first element length (from a to b)
-  std::string material;  // non-empty: a section of NAME with this material
-  double area = 1.0;     // the section's cross-section area (trusses)
+  double grading = 1.0;            // last / first element length (from a to b)
+  std::string material;            // non-empty: a section of NAME with this material
+  double area = 1.0;               // the section's cross-section area (trusses)
   std::string type = "T3D2";       // T3D2, or a beam: B31, B31R, B32, B32R
   std::string shape = "RECT";      // beams: RECT, CIRC, PIPE, BOX
   std::vector<double> dimensions;  // beams: the *BEAM SECTION's first data line

@@ -101,9 +101,8 @@ void LayerTable::set_color(const std::string& name, const render::Rgb& color) {
 }
 
 bool LayerTable::any_visible() const {
-  return std::any_of(layers_.begin(), layers_.end(), [](const render::Layer& l) {
-    return l.visible && !l.elements.empty();
-  });
+  return std::any_of(layers_.begin(), layers_.end(),
+                     [](const render::Layer& l) { return l.visible && !l.elements.empty(); });
 }
 
 }  // namespace styk::gui

@@ -28,7 +28,8 @@ std::vector<PathPoint> field_along_node_set(const Scene& scene, const Model& mod
                                             const std::string& nset) {
   const NodeSet* set = model.find_nset(nset);
   if (!set) throw InputError({}, "no node set " + to_upper(nset) + " in the model");
-  if (set->nodes.size() < 2) throw InputError({}, "node set " + set->name + " has fewer than 2 nodes");
+  if (set->nodes.size() < 2)
+    throw InputError({}, "node set " + set->name + " has fewer than 2 nodes");
   if (!scene.field()) throw InputError({}, "choose a contour field first");
   // The path's ends: the node farthest from an arbitrary one, and the node farthest from that.
   const int start = farthest(model, set->nodes, model.coords[set->nodes.front()]);

@@ -200,8 +200,7 @@ void check_revolve(const RevolveInput& in, const Model& model, const ElementRegi
   const std::string type = to_upper(in.type);
   const std::vector<std::string> types = brick_types(registry);
   if (std::find(types.begin(), types.end(), type) == types.end())
-    refuse("element type " + in.type + " cannot be meshed here; use " +
-           brick_type_list(registry));
+    refuse("element type " + in.type + " cannot be meshed here; use " + brick_type_list(registry));
   if (needs_layer_side(registry, type)) {
     const std::string side = to_upper(in.layer_side);
     if (std::find(kSides.begin(), kSides.end(), side) == kSides.end())

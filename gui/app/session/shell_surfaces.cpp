@@ -96,8 +96,8 @@ Model model_with_shell_surface(const Model& model, const ShellSurfaceInput& in,
 std::unique_ptr<Command> shell_surface_command(const Model& model, const ShellSurfaceInput& input,
                                                const ElementRegistry& registry) {
   Model after = model_with_shell_surface(model, input, registry);
-  return make_replace_model(shell_surface_kind_name(input.kind) + " " + to_upper(input.name),
-                            model, std::move(after));
+  return make_replace_model(shell_surface_kind_name(input.kind) + " " + to_upper(input.name), model,
+                            std::move(after));
 }
 
 }  // namespace styk::gui

@@ -64,14 +64,14 @@ SolveLine parse_solve_line(const std::string& raw) {
 
 int phase_progress(const std::string& phase) {
   static const std::array<std::pair<const char*, int>, 9> kPhases{{{"read", 2},
-                                                                    {"check", 8},
-                                                                    {"pattern", 10},
-                                                                    {"assemble", 20},
-                                                                    {"order", 45},
-                                                                    {"factorise", 50},
-                                                                    {"solve", 80},
-                                                                    {"recover", 85},
-                                                                    {"write", 95}}};
+                                                                   {"check", 8},
+                                                                   {"pattern", 10},
+                                                                   {"assemble", 20},
+                                                                   {"order", 45},
+                                                                   {"factorise", 50},
+                                                                   {"solve", 80},
+                                                                   {"recover", 85},
+                                                                   {"write", 95}}};
   for (const auto& [name, percent] : kPhases)
     if (phase == name) return percent;
   return -1;

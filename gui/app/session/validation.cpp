@@ -60,8 +60,9 @@ Material checked_material(const Model& model, const MaterialInput& in, int repla
   const auto electrical = conductivity(in.electrical_conductivity, "electrical conductivity");
   const bool elastic = in.young != 0.0 || (!thermal && !electrical);
   if (elastic && !(in.young > 0))
-    refuse("Young's modulus must be > 0 (0 only for a heat or electric material with a "
-           "conductivity)");
+    refuse(
+        "Young's modulus must be > 0 (0 only for a heat or electric material with a "
+        "conductivity)");
   if (elastic && !(in.poisson > -1.0 && in.poisson < 0.5))
     refuse("Poisson's ratio must lie between -1 and 0.5 (exclusive)");
   if (in.density < 0) refuse("density must be >= 0 (0: not given)");
@@ -134,7 +135,8 @@ std::unique_ptr<Command> boundary_command(const Model& model, const BoundaryInpu
   check_finite(in.value, "value");
   std::vector<Boundary> entries;
   for (int n : set.nodes)
-    for (int dof = in.first_dof; dof <= in.last_dof; ++dof) entries.push_back({n, dof, in.value, {}});
+    for (int dof = in.first_dof; dof <= in.last_dof; ++dof)
+      entries.push_back({n, dof, in.value, {}});
   return make_add_boundaries(in.step, std::move(entries),
                              "Fix " + set.name + " dofs " + std::to_string(in.first_dof) + "-" +
                                  std::to_string(in.last_dof));
@@ -179,7 +181,8 @@ std::unique_ptr<Command> pressure_command(const Model& model, const PressureInpu
     if (it == model.surfaces.end()) refuse("no surface " + to_upper(in.surface) + " in the model");
     if (it->second.kind != Surface::Kind::ElementFaces || it->second.faces.empty())
       refuse("surface " + it->second.name + " holds no element faces");
-    for (const SurfaceFace& f : it->second.faces) loads.push_back({f.element, f.face, in.magnitude, {}});
+    for (const SurfaceFace& f : it->second.faces)
+      loads.push_back({f.element, f.face, in.magnitude, {}});
     target = it->second.name;
   } else {
     if (in.elset.empty()) refuse("choose a surface or an element set");

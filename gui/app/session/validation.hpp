@@ -23,7 +23,7 @@ struct MaterialInput {
   std::string name;
   double young = 210000.0;  // 0: no *ELASTIC (only with a conductivity: a heat/electric material)
   double poisson = 0.3;
-  double density = 0.0;  // 0: not given
+  double density = 0.0;    // 0: not given
   double expansion = 0.0;  // *EXPANSION mean coefficient (reference 0); 0: not given
   // *CONDUCTIVITY / *ELECTRICAL CONDUCTIVITY: empty = not given, 1 value = isotropic, 3 values =
   // orthotropic k11 k22 k33 in global axes; each > 0.

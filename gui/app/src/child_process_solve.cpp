@@ -37,8 +37,7 @@ Results solve_in(const QTemporaryDir& directory, const QString& program, const M
     if (!out) throw InputError(kHere, "cannot write " + deck.toStdString());
   }
   QStringList arguments;
-  for (const std::string& a :
-       solve_arguments(deck.toStdString(), directory.path().toStdString()))
+  for (const std::string& a : solve_arguments(deck.toStdString(), directory.path().toStdString()))
     arguments << QString::fromStdString(a);
   QProcess process;
   process.start(program, arguments);
@@ -48,8 +47,8 @@ Results solve_in(const QTemporaryDir& directory, const QString& program, const M
   process.waitForFinished(-1);
   if (process.exitStatus() != QProcess::NormalExit || process.exitCode() != 0) {
     const std::string why = failure_text(QString::fromLocal8Bit(process.readAllStandardError()));
-    throw InputError(kHere, "styk solve failed (exit " + std::to_string(process.exitCode()) +
-                                ")" + (why.empty() ? "" : ": " + why));
+    throw InputError(kHere, "styk solve failed (exit " + std::to_string(process.exitCode()) + ")" +
+                                (why.empty() ? "" : ": " + why));
   }
   return read_results_file(directory.filePath("calibration.styk.h5").toStdString()).results;
 }
@@ -60,8 +59,8 @@ mesher::StaticSolve child_process_solve(QString styk_program) {
   return [program = std::move(styk_program)](const Model& model) {
     const QTemporaryDir directory;
     if (!directory.isValid())
-      throw InputError(kHere, "cannot create a temporary directory: " +
-                                  directory.errorString().toStdString());
+      throw InputError(
+          kHere, "cannot create a temporary directory: " + directory.errorString().toStdString());
     try {
       return solve_in(directory, program, model);
     } catch (const InputError&) {

@@ -29,8 +29,8 @@ class FormDialog : public QDialog {
 
   std::string text(const QString& key) const;  // text field or current choice
   bool checked(const QString& key) const;
-  double real(const QString& key, const QString& label) const;   // parse_real
-  int integer(const QString& key, const QString& label) const;   // parse_integer
+  double real(const QString& key, const QString& label) const;  // parse_real
+  int integer(const QString& key, const QString& label) const;  // parse_integer
   QString error_text() const;
 
  public slots:

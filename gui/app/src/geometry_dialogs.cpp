@@ -130,18 +130,16 @@ FormDialog* make_shell_surface_dialog(Document& doc, QWidget* parent) {
       parent);
   const ShellSurfaceInput defaults;
   d->add_text("name", "Name", "ROOF");
-  d->add_choice("kind", "Surface",
-                QStringList{QString::fromStdString(
-                                shell_surface_kind_name(ShellSurfaceKind::CylindricalPanel)),
-                            QString::fromStdString(
-                                shell_surface_kind_name(ShellSurfaceKind::Hemisphere))});
+  d->add_choice(
+      "kind", "Surface",
+      QStringList{
+          QString::fromStdString(shell_surface_kind_name(ShellSurfaceKind::CylindricalPanel)),
+          QString::fromStdString(shell_surface_kind_name(ShellSurfaceKind::Hemisphere))});
   d->add_text("radius", "Radius", QString::number(defaults.radius));
   d->add_text("length", "Panel: length along y", QString::number(defaults.length));
   d->add_text("angle", "Panel: angle of arc (degrees)", QString::number(defaults.angle));
-  d->add_text("hole", "Hemisphere: hole about the pole (degrees)",
-              QString::number(defaults.hole));
-  d->add_text("sweep", "Hemisphere: sweep of longitude (degrees)",
-              QString::number(defaults.sweep));
+  d->add_text("hole", "Hemisphere: hole about the pole (degrees)", QString::number(defaults.hole));
+  d->add_text("sweep", "Hemisphere: sweep of longitude (degrees)", QString::number(defaults.sweep));
   d->add_text("divisions", "Divisions u, v", "8 8");
   d->add_text("grading", "Grading u, v", "1 1");
   d->add_choice("type", "Element type", registry_types(doc.registry(), true));

@@ -46,9 +46,9 @@ bool MainWindow::recover_session(const InterruptedSession& session) {
     return false;
   }
   autosave_->forget(session);
-  log("recovered the autosave of " +
-      QString::fromStdString(session.original_path.empty() ? "a new model"
-                                                           : session.original_path));
+  log("recovered the autosave of " + QString::fromStdString(session.original_path.empty()
+                                                                ? "a new model"
+                                                                : session.original_path));
   refresh_model();
   update_title();
   autosave_now();  // the recovered model is this session's now
@@ -62,13 +62,11 @@ void MainWindow::offer_recovery() {
   const QString what = newest.original_path.empty()
                            ? QString("a new model")
                            : QFileInfo(QString::fromStdString(newest.original_path)).fileName();
-  const QString when =
-      QDateTime::fromSecsSinceEpoch(newest.saved_at).toString("yyyy-MM-dd hh:mm");
-  const auto answer = QMessageBox::question(
-      this, "Recover unsaved changes",
-      "styk-gui stopped without saving the changes to " + what + " (autosaved " + when +
-          "). Recover them?",
-      QMessageBox::Yes | QMessageBox::No);
+  const QString when = QDateTime::fromSecsSinceEpoch(newest.saved_at).toString("yyyy-MM-dd hh:mm");
+  const auto answer = QMessageBox::question(this, "Recover unsaved changes",
+                                            "styk-gui stopped without saving the changes to " +
+                                                what + " (autosaved " + when + "). Recover them?",
+                                            QMessageBox::Yes | QMessageBox::No);
   if (answer == QMessageBox::Yes)
     recover_session(newest);
   else

@@ -149,8 +149,7 @@ FormDialog* make_builder_dialog(Document& doc, const std::string& builder, QWidg
                                                   "brings it back)."),
                            parent);
   for (const mesher::ParamDecl& p : it->params)
-    d->add_text(QString::fromStdString(p.name),
-                QString::fromStdString(p.name + " — " + p.help),
+    d->add_text(QString::fromStdString(p.name), QString::fromStdString(p.name + " — " + p.help),
                 QString::fromStdString(p.default_value));
   const std::vector<mesher::ParamDecl> params = it->params;
   d->set_accept([&doc, builder, params](const FormDialog& f) {

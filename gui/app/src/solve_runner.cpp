@@ -38,9 +38,7 @@ QString SolveRunner::locate_styk_program() {
   return on_path.isEmpty() ? QStringLiteral("styk") : on_path;
 }
 
-bool SolveRunner::running() const {
-  return process_ && process_->state() != QProcess::NotRunning;
-}
+bool SolveRunner::running() const { return process_ && process_->state() != QProcess::NotRunning; }
 
 bool SolveRunner::start(const Model& model, const QString& job, QString* error) {
   if (running()) {
@@ -69,7 +67,8 @@ bool SolveRunner::start(const Model& model, const QString& job, QString* error) 
   pending_.clear();
   process_ = std::make_unique<QProcess>();
   QStringList arguments;
-  for (const std::string& a : solve_arguments(deck_.toStdString(), directory_->path().toStdString()))
+  for (const std::string& a :
+       solve_arguments(deck_.toStdString(), directory_->path().toStdString()))
     arguments << QString::fromStdString(a);
   connect(process_.get(), &QProcess::readyReadStandardError, this, &SolveRunner::read_stderr);
   connect(process_.get(), &QProcess::finished, this, &SolveRunner::on_finished);
@@ -103,7 +102,8 @@ void SolveRunner::read_stderr() {
         break;
       }
       case SolveLine::Kind::PhaseEnd:
-        emit log(QString("%1 done in %2 s").arg(QString::fromStdString(parsed.phase))
+        emit log(QString("%1 done in %2 s")
+                     .arg(QString::fromStdString(parsed.phase))
                      .arg(parsed.seconds, 0, 'f', 3));
         break;
       case SolveLine::Kind::Error:
@@ -140,8 +140,9 @@ void SolveRunner::on_finished(int exit_code, QProcess::ExitStatus status) {
   if (status == QProcess::NormalExit && exit_code == 0) {
     if (results_path_.isEmpty())  // a solver that does not speak this protocol version
       emit finished(false, {},
-                    program_ + " ended without naming its results file in the progress "
-                               "protocol (version " +
+                    program_ +
+                        " ended without naming its results file in the progress "
+                        "protocol (version " +
                         QString::number(progress_protocol::kVersion) + ")",
                     0, {});
     else

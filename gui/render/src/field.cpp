@@ -344,14 +344,14 @@ ScalarField section_resultant_field(const Model& model, const IncrementResult& i
 ScalarField shell_shear_field(const Model& model, const IncrementResult& inc, int component) {
   const std::string name = component == 0 ? "SF.4" : "SF.5";
   if (inc.SFQ.empty() || inc.station_offset.size() != model.elements.size() + 1)
-    throw InputError({}, "step " + std::to_string(inc.step) + " increment " +
-                             std::to_string(inc.increment) + " holds no " + name +
-                             " (transverse shear forces of shells); it holds: " +
-                             drawable_data(model, inc));
+    throw InputError(
+        {}, "step " + std::to_string(inc.step) + " increment " + std::to_string(inc.increment) +
+                " holds no " + name +
+                " (transverse shear forces of shells); it holds: " + drawable_data(model, inc));
   ScalarField field;
   field.name = name;
-  field.description = name + (component == 0 ? ", transverse shear force Q13"
-                                             : ", transverse shear force Q23");
+  field.description =
+      name + (component == 0 ? ", transverse shear force Q13" : ", transverse shear force Q23");
   field.location = FieldLocation::Node;
   field.values.assign(model.coords.size(), 0.0);
   field.defined.assign(model.coords.size(), 0);

@@ -179,11 +179,11 @@ void RenderJob::evaluate_fields(std::unique_ptr<ScalarField> revolved) {
     range = point_field_range(*skin_, *point_field_);
     colors_ = ColorScale{range[0], range[1], options_.bands, options_.smooth};
   } else {
-    field_ = revolved ? std::move(revolved)
-                      : std::make_unique<ScalarField>(evaluate_field(*model_, *increment_,
-                                                                     options_.field,
-                                                                     options_.averaging,
-                                                                     options_.contact_pair));
+    field_ =
+        revolved
+            ? std::move(revolved)
+            : std::make_unique<ScalarField>(evaluate_field(
+                  *model_, *increment_, options_.field, options_.averaging, options_.contact_pair));
     if (!options_.contact_pair.empty() && field_->defined.empty())
       throw InputError({},
                        "--contact-pair applies to contact fields (CPRESS, CSHEAR, CSLIP, "
@@ -321,20 +321,23 @@ std::unique_ptr<ScalarField> RenderJob::revolve(const Model& section,
   const ElementFilter all;
   if (!options_.layers.empty() || options_.filter.id_min != all.id_min ||
       options_.filter.id_max != all.id_max || !options_.filter.types.empty())
-    throw InputError({}, "layers and element filters name the section's elements: they cannot "
-                         "be combined with a revolved picture");
+    throw InputError({},
+                     "layers and element filters name the section's elements: they cannot "
+                     "be combined with a revolved picture");
   if (options_.unroll || options_.ip_values || !options_.contact_pair.empty())
-    throw InputError({}, "--unroll, --ip-values and --contact-pair draw the section's own "
-                         "elements: they cannot be combined with a revolved picture");
+    throw InputError({},
+                     "--unroll, --ip-values and --contact-pair draw the section's own "
+                     "elements: they cannot be combined with a revolved picture");
   // The field is evaluated on the section, with its own elements' stress recovery, then carried
   // round.
   std::unique_ptr<ScalarField> field;
   if (!options_.field.empty() && increment_)
     field = std::make_unique<ScalarField>(
         evaluate_field(section, *increment_, options_.field, options_.averaging));
-  const int segments = options_.revolve_segments > 0
-                           ? options_.revolve_segments
-                           : std::max(1, static_cast<int>(std::ceil(options_.revolve_degrees / 15.0)));
+  const int segments =
+      options_.revolve_segments > 0
+          ? options_.revolve_segments
+          : std::max(1, static_cast<int>(std::ceil(options_.revolve_degrees / 15.0)));
   revolved_ = std::make_unique<RevolvedModel>(
       revolve_axisymmetric(section, registry, increment_, options_.revolve_degrees, segments));
   if (field) *field = revolve_field(*field, section, *revolved_);

@@ -158,7 +158,7 @@ std::vector<SkinFace> extract_skin(const Model& model,
     for (std::size_t f = 0; f < corners.size(); ++f)
       if (corners[f][0] >= 0)  // a planar element's edges are not drawn (drawn_faces)
         entries[fill[smallest_corner(face_key(nodes, corners[f]))]++] =
-          Entry{static_cast<std::uint32_t>(i), static_cast<std::uint32_t>(f)};
+            Entry{static_cast<std::uint32_t>(i), static_cast<std::uint32_t>(f)};
   }
 
   // Pass 3: within each bucket, sort by key; keys that occur once are skin.

@@ -101,9 +101,8 @@ FlangeRun flange_run(const ElementRegistry& registry, const JointOptions& option
   FlangeRun run;
   run.label = preload + " kN, gasket " + gasket + " mm";
   run.preload = std::stod(preload);
-  const SolvedModel s =
-      build_and_solve("bolted-flange", args, registry, options,
-                      "Preload " + run.label + what + ", p to 24 MPa", report);
+  const SolvedModel s = build_and_solve("bolted-flange", args, registry, options,
+                                        "Preload " + run.label + what + ", p to 24 MPa", report);
   const std::vector<int>& bolt_end = s.model.nsets.at("BOLT_END").nodes;
   const auto record = [&](const IncrementResult& inc, double p) {
     double bolt = 0, clamp = 0;
@@ -258,16 +257,15 @@ void sensitivity_runs(const ElementRegistry& registry, const JointOptions& optio
   std::string summary;
   for (std::size_t k = 0; k < candidates.size(); ++k) {
     const Candidate& c = candidates[k];
-    const FlangeRun run =
-        flange_run(registry, options, "15", "5", report, c.args, ", " + c.name);
+    const FlangeRun run = flange_run(registry, options, "15", "5", report, c.args, ", " + c.name);
     const double change = bolt_at(run, 8.0) - run.bolt.front();
     table.rows.push_back({double(k + 1), change, run.leak});
     report.headlines.push_back({"bolt_force_change_8MPa_" + c.key,
                                 "Bolt force change to 8 MPa (15 kN), " + c.name, change, "kN",
                                 "rises with p", ""});
     if (c.key != "no_penetration")
-      report.headlines.push_back({"leak_15kN_" + c.key, "Leak pressure (15 kN), " + c.name,
-                                  run.leak, "MPa", "16", ""});
+      report.headlines.push_back(
+          {"leak_15kN_" + c.key, "Leak pressure (15 kN), " + c.name, run.leak, "MPa", "16", ""});
     summary += (summary.empty() ? "" : "; ") + c.name + ": " + fixed(change, 3) + " kN" +
                (c.key != "no_penetration" ? ", leak " + fixed(run.leak, 1) + " MPa" : "");
   }

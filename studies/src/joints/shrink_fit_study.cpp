@@ -123,10 +123,11 @@ void add_variant_figures(const std::string& key, const std::string& name, const 
   report.headlines.push_back({"pressure_edge" + key,
                               name + ": contact pressure at the sleeve's edge (mu 0)", f.edge,
                               "MPa", published, ""});
-  report.headlines.push_back({"pressure_max" + key, name + ": largest contact pressure (mu 0)",
-                              f.peak, "MPa", "", ""});
-  report.headlines.push_back({"pressure_mid" + key, name + ": contact pressure at mid-sleeve (mu 0)",
-                              f.mid, "MPa", "", "111-122 (Lamé, plain fit)"});
+  report.headlines.push_back(
+      {"pressure_max" + key, name + ": largest contact pressure (mu 0)", f.peak, "MPa", "", ""});
+  report.headlines.push_back({"pressure_mid" + key,
+                              name + ": contact pressure at mid-sleeve (mu 0)", f.mid, "MPa", "",
+                              "111-122 (Lamé, plain fit)"});
   add_stress_figures(key, name, s, published, report);
 }
 
@@ -157,14 +158,14 @@ void notched_variants(const ElementRegistry& registry, const JointOptions& optio
     for (std::size_t i = 0; i < answers[v]->z.size(); ++i)
       along.rows.push_back({double(v), answers[v]->z[i], answers[v]->p[i]});
   report.tables.push_back(along);
-  charts::Chart chart{"Contact pressure along the fit after heating, mu 0 (model A)",
-                      {"z (mm)", false, {}, {}},
-                      {"contact pressure (MPa)", false, 0.0, {}},
-                      {line("plain", plain.z, plain.p, 0),
-                       line("variant I: grooves in the sleeve's faces", f1.z, f1.p, 3),
-                       line("variant II: sleeve turned down at its ends", f2.z, f2.p, 4),
-                       guide("Lamé, plane stress 111", plain.z.front(), plain.z.back(), kLameLow,
-                             1)}};
+  charts::Chart chart{
+      "Contact pressure along the fit after heating, mu 0 (model A)",
+      {"z (mm)", false, {}, {}},
+      {"contact pressure (MPa)", false, 0.0, {}},
+      {line("plain", plain.z, plain.p, 0),
+       line("variant I: grooves in the sleeve's faces", f1.z, f1.p, 3),
+       line("variant II: sleeve turned down at its ends", f2.z, f2.p, 4),
+       guide("Lamé, plane stress 111", plain.z.front(), plain.z.back(), kLameLow, 1)}};
   report.charts.push_back({"notched-pressure",
                            "Contact pressure along the fit after the frictionless heating: the "
                            "plain fit against the notched variants I and II (stand-in geometry).",
@@ -175,8 +176,8 @@ void notched_variants(const ElementRegistry& registry, const JointOptions& optio
       "Mises plots, so these are stand-ins; no published number). Variant I, a relief groove "
       "1 wide and 5 deep in each end face of the sleeve, 1.5 outside the bore: edge pressure " +
       fixed(f1.edge, 1) + " MPa against the plain fit's " + fixed(plain.edge, 1) + " MPa (" +
-      change(f1.edge) + "), largest " + fixed(f1.peak, 1) + " MPa, mid-sleeve " +
-      fixed(f1.mid, 1) + " MPa: the lip at the bore gives way at the edge. Variant II, the "
+      change(f1.edge) + "), largest " + fixed(f1.peak, 1) + " MPa, mid-sleeve " + fixed(f1.mid, 1) +
+      " MPa: the lip at the bore gives way at the edge. Variant II, the "
       "sleeve's outer diameter turned down from 30 to 25 over the last 5 mm at each end: edge "
       "pressure " +
       fixed(f2.edge, 1) + " MPa (" + change(f2.edge) + "), largest " + fixed(f2.peak, 1) +

@@ -176,12 +176,11 @@ void p3g_mesh_series(const ElementRegistry& registry, const JointOptions& option
   report.headlines.push_back({"hub_ip_mises",
                               "Largest integration-point Mises of the hub's peak element, 1000 N m",
                               peaks[0].point, "MPa", "141", ""});
-  report.headlines.push_back({"hub_mises_refined",
-                              "Hub element-mean Mises, finest mesh (" + densities[finest].name + ")",
-                              peaks[finest].mean, "MPa", "141", ""});
-  report.headlines.push_back({"hub_ip_mises_refined",
-                              "Its integration-point peak, finest mesh", peaks[finest].point, "MPa",
-                              "141", ""});
+  report.headlines.push_back(
+      {"hub_mises_refined", "Hub element-mean Mises, finest mesh (" + densities[finest].name + ")",
+       peaks[finest].mean, "MPa", "141", ""});
+  report.headlines.push_back({"hub_ip_mises_refined", "Its integration-point peak, finest mesh",
+                              peaks[finest].point, "MPa", "141", ""});
   report.headlines.push_back({"hub_mises_flange_shoulder",
                               "Hub element-mean Mises with the flange at the shoulder",
                               peaks[shoulder].mean, "MPa", "141", ""});

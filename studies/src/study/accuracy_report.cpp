@@ -162,8 +162,8 @@ void deviations(std::ostringstream& md, const ReferenceProblem& p,
     for (const auto& [m, theory] : theories) {
       const auto fit = convergence_fit(series_of(records, p.name, family, m), m, Cost::Size);
       if (fit && std::abs(fit->slope - theory) > 0.3)
-        missed += std::string(missed.empty() ? "" : ", ") + measure_key(m) + " " + fmt("%.2f", fit->slope) +
-                  " (theory " + std::to_string(theory) + ")";
+        missed += std::string(missed.empty() ? "" : ", ") + measure_key(m) + " " +
+                  fmt("%.2f", fit->slope) + " (theory " + std::to_string(theory) + ")";
     }
     if (missed.empty()) continue;
     const auto reason = p.deviations.find(family);
@@ -186,8 +186,7 @@ void theory_line(std::ostringstream& md, const ReferenceProblem& p,
             std::to_string(o[1]);
   }
   if (!line.empty())
-    md << "Theoretical orders against h (point displacement / point stress): " << line
-       << ".\n\n";
+    md << "Theoretical orders against h (point displacement / point stress): " << line << ".\n\n";
 }
 
 void problem_section(std::ostringstream& md, const ReferenceProblem& p,
@@ -204,7 +203,9 @@ void problem_section(std::ostringstream& md, const ReferenceProblem& p,
        << layout.image_link << "/" << chart_file("accuracy", p.name + "-pressure") << ")\n\n";
   md << "Convergence orders against h (last three levels):\n\n"
         "| family | levels | DOF | L2 displacement | energy | point displacement | point stress "
-        "| finest " << measure_key(p.headline) << " error | time, memory of the finest |\n"
+        "| finest "
+     << measure_key(p.headline)
+     << " error | time, memory of the finest |\n"
         "|---|---|---|---|---|---|---|---|---|\n";
   for (const std::string& family : order) {
     const auto energy = series_of(records, p.name, family, p.headline);
@@ -214,8 +215,7 @@ void problem_section(std::ostringstream& md, const ReferenceProblem& p,
        << " – " << group_thousands(finest.dof) << " | "
        << order_cell(series_of(records, p.name, family, Measure::DisplacementL2),
                      Measure::DisplacementL2)
-       << " | "
-       << order_cell(series_of(records, p.name, family, Measure::Energy), Measure::Energy)
+       << " | " << order_cell(series_of(records, p.name, family, Measure::Energy), Measure::Energy)
        << " | "
        << order_cell(series_of(records, p.name, family, Measure::PointDisplacement),
                      Measure::PointDisplacement)

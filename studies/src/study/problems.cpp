@@ -247,9 +247,9 @@ ReferenceProblem contact() {
 
 const std::vector<ReferenceProblem>& accuracy_problems() {
   static const std::vector<ReferenceProblem> problems = [] {
-    std::vector<ReferenceProblem> all = {lame("lame", 0.3), lame("lame-incompressible", 0.4999),
-                                         cantilever(),      curved_beam(),
-                                         heat(),            contact()};
+    std::vector<ReferenceProblem> all = {
+        lame("lame", 0.3), lame("lame-incompressible", 0.4999), cantilever(), curved_beam(), heat(),
+        contact()};
     for (ReferenceProblem& p : detail::structural_accuracy_problems()) all.push_back(std::move(p));
     return all;
   }();

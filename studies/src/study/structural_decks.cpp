@@ -89,8 +89,7 @@ std::string beam_deck(const ElementFamily& family, const BeamDeck& b) {
   deck << "*BEAM SECTION, ELSET=BEAM, MATERIAL=M, SECTION=RECT"
        << (family.integration.empty() ? "" : ", INTEGRATION=" + family.integration) << "\n"
        << "1., " << b.height << "\n";
-  deck << "*BOUNDARY\nROOT, 1, 6\n*STEP\n*STATIC\n*DLOAD\nBEAM, P2, " << b.load
-       << "\n*END STEP\n";
+  deck << "*BOUNDARY\nROOT, 1, 6\n*STEP\n*STATIC\n*DLOAD\nBEAM, P2, " << b.load << "\n*END STEP\n";
   return deck.str();
 }
 

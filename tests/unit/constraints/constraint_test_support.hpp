@@ -11,10 +11,10 @@
 #include <string>
 #include <vector>
 
+#include "../../support/test_scratch.hpp"
 #include "hex_model_builder.hpp"
 #include "styk/inp/reader.hpp"
 #include "styk/solver/analysis.hpp"
-#include "../../support/test_scratch.hpp"
 
 namespace styk::test {
 

@@ -9,11 +9,11 @@
 #include <string>
 #include <vector>
 
+#include "../../support/test_scratch.hpp"
 #include "styk/core/results.hpp"
 #include "styk/elements/builtin.hpp"
 #include "styk/inp/reader.hpp"
 #include "styk/solver/analysis.hpp"
-#include "../../support/test_scratch.hpp"
 
 namespace styk::test {
 

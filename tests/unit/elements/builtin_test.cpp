@@ -10,7 +10,11 @@ TEST(BuiltinElements, RegistersTheSolidPlaneTrussBeamAndShellFamiliesAsBuiltIn) 
   ElementRegistry registry;
   register_builtin_elements(registry);
   EXPECT_EQ(registry.names(),
-            (std::vector<std::string>{"B21", "B22", "B31", "B31R", "B32", "B32R", "C3D10", "C3D15", "C3D20", "C3D20R", "C3D27", "C3D4", "C3D6", "C3D8", "C3D8I", "C3D8R", "C3D8R0", "CAX4", "CAX4R", "CAX8", "CAX8R", "CPE4", "CPE8", "CPE8R", "CPS4", "CPS8", "CPS8R", "S4", "S4R", "S8", "S8R", "S9", "S9R", "STRI3", "T3D2"}));
+            (std::vector<std::string>{
+                "B21",    "B22",   "B31",   "B31R", "B32",  "B32R",  "C3D10", "C3D15",  "C3D20",
+                "C3D20R", "C3D27", "C3D4",  "C3D6", "C3D8", "C3D8I", "C3D8R", "C3D8R0", "CAX4",
+                "CAX4R",  "CAX8",  "CAX8R", "CPE4", "CPE8", "CPE8R", "CPS4",  "CPS8",   "CPS8R",
+                "S4",     "S4R",   "S8",    "S8R",  "S9",   "S9R",   "STRI3", "T3D2"}));
   const ElementRegistry::Entry* entry = registry.entry("c3d20");
   ASSERT_NE(entry, nullptr);
   EXPECT_EQ(entry->source, "built-in");

@@ -68,9 +68,9 @@ TEST(Stri3, ZeroEnergyModesAreTheSixRigidMotions) {
   const Section section = shell_section(0.05);
   for (const bool tilted : {false, true}) {
     const Eigen::Matrix3d R = tilted ? tilt() : Eigen::Matrix3d::Identity();
-    const ElementGeometry g = geometry(section, {R * Eigen::Vector3d(0.1, 0.2, 0.0),
-                                                 R * Eigen::Vector3d(1.3, 0.1, 0.0),
-                                                 R * Eigen::Vector3d(0.5, 0.9, 0.0)});
+    const ElementGeometry g =
+        geometry(section, {R * Eigen::Vector3d(0.1, 0.2, 0.0), R * Eigen::Vector3d(1.3, 0.1, 0.0),
+                           R * Eigen::Vector3d(0.5, 0.9, 0.0)});
     for (const RuleKind kind : {RuleKind::Full, RuleKind::Reduced}) {
       Eigen::MatrixXd K;
       element.stiffness(g, material(), kind, K);
@@ -249,7 +249,8 @@ TEST(Stri3, ConstantCurvaturePatchTestIsExactFlatAndTilted) {
                                element_dofs(p, e, u), strain, stress);
       const double top = -(kT / 2.0) * kE / (1.0 - kNu * kNu) * (1.0 + kNu) * 1e-3;
       for (Eigen::Index k = 0; k < stress.rows(); k += 3) {
-        // The trace of the fibre stress (sigma33 = 0): 2 top at the top fibre, -2 top at the bottom.
+        // The trace of the fibre stress (sigma33 = 0): 2 top at the top fibre, -2 top at the
+        // bottom.
         const double bottom_trace = stress(k, 0) + stress(k, 1) + stress(k, 2);
         const double top_trace = stress(k + 2, 0) + stress(k + 2, 1) + stress(k + 2, 2);
         EXPECT_NEAR(bottom_trace, -2.0 * top, 1e-9 * std::abs(top));
@@ -264,9 +265,9 @@ TEST(Stri3, PressureLoadIsThePressureTimesTheAreaAlongTheNormal) {
   const Stri3 element;
   const Section section = shell_section(0.1);
   const Eigen::Matrix3d R = tilt();
-  const ElementGeometry g = geometry(section, {R * Eigen::Vector3d(0.0, 0.0, 0.0),
-                                               R * Eigen::Vector3d(2.0, 0.0, 0.0),
-                                               R * Eigen::Vector3d(0.5, 1.5, 0.0)});
+  const ElementGeometry g =
+      geometry(section, {R * Eigen::Vector3d(0.0, 0.0, 0.0), R * Eigen::Vector3d(2.0, 0.0, 0.0),
+                         R * Eigen::Vector3d(0.5, 1.5, 0.0)});
   Eigen::VectorXd f;
   element.pressure_load(g, 0, 4.0, f);
   Eigen::Vector3d total = Eigen::Vector3d::Zero();
@@ -281,15 +282,13 @@ TEST(Stri3, RefusesASolidSectionADegenerateTriangleAndAnOrthotropicMaterial) {
   Section solid = shell_section(0.1);
   solid.shell.reset();
   Eigen::MatrixXd K;
-  const std::array<Eigen::Vector3d, 3> corners = {Eigen::Vector3d(0, 0, 0),
-                                                  Eigen::Vector3d(1, 0, 0),
-                                                  Eigen::Vector3d(0, 1, 0)};
+  const std::array<Eigen::Vector3d, 3> corners = {
+      Eigen::Vector3d(0, 0, 0), Eigen::Vector3d(1, 0, 0), Eigen::Vector3d(0, 1, 0)};
   EXPECT_THROW(element.stiffness(geometry(solid, corners), material(), RuleKind::Full, K),
                InputError);
   const Section section = shell_section(0.1);
-  const ElementGeometry line = geometry(section, {Eigen::Vector3d(0, 0, 0),
-                                                  Eigen::Vector3d(1, 0, 0),
-                                                  Eigen::Vector3d(2, 0, 0)});
+  const ElementGeometry line = geometry(
+      section, {Eigen::Vector3d(0, 0, 0), Eigen::Vector3d(1, 0, 0), Eigen::Vector3d(2, 0, 0)});
   try {
     element.stiffness(line, material(), RuleKind::Full, K);
     ADD_FAILURE() << "a degenerate triangle was accepted";

@@ -12,8 +12,8 @@ namespace styk {
 namespace {
 
 using test::fake_registry;
-using test::write_deck;
 using test::line_of;
+using test::write_deck;
 
 // Two unit cubes stacked in z, not sharing nodes: block A (element 1, nodes 1-8) below,
 // block B (element 2, nodes 11-18) above. A's top is its face S2, B's bottom its face S1.

@@ -8,9 +8,7 @@
 
 namespace styk::test {
 
-inline std::filesystem::path scratch_dir() {
-  return test_scratch_dir("inp_test_decks");
-}
+inline std::filesystem::path scratch_dir() { return test_scratch_dir("inp_test_decks"); }
 
 // Writes `text` to scratch_dir()/name and returns the path.
 inline std::string write_deck(const std::string& name, const std::string& text) {

@@ -14,10 +14,10 @@
 namespace styk {
 namespace {
 
-using test::fake_registry;
-using test::write_deck;
-using test::line_of;
 using test::expect_error;
+using test::fake_registry;
+using test::line_of;
+using test::write_deck;
 
 // Two unit cubes stacked in z without shared nodes (A below, B above) and a contact pair between
 // A's top (S2) and B's bottom (S1).
@@ -159,10 +159,10 @@ TEST(JointKeywords, RefusesWhatItDoesNotSupportByName) {
   const std::string step = "*STEP\n*STATIC\n*END STEP\n";
   expect_error("tie.inp", std::string(kBlocks) + "*TIE, NAME=T, MULTISTAGE\nLEFT, RIGHT\n" + step,
                "*TIE", "MULTISTAGE is not supported");
-  expect_error("tie_adjust.inp",
-               std::string(kBlocks) + "*TIE, NAME=T, CYCLIC SYMMETRY, ADJUST=NO\nLEFT, RIGHT\n" +
-                   step,
-               "*TIE", "ADJUST= belongs to a tied-contact *TIE");
+  expect_error(
+      "tie_adjust.inp",
+      std::string(kBlocks) + "*TIE, NAME=T, CYCLIC SYMMETRY, ADJUST=NO\nLEFT, RIGHT\n" + step,
+      "*TIE", "ADJUST= belongs to a tied-contact *TIE");
   expect_error("check.inp",
                std::string(kBlocks) +
                    "*TIE, NAME=T, CYCLIC SYMMETRY\nLEFT, RIGHT\n*CYCLIC SYMMETRY MODEL, N=4, "

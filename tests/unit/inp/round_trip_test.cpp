@@ -203,8 +203,11 @@ TEST(RoundTripAll, EveryWrittenFeatureReadsBack) {
 TEST(RoundTripAll, NoWrittenNumberIsLongerThanCalculixReads) {
   const ElementRegistry registry = fake_registry();
   Model model = read_inp(write_deck("long_numbers.inp", kEverything), registry);
-  const std::vector<double> values{-0.0070710678118654755, 1.2246467991473532e-16,
-                                   -1.2345678901234567e-123, 1.0 / 3.0, 2.0 / 3.0e7,
+  const std::vector<double> values{-0.0070710678118654755,
+                                   1.2246467991473532e-16,
+                                   -1.2345678901234567e-123,
+                                   1.0 / 3.0,
+                                   2.0 / 3.0e7,
                                    0.30000000000000004};
   for (std::size_t i = 0; i < values.size() && i < model.coords.size(); ++i)
     model.coords[i][0] = values[i];

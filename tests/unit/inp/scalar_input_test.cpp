@@ -15,10 +15,10 @@
 namespace styk {
 namespace {
 
-using test::fake_registry;
-using test::write_deck;
-using test::line_of;
 using test::expect_error;
+using test::fake_registry;
+using test::line_of;
+using test::write_deck;
 
 const char* const kMesh = R"(*NODE, NSET=ALL
 1, 0., 0., 0.

@@ -36,18 +36,19 @@ TEST(SectionTechnique, SelectiveSetsTheFlagAndRoundTrips) {
 
 TEST(SectionTechnique, FullIsTheDefault) {
   const ElementRegistry registry = test::fake_registry();
-  const Model m = read_inp(
-      test::write_deck("technique_default.inp", deck("*SOLID SECTION, ELSET=BLOCK, MATERIAL=RUBBER")),
-      registry);
+  const Model m = read_inp(test::write_deck("technique_default.inp",
+                                            deck("*SOLID SECTION, ELSET=BLOCK, MATERIAL=RUBBER")),
+                           registry);
   EXPECT_FALSE(m.sections[0].selective_volumetric);
 }
 
 TEST(SectionTechnique, UnknownValueIsAnErrorAtTheSectionLine) {
   const ElementRegistry registry = test::fake_registry();
   try {
-    read_inp(test::write_deck("technique_bad.inp",
-                              deck("*SOLID SECTION, ELSET=BLOCK, MATERIAL=RUBBER, TECHNIQUE=HYBRID")),
-             registry);
+    read_inp(
+        test::write_deck("technique_bad.inp",
+                         deck("*SOLID SECTION, ELSET=BLOCK, MATERIAL=RUBBER, TECHNIQUE=HYBRID")),
+        registry);
     FAIL() << "no InputError";
   } catch (const InputError& e) {
     EXPECT_EQ(e.where().line, 15);

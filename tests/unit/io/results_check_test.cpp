@@ -124,9 +124,9 @@ TEST(ResultsCheckLegacy, OlderFilesCannotBeVerified) {
 }
 
 // Datasets this build does not know (future fields, here XN per node and XE per element; UR and
-// SF, which this test once used, are known now) are read and their values checked like any other. Their rows are named by their count
-// when it fits one entity only (1 = the element), by number otherwise (8 = nodes, element nodes
-// and integration points of the cube alike).
+// SF, which this test once used, are known now) are read and their values checked like any other.
+// Their rows are named by their count when it fits one entity only (1 = the element), by number
+// otherwise (8 = nodes, element nodes and integration points of the cube alike).
 TEST_F(ResultsCheckTest, UnknownDatasetsAreScannedToo) {
   const ResultsFileContents contents = read_results_file(good_);
   const std::string path = dir_ + "/older_layout.styk.h5";

@@ -318,7 +318,8 @@ TEST_F(ResultsIntegrity, RandomByteFlipsAreRefusedOrChangeNothing) {
 }
 
 // The writer refuses non-finite values in any dataset or real attribute, naming the dataset and
-// the node / element and integration point (or beam station), and writes nothing (an older file stays in place).
+// the node / element and integration point (or beam station), and writes nothing (an older file
+// stays in place).
 TEST_F(ResultsIntegrity, WriterRefusesNonFiniteValuesNamingTheEntity) {
   const ResultsFileContents contents = read_results_file(good_);
   const std::string path = dir_ + "/nan.styk.h5";

@@ -198,12 +198,15 @@ IncrementResult two_hex_results(const Model& model) {
 // The built-in types describe their cells themselves (TElement::vtk_cell()).
 TEST(VtuExport, BuiltInTypesDescribeTheirCells) {
   const ElementRegistry& r = test_registry();
-  const std::map<std::string, int> expected = {
-      {"C3D8", vtk::kHexahedron},          {"C3D8I", vtk::kHexahedron},
-      {"C3D8R", vtk::kHexahedron},         {"C3D20", vtk::kQuadraticHexahedron},
-      {"C3D20R", vtk::kQuadraticHexahedron}, {"C3D27", vtk::kQuadraticHexahedron},
-      {"CPS4", vtk::kQuad},                {"CPE8", vtk::kQuadraticQuad},
-      {"T3D2", vtk::kLine}};
+  const std::map<std::string, int> expected = {{"C3D8", vtk::kHexahedron},
+                                               {"C3D8I", vtk::kHexahedron},
+                                               {"C3D8R", vtk::kHexahedron},
+                                               {"C3D20", vtk::kQuadraticHexahedron},
+                                               {"C3D20R", vtk::kQuadraticHexahedron},
+                                               {"C3D27", vtk::kQuadraticHexahedron},
+                                               {"CPS4", vtk::kQuad},
+                                               {"CPE8", vtk::kQuadraticQuad},
+                                               {"T3D2", vtk::kLine}};
   for (const auto& [type, cell] : expected) {
     EXPECT_EQ(r.find(type)->vtk_cell().type, cell) << type;
   }

@@ -140,12 +140,12 @@ TEST(Builders, CatalogueIsInSpecOrderWithSections) {
   const auto all = mesher::builder_catalogue();
   // Every SPEC model with a builder, in SPEC order (issue: "a builder for every SPEC.md model").
   const std::vector<std::string> expected = {
-      "cantilever",       "single-element", "stacked-elements", "straight-beam",
-      "beam-10x2x2",      "curved-beam",    "twisted-beam",     "thick-plate",
-      "hemisphere",       "thick-cylinder", "patch-test",       "punch-foundation",
-      "cylinders",        "two-cantilevers", "punch-halfspace", "shrink-fit",
-      "conical-fit",      "spline-joint",   "p3g-joint",        "bolted-flange",
-      "electric-plate",   "cylinder-wall"};
+      "cantilever",     "single-element",  "stacked-elements", "straight-beam",
+      "beam-10x2x2",    "curved-beam",     "twisted-beam",     "thick-plate",
+      "hemisphere",     "thick-cylinder",  "patch-test",       "punch-foundation",
+      "cylinders",      "two-cantilevers", "punch-halfspace",  "shrink-fit",
+      "conical-fit",    "spline-joint",    "p3g-joint",        "bolted-flange",
+      "electric-plate", "cylinder-wall"};
   std::vector<std::string> names;
   for (const auto& b : all) names.push_back(b.name);
   EXPECT_EQ(names, expected);

@@ -8,9 +8,9 @@
 #include <gtest/gtest.h>
 
 #include "mesher_checks.hpp"
+#include "styk/elements/builtin.hpp"
 #include "styk/mesher/block_mesh.hpp"
 #include "styk/mesher/convert.hpp"
-#include "styk/elements/builtin.hpp"
 #include "styk/mesher/hex_topology.hpp"
 
 namespace styk::mesher {
@@ -75,9 +75,10 @@ TEST(Convert, EveryFaceCanBecomeTheContactFace) {
     ASSERT_EQ(s1.size(), 9u);
     for (int k = 0; k < 8; ++k) {
       const Vec3& x = mesh.nodes[e.nodes[s1[k]]];
-      EXPECT_TRUE(std::any_of(old_positions.begin(), old_positions.end(), [&](const Vec3& p) {
-        return std::hypot(p[0] - x[0], p[1] - x[1], p[2] - x[2]) < 1e-14;
-      })) << "face " << f << " node " << s1[k];
+      EXPECT_TRUE(std::any_of(
+          old_positions.begin(), old_positions.end(),
+          [&](const Vec3& p) { return std::hypot(p[0] - x[0], p[1] - x[1], p[2] - x[2]) < 1e-14; }))
+          << "face " << f << " node " << s1[k];
     }
     expect_valid(mesh);
   }
@@ -182,8 +183,8 @@ TEST(Convert, C3D20RIsANameChangeAndBadInputIsRefused) {
   EXPECT_THROW(convert(mesh, "C3D14", "", {0}), std::invalid_argument);  // a C3D20R
   EXPECT_THROW(convert(mesh, "C3D21", "NOPE"), std::invalid_argument);
   EXPECT_THROW(convert(mesh, "C3D21", "TOP"), std::invalid_argument);  // not C3D20 any more
-  EXPECT_THROW(convert(mesh, "C3D8"), std::invalid_argument);  // describes no conversion
-  EXPECT_THROW(convert(mesh, "C3D99"), std::invalid_argument);  // not registered
+  EXPECT_THROW(convert(mesh, "C3D8"), std::invalid_argument);          // describes no conversion
+  EXPECT_THROW(convert(mesh, "C3D99"), std::invalid_argument);         // not registered
 }
 
 // A type the mesher has never heard of converts because it describes itself: a 27-node brick

@@ -125,9 +125,9 @@ TEST_F(StudyBuilders, DistortedCantileversKeepTheirVolume) {
 // cylindrical *TRANSFORM held tangentially, the axis held in x and y; no torque.
 TEST_F(StudyBuilders, ShrinkFitSectorHasItsSymmetryPlanes) {
   const std::map<std::string, std::string> coarse = {
-      {"element", "C3D21"},  {"model", "C"},    {"load-case", "fit"},
-      {"around", "4"},       {"sector-around", "2"},   {"shaft-rings", "2"},
-      {"sleeve-rings", "2"}, {"fit-rows", "4"}, {"end-rows", "2"}};
+      {"element", "C3D21"},  {"model", "C"},         {"load-case", "fit"},
+      {"around", "4"},       {"sector-around", "2"}, {"shaft-rings", "2"},
+      {"sleeve-rings", "2"}, {"fit-rows", "4"},      {"end-rows", "2"}};
   const Built b = build(registry_, "shrink-fit", coarse);
   // Shaft per row: core 1 + two rings of 2 x 1 = 5, x (2 + 4 + 2) rows; sleeve 2 x 2 x 4.
   EXPECT_EQ(b.model.element_count(), 5 * 8 + 16);
@@ -156,9 +156,8 @@ TEST_F(StudyBuilders, ShrinkFitSectorHasItsSymmetryPlanes) {
 // its turned-down end no longer has.
 TEST_F(StudyBuilders, ShrinkFitNotchBadValuesAreNamed) {
   const std::map<std::string, std::string> coarse = {
-      {"element", "C3D21"},  {"model", "A"},    {"load-case", "fit"},
-      {"around", "4"},       {"shaft-rings", "2"},
-      {"sleeve-rings", "2"}, {"fit-rows", "4"}, {"end-rows", "2"}};
+      {"element", "C3D21"}, {"model", "A"},        {"load-case", "fit"}, {"around", "4"},
+      {"shaft-rings", "2"}, {"sleeve-rings", "2"}, {"fit-rows", "4"},    {"end-rows", "2"}};
   auto fails = [&](std::map<std::string, std::string> extra, const std::string& needle) {
     std::map<std::string, std::string> args = coarse;
     for (const auto& [k, v] : extra) args[k] = v;

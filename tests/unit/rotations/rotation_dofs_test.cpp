@@ -13,6 +13,7 @@
 
 #include <gtest/gtest.h>
 
+#include "../../support/test_scratch.hpp"
 #include "styk/core/element_registry.hpp"
 #include "styk/core/plugin_loader.hpp"
 #include "styk/elements/element_setup.hpp"
@@ -21,7 +22,6 @@
 #include "styk/io/results_file.hpp"
 #include "styk/io/vtu_export.hpp"
 #include "styk/solver/analysis.hpp"
-#include "../../support/test_scratch.hpp"
 
 namespace styk {
 namespace {

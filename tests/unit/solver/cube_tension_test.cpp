@@ -116,15 +116,14 @@ TEST_P(CubeTension, MatchesExactSolution) {
   }
 }
 
-INSTANTIATE_TEST_SUITE_P(
-    Solver, CubeTension,
-    testing::Values(TensionCase{"C3D8", 1, LoadKind::Pressure},
-                    TensionCase{"C3D8", 1, LoadKind::NodalForces},
-                    TensionCase{"C3D20", 1, LoadKind::Pressure},
-                    TensionCase{"C3D20", 1, LoadKind::NodalForces},
-                    TensionCase{"C3D8", 3, LoadKind::Pressure},
-                    TensionCase{"C3D20", 2, LoadKind::NodalForces}),
-    case_name);
+INSTANTIATE_TEST_SUITE_P(Solver, CubeTension,
+                         testing::Values(TensionCase{"C3D8", 1, LoadKind::Pressure},
+                                         TensionCase{"C3D8", 1, LoadKind::NodalForces},
+                                         TensionCase{"C3D20", 1, LoadKind::Pressure},
+                                         TensionCase{"C3D20", 1, LoadKind::NodalForces},
+                                         TensionCase{"C3D8", 3, LoadKind::Pressure},
+                                         TensionCase{"C3D20", 2, LoadKind::NodalForces}),
+                         case_name);
 
 }  // namespace
 }  // namespace styk

@@ -39,8 +39,7 @@ TEST(Diagnostics, UnconstrainedModelMovesFreely) {
     model.boundaries.push_back({n, 3, 0.0, {}});
   }
   const std::string message = error_of(model, registry);
-  EXPECT_NE(message.find("test.inp: the model can move freely in x"), std::string::npos)
-      << message;
+  EXPECT_NE(message.find("test.inp: the model can move freely in x"), std::string::npos) << message;
   EXPECT_NE(message.find("(8 nodes)"), std::string::npos) << message;
 }
 

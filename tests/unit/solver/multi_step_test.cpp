@@ -77,8 +77,7 @@ TEST(MultiStep, ModifiedLoadsSuperposeAndReuseTheFactor) {
   const Results alone = run_static_analysis(separate, registry, SolveOptions{}, nullptr, nullptr);
   const double scale = test::max_abs_displacement(alone.increments[0]);
   for (std::size_t n = 0; n < r3.U.size(); ++n)
-    for (int d = 0; d < 3; ++d)
-      EXPECT_NEAR(r3.U[n][d], alone.increments[0].U[n][d], 1e-12 * scale);
+    for (int d = 0; d < 3; ++d) EXPECT_NEAR(r3.U[n][d], alone.increments[0].U[n][d], 1e-12 * scale);
 }
 
 TEST(MultiStep, NewBoundaryConditionsRefactorise) {

@@ -21,7 +21,8 @@ TEST(SolverAgreement, CholmodAndGamgAgreeOnTheCantilever) {
   SolveOptions direct;
   direct.force = LinearSolverKind::Cholmod;
   AnalysisReport direct_report;
-  const Results a = run_static_analysis(cantilever.model, registry, direct, nullptr, &direct_report);
+  const Results a =
+      run_static_analysis(cantilever.model, registry, direct, nullptr, &direct_report);
   SolveOptions iterative;
   iterative.force = LinearSolverKind::Iterative;
   AnalysisReport iterative_report;
@@ -107,7 +108,7 @@ INSTANTIATE_TEST_SUITE_P(Solver, PrescribedDisplacement,
                          testing::Values(LinearSolverKind::Cholmod, LinearSolverKind::Iterative),
                          [](const testing::TestParamInfo<LinearSolverKind>& param) {
                            return param.param == LinearSolverKind::Cholmod ? std::string("Cholmod")
-                                                                          : std::string("Gamg");
+                                                                           : std::string("Gamg");
                          });
 
 }  // namespace

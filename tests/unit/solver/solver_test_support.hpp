@@ -19,8 +19,8 @@ inline ElementRegistry builtin_registry() {
 
 // A block [0,lx] x [0,ly] x [0,lz] of nx x ny x nz elements of `type` (E = 210000, nu = 0.3),
 // without boundary conditions or steps.
-inline Model block(const ElementRegistry& registry, const std::string& type, int nx, int ny,
-                   int nz, double lx, double ly, double lz) {
+inline Model block(const ElementRegistry& registry, const std::string& type, int nx, int ny, int nz,
+                   double lx, double ly, double lz) {
   testkit::CantileverSpec spec;
   spec.type = type;
   spec.nx = nx;

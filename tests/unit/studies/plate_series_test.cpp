@@ -34,8 +34,8 @@ TEST(PlateSeries, KirchhoffCentreDeflectionAndMoments) {
 
 // The Mindlin plate adds the shear deflection: at t = 1 the table value of SPEC §7.3 Tab 7.1b's
 // Mindlin column (1000 w D1 / (q a^4), D1 the rigidity of t = 1) is 25.111
-// (docs/verification.md); at t = 0.01 the shear part is 5.18e-4 of the Kirchhoff deflection (the note of the
-// `plate` problem: STRI3 is measured against the Kirchhoff series there).
+// (docs/verification.md); at t = 0.01 the shear part is 5.18e-4 of the Kirchhoff deflection (the
+// note of the `plate` problem: STRI3 is measured against the Kirchhoff series there).
 TEST(PlateSeries, MindlinAddsTheShearDeflection) {
   const SquarePlate thick = unit_plate(1.0);
   EXPECT_NEAR(1000 * plate_deflection(thick, 0.5, 0.5, true) * rigidity(thick), 25.111, 5e-4);

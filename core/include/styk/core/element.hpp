@@ -77,8 +77,8 @@ struct ElementOptions {
 enum class SectionMeasure { None, Thickness, Area, Beam, Shell };
 
 struct IntegrationRule {
-  std::string label;                    // e.g. "3x3x3 Gauss"
-  std::vector<Vec3> points;             // natural coordinates
+  std::string label;         // e.g. "3x3x3 Gauss"
+  std::vector<Vec3> points;  // natural coordinates
   std::vector<double> weights;
   int size() const { return static_cast<int>(weights.size()); }
 };
@@ -98,9 +98,9 @@ struct FaceDef {
 
 // The element as placed in a model: its nodal coordinates (n x 3) and what to name it in messages.
 struct ElementGeometry {
-  Eigen::MatrixXd X;                    // node coordinates, one row per element node
-  Id id = 0;                            // user element id
-  SourceLoc where;                      // the deck line that defined it
+  Eigen::MatrixXd X;  // node coordinates, one row per element node
+  Id id = 0;          // user element id
+  SourceLoc where;    // the deck line that defined it
   // The section's geometric datum: thickness of plane elements, cross-section area of trusses
   // (SectionMeasure); ignored by solids. Must be positive where it is used.
   double cross_section = 1.0;
@@ -115,8 +115,8 @@ class TElement {
   virtual ~TElement() = default;
 
   // --- node layout -----------------------------------------------------------------------------
-  virtual std::string name() const = 0;            // upper-case type name, e.g. "C3D20"
-  virtual std::string description() const = 0;     // one line for `styk elements`
+  virtual std::string name() const = 0;         // upper-case type name, e.g. "C3D20"
+  virtual std::string description() const = 0;  // one line for `styk elements`
   virtual int node_count() const = 0;
   virtual const std::vector<Vec3>& natural_nodes() const = 0;
   virtual const std::vector<FaceDef>& faces() const = 0;  // faces()[0] is S1
@@ -156,7 +156,8 @@ class TElement {
   virtual int face_rule_order() const = 0;
 
   // --- BEE: strain-displacement matrix (6 x 3n) from the Cartesian derivatives dNdx (n x 3) ----
-  virtual void bee(const Eigen::Ref<const Eigen::MatrixXd>& dNdx, Eigen::Ref<Eigen::MatrixXd> B) const;
+  virtual void bee(const Eigen::Ref<const Eigen::MatrixXd>& dNdx,
+                   Eigen::Ref<Eigen::MatrixXd> B) const;
 
   // --- DEE: the element's constitutive matrix from the material's 3D law at a point ------------
   // Default: the law itself (solids). Plane stress condenses sigma33 = sigma13 = sigma23 = 0,

@@ -27,16 +27,16 @@ std::string to_upper(std::string s);
 
 struct Element {
   Id id = 0;
-  std::string type;           // upper-case element type name, e.g. "C3D20"
-  int first_node = 0;         // offset into Model::connectivity
+  std::string type;    // upper-case element type name, e.g. "C3D20"
+  int first_node = 0;  // offset into Model::connectivity
   int node_count = 0;
-  int section = -1;           // index into Model::sections, -1 until a section claims it
+  int section = -1;  // index into Model::sections, -1 until a section claims it
   SourceLoc where;
 };
 
 struct NodeSet {
-  std::string name;           // upper-case
-  std::vector<int> nodes;     // node indices, sorted, unique
+  std::string name;        // upper-case
+  std::vector<int> nodes;  // node indices, sorted, unique
   SourceLoc where;
 };
 
@@ -58,7 +58,7 @@ enum class ElasticType { Isotropic, Orthotropic, EngineeringConstants, Anisotrop
 enum class ExpansionType { Isotropic, Orthotropic, Anisotropic };
 
 struct Material {
-  std::string name;           // upper-case
+  std::string name;  // upper-case
   // *ELASTIC, TYPE=ISOTROPIC with one line: the constant law. Unset when elastic_table holds it.
   std::optional<double> young;
   std::optional<double> poisson;
@@ -116,11 +116,11 @@ struct ShellSection {
 };
 
 struct Section {
-  std::string elset;          // upper-case
-  std::string material;       // upper-case
+  std::string elset;     // upper-case
+  std::string material;  // upper-case
   int material_index = -1;
-  std::optional<double> thickness;  // for plane and truss elements (first data line)
-  std::optional<BeamSection> beam;  // set for a *BEAM SECTION (beam elements)
+  std::optional<double> thickness;    // for plane and truss elements (first data line)
+  std::optional<BeamSection> beam;    // set for a *BEAM SECTION (beam elements)
   std::optional<ShellSection> shell;  // set for a *SHELL SECTION (shell elements)
   // Styk-only: integrate the volumetric part of the strain selectively (B-bar, mean dilatation)
   // against volumetric locking in near-incompressible materials.
@@ -134,7 +134,7 @@ struct Section {
 // 4..6 = rotations rx, ry, rz at nodes of beam elements; 11 = temperature, 9 = electric potential
 // in scalar-field steps).
 struct Boundary {
-  int node = 0;               // node index
+  int node = 0;  // node index
   int dof = 1;
   double value = 0.0;
   SourceLoc where;
@@ -144,8 +144,8 @@ struct Boundary {
 };
 
 struct ConcentratedLoad {
-  int node = 0;               // node index
-  int dof = 1;                // 1..3 forces, 4..6 moments; *CFLUX 11 (heat flow), *CECUR 9
+  int node = 0;  // node index
+  int dof = 1;   // 1..3 forces, 4..6 moments; *CFLUX 11 (heat flow), *CECUR 9
   double value = 0.0;
   SourceLoc where;
 };
@@ -153,19 +153,19 @@ struct ConcentratedLoad {
 // Uniform pressure on face `face` (1..6 = S1..S6 / P1..P6) of an element; positive pushes into
 // the element (Abaqus convention).
 struct DistributedLoad {
-  int element = 0;            // element index
+  int element = 0;  // element index
   int face = 1;
   double magnitude = 0.0;
   SourceLoc where;
 };
 
 // *DLOAD with GRAV or CENTRIF: a body force per unit mass on an element, times its *DENSITY.
-// Gravity: acceleration `magnitude` along `direction` (unit). Centrifugal: magnitude = omega^2 about
-// the axis through `point` along `direction` (unit), acceleration omega^2 times the distance vector
-// from the axis.
+// Gravity: acceleration `magnitude` along `direction` (unit). Centrifugal: magnitude = omega^2
+// about the axis through `point` along `direction` (unit), acceleration omega^2 times the distance
+// vector from the axis.
 struct BodyLoad {
   enum class Kind { Gravity, Centrifugal };
-  int element = 0;            // element index
+  int element = 0;  // element index
   Kind kind = Kind::Gravity;
   double magnitude = 0.0;
   Vec3 point{};
@@ -178,7 +178,7 @@ struct BodyAcceleration {
   struct Rotation {
     double omega_squared = 0.0;
     Vec3 point{};
-    Vec3 axis{};              // unit
+    Vec3 axis{};  // unit
   };
   Vec3 gravity{0.0, 0.0, 0.0};
   std::vector<Rotation> rotations;
@@ -199,10 +199,10 @@ struct OutputRequest {
   // SectionPrint: the force and moment on an element-face surface; vars SOF, SOM, SOAREA.
   enum class Kind { NodePrint, ElementPrint, NodeFile, ElementFile, ContactPrint, SectionPrint };
   Kind kind = Kind::NodePrint;
-  std::string set;                 // upper-case NSET= / ELSET= / SURFACE=, empty = whole model
-  std::vector<std::string> vars;   // upper-case: U, RF, S, E, ...
-  bool totals = false;             // TOTALS=YES: also print the sum over the set
-  bool totals_only = false;        // TOTALS=ONLY: print the sum alone
+  std::string set;                // upper-case NSET= / ELSET= / SURFACE=, empty = whole model
+  std::vector<std::string> vars;  // upper-case: U, RF, S, E, ...
+  bool totals = false;            // TOTALS=YES: also print the sum over the set
+  bool totals_only = false;       // TOTALS=ONLY: print the sum alone
   // GLOBAL=YES/NO: results in global axes or in the local systems (*TRANSFORM for nodal
   // variables, the section's *ORIENTATION for element ones). Unset: CalculiX's default, local for
   // *NODE PRINT and *EL PRINT, global for *NODE FILE and *EL FILE.
@@ -210,7 +210,7 @@ struct OutputRequest {
   // FREQUENCY= (FREQUENCYF= on *SECTION PRINT): output every n-th increment and the last one of
   // each step; 0: none. The last value given on any request holds from its step on (default 1).
   std::optional<int> frequency;
-  std::string name;                // *SECTION PRINT, NAME= (as written)
+  std::string name;  // *SECTION PRINT, NAME= (as written)
   // *EL PRINT, POSITION= (Abaqus spelling): where S and E are printed. AveragedAtNodes prints
   // nodal method I (SPEC §5) for the nodes of the element set.
   enum class Position { IntegrationPoints, Centroidal, AveragedAtNodes };
@@ -234,7 +234,7 @@ struct StaticProcedure {
 
 // A temperature at one node: *INITIAL CONDITIONS, TYPE=TEMPERATURE or *TEMPERATURE.
 struct NodalTemperature {
-  int node = 0;               // node index
+  int node = 0;  // node index
   double value = 0.0;
   SourceLoc where;
 };
@@ -248,9 +248,9 @@ enum class StepKind { Static, HeatTransfer, ElectricConduction };
 // take `material` (CalculiX: a linear step is solved from the total loads with the stiffness it
 // has then).
 struct SectionChange {
-  std::string elset;          // upper-case; an element set named by a *SOLID SECTION
-  std::string material;       // upper-case
-  int material_index = -1;    // resolved when the deck is complete
+  std::string elset;        // upper-case; an element set named by a *SOLID SECTION
+  std::string material;     // upper-case
+  int material_index = -1;  // resolved when the deck is complete
   SourceLoc where;
 };
 
@@ -260,12 +260,12 @@ struct SectionChange {
 // exposed node through nodes that are open or carry a contact pressure below `critical`.
 // CalculiX has no such keyword.
 struct PressurePenetration {
-  std::string slave, master;       // upper-case surfaces of a *CONTACT PAIR
-  std::vector<int> exposed_slave;  // node indices (first data field: node or node set)
-  std::vector<int> exposed_master; // second field
-  double pressure = 0.0;           // fluid pressure at the end of the step (ramps like a load)
-  double critical = 0.0;           // critical contact pressure (default 0: only where open)
-  std::string leak_nset;           // Styk-only LEAK=: slave nodes on the far side of the seal
+  std::string slave, master;        // upper-case surfaces of a *CONTACT PAIR
+  std::vector<int> exposed_slave;   // node indices (first data field: node or node set)
+  std::vector<int> exposed_master;  // second field
+  double pressure = 0.0;            // fluid pressure at the end of the step (ramps like a load)
+  double critical = 0.0;            // critical contact pressure (default 0: only where open)
+  std::string leak_nset;            // Styk-only LEAK=: slave nodes on the far side of the seal
   SourceLoc where;
 };
 
@@ -305,7 +305,7 @@ struct Step {
 // *INITIAL CONDITIONS, TYPE=STRESS: the stress at one integration point (of the element's
 // standard rule, 1-based as in the .dat) before the first step; points not given start at 0.
 struct InitialStress {
-  int element = 0;            // element index
+  int element = 0;  // element index
   int point = 1;
   std::array<double, 6> stress{};  // 11, 22, 33, 12, 13, 23
   SourceLoc where;
@@ -321,15 +321,15 @@ struct LocalAxes {
   Vec3 b{0.0, 1.0, 0.0};
 };
 
-struct Orientation {               // *ORIENTATION, NAME=, SYSTEM=
-  std::string name;                // upper-case
+struct Orientation {  // *ORIENTATION, NAME=, SYSTEM=
+  std::string name;   // upper-case
   LocalAxes axes;
   SourceLoc where;
 };
 
 // *TRANSFORM: boundary conditions, loads and equation terms of the set's nodes act in `axes`.
 struct Transform {
-  std::string nset;                // upper-case
+  std::string nset;  // upper-case
   LocalAxes axes;
   SourceLoc where;
 };
@@ -337,8 +337,8 @@ struct Transform {
 // *EQUATION: sum of coefficient * u(node, dof) = 0, enforced exactly. terms[0] is the dependent
 // dof (its coefficient is non-zero); at least two terms.
 struct EquationTerm {
-  int node = 0;                    // node index
-  int dof = 1;                     // 1..6 (in the node's *TRANSFORM system if it has one)
+  int node = 0;  // node index
+  int dof = 1;   // 1..6 (in the node's *TRANSFORM system if it has one)
   double coefficient = 0.0;
 };
 struct Equation {
@@ -348,42 +348,42 @@ struct Equation {
 
 // One element face of a surface: face 1..n = S1..Sn of the element type (TElement::faces()).
 struct SurfaceFace {
-  int element = 0;                 // element index
+  int element = 0;  // element index
   int face = 1;
 };
 
-struct Surface {                   // *SURFACE, NAME=, TYPE=ELEMENT|NODE
+struct Surface {  // *SURFACE, NAME=, TYPE=ELEMENT|NODE
   enum class Kind { ElementFaces, Nodes };
-  std::string name;                // upper-case
+  std::string name;  // upper-case
   Kind kind = Kind::ElementFaces;
   std::vector<SurfaceFace> faces;  // ElementFaces: sorted by (element, face), unique
   std::vector<int> nodes;          // Nodes: node indices, sorted, unique
   SourceLoc where;
 };
 
-struct Friction {                  // *FRICTION inside a *SURFACE INTERACTION
+struct Friction {                                     // *FRICTION inside a *SURFACE INTERACTION
   enum class Kind { Isotropic, Anisotropic, Rough };  // Rough: no slip at all
   Kind kind = Kind::Isotropic;
-  double mu = 0.0;                 // Isotropic: mu; Anisotropic: mu1 along local direction 1
-  double mu2 = 0.0;                // Anisotropic: mu2 along local direction 2
+  double mu = 0.0;                    // Isotropic: mu; Anisotropic: mu1 along local direction 1
+  double mu2 = 0.0;                   // Anisotropic: mu2 along local direction 2
   std::optional<double> stick_slope;  // CalculiX's 2nd field; Styk enforces stick exactly
-  std::string orientation;         // Anisotropic: ORIENTATION= (Styk-only), upper-case
+  std::string orientation;            // Anisotropic: ORIENTATION= (Styk-only), upper-case
   SourceLoc where;
 };
 
-struct SurfaceInteraction {        // *SURFACE INTERACTION, NAME= (hard contact, exact)
-  std::string name;                // upper-case
+struct SurfaceInteraction {          // *SURFACE INTERACTION, NAME= (hard contact, exact)
+  std::string name;                  // upper-case
   std::optional<Friction> friction;  // none: frictionless
   SourceLoc where;
 };
 
-struct ContactPair {               // one data line of *CONTACT PAIR
+struct ContactPair {  // one data line of *CONTACT PAIR
   enum class Type { NodeToSurface, SurfaceToSurface };
   Type type = Type::NodeToSurface;
-  std::string slave;               // upper-case surface names (Model::surfaces)
-  std::string master;              // an element-face surface
-  std::string interaction;         // Model::surface_interactions
-  std::string adjust_nset;         // ADJUST=nset: move these slave nodes onto the master
+  std::string slave;                       // upper-case surface names (Model::surfaces)
+  std::string master;                      // an element-face surface
+  std::string interaction;                 // Model::surface_interactions
+  std::string adjust_nset;                 // ADJUST=nset: move these slave nodes onto the master
   std::optional<double> adjust_tolerance;  // ADJUST=value: ... those closer than this
   // *CLEARANCE, VALUE=: initial gap (> 0) or interference (< 0) replacing the geometric one.
   std::optional<double> clearance;
@@ -394,26 +394,26 @@ struct ContactPair {               // one data line of *CONTACT PAIR
 // *TIE (without CYCLIC SYMMETRY): tied contact. Every slave node within the position tolerance
 // of a master face moves with the face point it projects to (u_slave = sum N_i u_i of that point).
 struct Tie {
-  std::string name;                // upper-case NAME=
-  std::string slave, master;       // upper-case surfaces (slave: faces or nodes; master: faces)
+  std::string name;           // upper-case NAME=
+  std::string slave, master;  // upper-case surfaces (slave: faces or nodes; master: faces)
   std::optional<double> position_tolerance;  // POSITION TOLERANCE=; unset: CalculiX's default
-  bool adjust = true;              // ADJUST=YES (default): slave nodes are moved onto the master
+  bool adjust = true;  // ADJUST=YES (default): slave nodes are moved onto the master
   SourceLoc where;
 };
 
 // *COUPLING with *KINEMATIC or *DISTRIBUTING (CalculiX semantics, docs/input.md).
 struct Coupling {
   enum class Kind { Kinematic, Distributing };
-  std::string name;                // upper-case CONSTRAINT NAME=
-  int reference_node = 0;          // node index of REF NODE=
-  std::string surface;             // upper-case SURFACE= (faces; *KINEMATIC also nodes)
-  std::string orientation;         // upper-case ORIENTATION=, empty: global axes
+  std::string name;         // upper-case CONSTRAINT NAME=
+  int reference_node = 0;   // node index of REF NODE=
+  std::string surface;      // upper-case SURFACE= (faces; *KINEMATIC also nodes)
+  std::string orientation;  // upper-case ORIENTATION=, empty: global axes
   Kind kind = Kind::Kinematic;
   // The dofs listed under *KINEMATIC (1..3: the coupled translations, rigid with the reference
   // node) or *DISTRIBUTING (4..6: the moments distributed with the forces), each 1-based.
   std::vector<int> dofs;
   SourceLoc where;
-  SourceLoc kind_where;            // the *KINEMATIC / *DISTRIBUTING line
+  SourceLoc kind_where;  // the *KINEMATIC / *DISTRIBUTING line
 };
 
 // *MPC: the linearised geometric constraints of CalculiX (which solves them geometrically
@@ -423,7 +423,7 @@ struct Coupling {
 struct Mpc {
   enum class Type { Beam, Straight, Plane };
   Type type = Type::Beam;
-  std::vector<int> nodes;          // node indices in deck order
+  std::vector<int> nodes;  // node indices in deck order
   SourceLoc where;
 };
 
@@ -432,9 +432,9 @@ struct Mpc {
 // mean opening of the section equals dof 1 of the reference node (a *CLOAD on it is the bolt
 // force, a *BOUNDARY the shortening).
 struct PretensionSection {
-  std::string surface;             // upper-case element-face surface
-  int reference_node = 0;          // node index of NODE=
-  std::optional<Vec3> normal;      // the data line; unset: the mean face normal
+  std::string surface;         // upper-case element-face surface
+  int reference_node = 0;      // node index of NODE=
+  std::optional<Vec3> normal;  // the data line; unset: the mean face normal
   SourceLoc where;
 };
 
@@ -444,14 +444,14 @@ struct PretensionSection {
 // to the master side) carries it to, u_master = Q u_slave (a static load that repeats in every
 // sector: nodal diameter 0); nodes on the axis belong to both surfaces and move along it only.
 struct CyclicSymmetry {
-  std::string tie;                 // upper-case *TIE NAME=
-  std::string slave, master;       // upper-case surface names (their nodes are tied)
+  std::string tie;                           // upper-case *TIE NAME=
+  std::string slave, master;                 // upper-case surface names (their nodes are tied)
   std::optional<double> position_tolerance;  // *TIE, POSITION TOLERANCE=
-  int sectors = 0;                 // *CYCLIC SYMMETRY MODEL, N= (0 until one names this tie)
-  int ngraph = 1;                  // NGRAPH= (CalculiX's output copies; read and written back)
-  Vec3 a{}, b{};                   // the axis through a and b
-  SourceLoc where;                 // the *TIE line
-  SourceLoc model_where;           // the *CYCLIC SYMMETRY MODEL line
+  int sectors = 0;        // *CYCLIC SYMMETRY MODEL, N= (0 until one names this tie)
+  int ngraph = 1;         // NGRAPH= (CalculiX's output copies; read and written back)
+  Vec3 a{}, b{};          // the axis through a and b
+  SourceLoc where;        // the *TIE line
+  SourceLoc model_where;  // the *CYCLIC SYMMETRY MODEL line
 };
 
 class Model {
@@ -468,11 +468,11 @@ class Model {
   std::vector<Element> elements;
   std::vector<int> connectivity;
 
-  std::map<std::string, NodeSet> nsets;        // by upper-case name
-  std::map<std::string, ElementSet> elsets;    // by upper-case name
+  std::map<std::string, NodeSet> nsets;      // by upper-case name
+  std::map<std::string, ElementSet> elsets;  // by upper-case name
   std::vector<Material> materials;
   std::vector<Section> sections;
-  std::vector<Boundary> boundaries;            // given outside any step: hold in every step
+  std::vector<Boundary> boundaries;  // given outside any step: hold in every step
   std::vector<Step> steps;
 
   // Contact definitions and local systems (by upper-case name where named).
@@ -489,7 +489,7 @@ class Model {
   std::vector<PretensionSection> pretension_sections;
   std::vector<CyclicSymmetry> cyclic_symmetries;
   std::vector<NodalTemperature> initial_temperatures;  // nodes not listed start at 0
-  std::vector<InitialStress> initial_stresses;          // sorted by (element, point), unique
+  std::vector<InitialStress> initial_stresses;         // sorted by (element, point), unique
 
   int node_count() const { return static_cast<int>(node_ids.size()); }
   int element_count() const { return static_cast<int>(elements.size()); }

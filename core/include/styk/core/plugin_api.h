@@ -67,8 +67,8 @@ typedef struct StykPluginHost {
 /* What the plug-in tells the host (frozen layout). The host zeroes it before the call. */
 #define STYK_PLUGIN_MESSAGE_SIZE 512
 typedef struct StykPluginReply {
-  uint32_t plugin_abi_version;             /* the STYK_PLUGIN_ABI_VERSION the plug-in was built with */
-  char message[STYK_PLUGIN_MESSAGE_SIZE];  /* NUL-terminated reason when the result is not OK */
+  uint32_t plugin_abi_version; /* the STYK_PLUGIN_ABI_VERSION the plug-in was built with */
+  char message[STYK_PLUGIN_MESSAGE_SIZE]; /* NUL-terminated reason when the result is not OK */
 } StykPluginReply;
 
 /* Return codes of the entry point (frozen). */

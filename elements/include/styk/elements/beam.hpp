@@ -51,7 +51,8 @@ class Beam : public TElement {
   int distributed_load_labels() const override { return 2; }  // P1, P2
   // B22/B32: VTK's quadratic edge lists its ends before the middle node.
   VtkCell vtk_cell() const override {
-    return node_count() == 3 ? VtkCell{vtk::kQuadraticEdge, {0, 2, 1}} : VtkCell{vtk::kLine, {0, 1}};
+    return node_count() == 3 ? VtkCell{vtk::kQuadraticEdge, {0, 2, 1}}
+                             : VtkCell{vtk::kLine, {0, 1}};
   }
 
   void der(const Vec3& xi, Eigen::Ref<Eigen::VectorXd> N,

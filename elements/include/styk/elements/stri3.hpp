@@ -15,9 +15,10 @@
 // stiffness; RuleKind::Reduced is the same rule (the name fixes it).
 // Output points (rule()): per surface point the bottom, middle and top fibre, as the shells; the
 // transverse shear stresses there are zero (Kirchhoff). Section forces per surface point: SF =
-// (N11, N22, N12, Q13, Q23; the results keep the first three) and SM = (M11, M22, M12) per unit length in the lamina axes, M about
-// the mid-surface; the transverse shear forces follow from the moments' equilibrium, Q13 =
-// M11,1 + M12,2 and Q23 = M12,1 + M22,2 (constant over the element: the moments are linear).
+// (N11, N22, N12, Q13, Q23; the results keep the first three) and SM = (M11, M22, M12) per unit
+// length in the lamina axes, M about the mid-surface; the transverse shear forces follow from the
+// moments' equilibrium, Q13 = M11,1 + M12,2 and Q23 = M12,1 + M22,2 (constant over the element: the
+// moments are linear).
 #pragma once
 
 #include <string>

@@ -9,12 +9,12 @@
 namespace styk::mesher {
 
 struct CantileverSpec {
-  BoxSpec box;                         // size = (L, width, height)
+  BoxSpec box;  // size = (L, width, height)
   double young = 210000.0;
   double poisson = 0.3;
   enum class Load {
-    EndTraction,        // uniform traction on x = L, resultant `force`, consistent nodal loads
-    TopEdgeMidpoint,    // `force` at the middle of the top edge (z = height) of the free end
+    EndTraction,      // uniform traction on x = L, resultant `force`, consistent nodal loads
+    TopEdgeMidpoint,  // `force` at the middle of the top edge (z = height) of the free end
   };
   Load load = Load::EndTraction;
   Vec3 force{0.0, 0.0, 1.0};

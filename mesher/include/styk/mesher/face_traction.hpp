@@ -13,7 +13,7 @@ namespace styk::mesher {
 // axis = side of `box` whose resultant is `total` (force components x, y, z). The per-face nodal
 // weights are the integrals of the face shape functions: 1/4 each (4-node face), -1/12 at the
 // corners and 1/3 at the mid-edges (8-node face), times the face area.
-std::vector<ConcentratedLoad> uniform_traction_loads(const BoxMesh& box,
-                                                     int axis, int side, const Vec3& total);
+std::vector<ConcentratedLoad> uniform_traction_loads(const BoxMesh& box, int axis, int side,
+                                                     const Vec3& total);
 
 }  // namespace styk::mesher

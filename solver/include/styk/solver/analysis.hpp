@@ -21,9 +21,9 @@ struct PhaseTiming {
 class ProgressSink {
  public:
   virtual ~ProgressSink() = default;
-  virtual void begin(const std::string& phase) = 0;               // e.g. "assemble"
+  virtual void begin(const std::string& phase) = 0;  // e.g. "assemble"
   virtual void end(const std::string& phase, double seconds) = 0;
-  virtual void info(const std::string& message) = 0;              // one line of detail
+  virtual void info(const std::string& message) = 0;  // one line of detail
   // A solvable model whose answer is likely poor (locking, hourglassing, distortion): shown even
   // where detail lines are not.
   virtual void warning(const std::string& message) { info("warning: " + message); }
@@ -50,10 +50,10 @@ struct SolveOptions {
 };
 
 struct AnalysisReport {
-  std::vector<PhaseTiming> timings;  // in the order the phases ran (repeated per step if redone)
-  std::string linear_solver;         // e.g. "CHOLMOD supernodal (METIS node-graph ordering)"
-  long long dofs = 0;                // unknowns of the (first) linear system solved
-  int iterations = 0;                // CG iterations summed over the steps (iterative solver)
+  std::vector<PhaseTiming> timings;   // in the order the phases ran (repeated per step if redone)
+  std::string linear_solver;          // e.g. "CHOLMOD supernodal (METIS node-graph ordering)"
+  long long dofs = 0;                 // unknowns of the (first) linear system solved
+  int iterations = 0;                 // CG iterations summed over the steps (iterative solver)
   std::vector<std::string> warnings;  // what the model checks found (model_warnings), in order
 };
 

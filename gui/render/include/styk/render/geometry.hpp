@@ -108,8 +108,8 @@ struct GeometryRequest {
   // Per node rotations (the increment's UR; models with beams or shells): the drawn beam sections
   // and shell fibres turn by them times `scale`. nullptr: they keep their undeformed orientation.
   const std::vector<Vec3>* rotation = nullptr;
-  const ScalarField* field = nullptr;               // nullptr = layer colours
-  const ColorScale* colors = nullptr;               // required with a field
+  const ScalarField* field = nullptr;  // nullptr = layer colours
+  const ColorScale* colors = nullptr;  // required with a field
   // With a field that has values at some nodes only (contact output): leave out the faces it
   // does not cover instead of drawing them neutral grey.
   bool hide_undefined_faces = false;

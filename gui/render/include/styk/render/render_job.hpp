@@ -19,8 +19,8 @@
 #include "styk/render/geometry.hpp"
 #include "styk/render/layers.hpp"
 #include "styk/render/point_field.hpp"
-#include "styk/render/unroll.hpp"
 #include "styk/render/revolve.hpp"
+#include "styk/render/unroll.hpp"
 
 namespace styk::render {
 

@@ -34,8 +34,8 @@ const std::vector<ElementFamily>& family_catalogue();
 std::vector<ElementFamily> families_of_kind(ElementKind kind);
 const ElementFamily* find_family(const std::string& name);
 
-// The catalogue's families whose type `registry` holds; `unavailable` (may be null) receives one line
-// per catalogue family the registry lacks and per registered type the catalogue lacks.
+// The catalogue's families whose type `registry` holds; `unavailable` (may be null) receives one
+// line per catalogue family the registry lacks and per registered type the catalogue lacks.
 std::vector<ElementFamily> available_families(const ElementRegistry& registry,
                                               std::vector<std::string>* unavailable);
 

@@ -22,7 +22,6 @@ double plate_deflection(const SquarePlate& plate, double x, double y, bool mindl
 // at (x, y): the same for the Kirchhoff and the hard simply supported Mindlin plate.
 double plate_moment_sum(const SquarePlate& plate, double x, double y);
 // Its mean over the rectangle [x0, x1] x [y0, y1] (the harmonics integrated exactly).
-double plate_moment_sum_mean(const SquarePlate& plate, double x0, double x1, double y0,
-                             double y1);
+double plate_moment_sum_mean(const SquarePlate& plate, double x0, double x1, double y0, double y1);
 
 }  // namespace styk::studies
