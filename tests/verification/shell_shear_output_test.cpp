@@ -56,8 +56,9 @@ TEST(ShellShearOutput, SfqHoldsTheEdgeShearAtEveryStation) {
       EXPECT_NEAR(q[0], kQ, 1e-6 * kQ) << type;
       EXPECT_NEAR(q[1], 0.0, 1e-6 * kQ) << type;
     }
-    if (std::string(type) == "STRI3")
+    if (std::string(type) == "STRI3") {
       EXPECT_NEAR(q13_sum / inc.SFQ.size(), 9.46242, 1e-3 * 9.46242);
+    }
   }
 }
 
