@@ -157,6 +157,13 @@ ShellSetup shell_setup(const Shell& shell, const ElementGeometry& g, const Mater
                                     " (the element is degenerate or folded there)");
     s.normals.push_back(normal.normalized());
   }
+  // The model's resolved normals (averaged over the elements at a node, or given by *NORMAL)
+  // replace the element's own once its geometry has proved sound.
+  if (g.nodal_normals.rows() == n && g.nodal_normals.cols() == 3)
+    for (int a = 0; a < n; ++a) {
+      const Eigen::Vector3d given = g.nodal_normals.row(a).transpose();
+      if (given.norm() > 0.0) s.normals[a] = given.normalized();
+    }
   return s;
 }
 

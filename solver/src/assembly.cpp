@@ -6,7 +6,7 @@
 
 namespace styk::solver_detail {
 
-void element_geometry(const Model& model, int e, ElementGeometry& geometry) {
+void element_geometry_without_normals(const Model& model, int e, ElementGeometry& geometry) {
   const Element& element = model.elements[e];
   const int* nodes = model.element_nodes(e);
   geometry.X.resize(element.node_count, 3);
@@ -19,6 +19,20 @@ void element_geometry(const Model& model, int e, ElementGeometry& geometry) {
   geometry.section = section >= 0 && section < static_cast<int>(model.sections.size())
                          ? &model.sections[section]
                          : nullptr;
+  geometry.nodal_normals.resize(0, 3);
+}
+
+void element_geometry(const Model& model, const PreparedModel& prepared, int e,
+                      ElementGeometry& geometry) {
+  element_geometry_without_normals(model, e, geometry);
+  const Element& element = model.elements[e];
+  const ShellNormals& normals = prepared.shell_normals;
+  if (normals.any() && takes_nodal_normals(*prepared.formulation[e])) {
+    geometry.nodal_normals.resize(element.node_count, 3);
+    for (int k = 0; k < element.node_count; ++k)
+      for (int d = 0; d < 3; ++d)
+        geometry.nodal_normals(k, d) = normals.at_slot[element.first_node + k][d];
+  }
 }
 
 void assemble_stiffness(const Model& model, const PreparedModel& prepared,
@@ -46,7 +60,7 @@ void assemble_stiffness(const Model& model, const PreparedModel& prepared,
       for (int i = begin; i < end; ++i) {
         const int e = colouring.order[first + i];
         if (owned != nullptr && !(*owned)[e]) continue;
-        element_geometry(model, e, s.geometry);
+        element_geometry(model, prepared, e, s.geometry);
         const ElementOptions options{
             model.sections[model.elements[e].section].selective_volumetric};
         prepared.formulation[e]->stiffness(s.geometry, states.stiffness_law(e),
@@ -79,7 +93,7 @@ std::vector<double> assemble_loads(const Model& model, const PreparedModel& prep
   Eigen::VectorXd fe;
   std::vector<int> dofs;
   for (const DistributedLoad& load : conditions.pressures) {
-    element_geometry(model, load.element, geometry);
+    element_geometry(model, prepared, load.element, geometry);
     try {
       prepared.formulation[load.element]->pressure_load(geometry, load.face - 1, load.magnitude,
                                                         fe);

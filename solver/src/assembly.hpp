@@ -13,8 +13,13 @@
 
 namespace styk::solver_detail {
 
-// Fills `geometry` (coordinates, id, deck line) for element e, reusing its storage.
-void element_geometry(const Model& model, int e, ElementGeometry& geometry);
+// Fills `geometry` (coordinates, id, deck line, section, the shells' resolved nodal normals) for
+// element e, reusing its storage.
+void element_geometry(const Model& model, const PreparedModel& prepared, int e,
+                      ElementGeometry& geometry);
+// The same without nodal normals, for the scalar-field (heat, electric) analyses, which have no
+// shells.
+void element_geometry_without_normals(const Model& model, int e, ElementGeometry& geometry);
 
 // Overwrites K's values with the assembled stiffness (full integration) of the elements in the
 // material state `states` and marks it pristine. With `owned` (per element) only the elements it

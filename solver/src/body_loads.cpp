@@ -28,7 +28,7 @@ std::vector<double> assemble_body_loads(const Model& model, const PreparedModel&
                                           std::to_string(model.elements[e].id) + ": its material " +
                                           material.name +
                                           " has no *DENSITY (a body force is per unit mass)");
-    element_geometry(model, e, geometry);
+    element_geometry(model, prepared, e, geometry);
     prepared.formulation[e]->body_load(geometry, *material.density, prepared.rule_kind[e],
                                        acceleration, fe);
     prepared.element_dofs(model, e, dofs);

@@ -21,7 +21,7 @@ std::map<int, double> nodal_areas(const Model& model, const PreparedModel& prepa
   Eigen::VectorXd a;
   for (const SurfaceFace& sf : surface.faces) {
     const TElement& element = *prepared.formulation[sf.element];
-    element_geometry(model, sf.element, g);
+    element_geometry(model, prepared, sf.element, g);
     element.nodal_areas(g, sf.face - 1, a);
     const int* nodes = model.element_nodes(sf.element);
     for (int local : element.faces()[sf.face - 1].nodes) area[nodes[local]] += a[local];

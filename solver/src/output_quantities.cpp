@@ -49,7 +49,7 @@ void estimate_stress_errors(const Model& model, const PreparedModel& prepared,
     std::vector<MaterialPoint> laws;
     for (int e = begin; e < end; ++e) {
       const TElement& element = *prepared.formulation[e];
-      element_geometry(model, e, g);
+      element_geometry(model, prepared, e, g);
       element.point_volumes(g, RuleKind::Full, dv);
       element.point_laws(g, states.law(e), RuleKind::Full, laws);
       const IntegrationRule rule = element.rule(RuleKind::Full);
@@ -100,7 +100,7 @@ void compute_section_forces(const Model& model, const PreparedModel& prepared, s
     std::vector<Eigen::Vector3d> weighted;
     for (const SurfaceFace& sf : surface.faces) {
       const TElement& element = *prepared.formulation[sf.element];
-      element_geometry(model, sf.element, g);
+      element_geometry(model, prepared, sf.element, g);
       const FaceDef& face = element.faces()[sf.face - 1];
       element.face_quadrature(g, face, points, weighted);
       const double outward = face.value > 0.0 ? 1.0 : -1.0;

@@ -195,6 +195,7 @@ PreparedModel prepare_model(const Model& model, const ElementRegistry& registry)
     }
     prepared.dof_offset.push_back(prepared.dof_offset.back() + dofs_of_node[n]);
   }
+  prepared.shell_normals = resolve_shell_normals(model, prepared.formulation);
   return prepared;
 }
 

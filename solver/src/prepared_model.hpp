@@ -14,6 +14,7 @@
 
 #include "styk/core/element_registry.hpp"
 #include "styk/core/model.hpp"
+#include "styk/core/shell_normals.hpp"
 
 namespace styk::solver_detail {
 
@@ -31,6 +32,9 @@ struct PreparedModel {
   // Per active node: 1 if it belongs to an axisymmetric element (ElementForm::Axisymmetric). A
   // ring cannot translate radially (x), so the rigid-motion checks count x as held there.
   std::vector<char> ring_node;
+  // The curved shells' nodal normals, resolved over the whole mesh (styk/core/shell_normals.hpp);
+  // element_geometry() hands them to each shell. Empty when the model has no shells.
+  ShellNormals shell_normals;
 
   int active_nodes() const { return static_cast<int>(node_of_active.size()); }
   int active_dofs() const { return dof_offset.empty() ? 0 : dof_offset.back(); }

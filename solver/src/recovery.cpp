@@ -122,7 +122,7 @@ void recover_increment(const Model& model, const PreparedModel& prepared,
       const TElement& element = *prepared.formulation[e];
       const int n = model.elements[e].node_count;
       const int* nodes = model.element_nodes(e);
-      element_geometry(model, e, s.geometry);
+      element_geometry(model, prepared, e, s.geometry);
       prepared.element_dofs(model, e, s.dofs);
       s.ue.resize(static_cast<Eigen::Index>(s.dofs.size()));
       for (std::size_t i = 0; i < s.dofs.size(); ++i)

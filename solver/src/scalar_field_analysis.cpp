@@ -32,7 +32,7 @@ SparseMatrix assemble_conductance(const Model& model, const ScalarFieldModel& pr
     Eigen::MatrixXd K;
     std::vector<Triplet>& out = per_chunk[begin / kChunk];
     for (int e = begin; e < end; ++e) {
-      element_geometry(model, e, g);
+      element_geometry_without_normals(model, e, g);
       scalar_conductance(*prepared.formulation[e], g, prepared.rule(e), prepared.conductivity[e],
                          K);
       const int* nodes = model.element_nodes(e);
@@ -61,7 +61,7 @@ Eigen::VectorXd applied_flows(const Model& model, const ScalarFieldModel& prepar
   ElementGeometry g;
   Eigen::VectorXd fe;
   for (const FaceFlux& face : conditions.face_fluxes) {
-    element_geometry(model, face.element, g);
+    element_geometry_without_normals(model, face.element, g);
     scalar_face_flux(*prepared.formulation[face.element], g, face.face, face.flux, fe);
     const int* nodes = model.element_nodes(face.element);
     for (Eigen::Index k = 0; k < fe.size(); ++k) f(prepared.unknown_of_node[nodes[k]]) += fe(k);
@@ -157,7 +157,7 @@ void recover_fluxes(const Model& model, const ScalarFieldModel& prepared,
     ElementGeometry g;
     Eigen::MatrixXd gradients;
     for (int e = begin; e < end; ++e) {
-      element_geometry(model, e, g);
+      element_geometry_without_normals(model, e, g);
       const int* nodes = model.element_nodes(e);
       const int n = model.elements[e].node_count;
       Eigen::VectorXd phi_e(n);

@@ -93,7 +93,7 @@ int reduced_shell_mesh_modes(const Model& model, const PreparedModel& prepared) 
   Eigen::MatrixXd K = Eigen::MatrixXd::Zero(6 * next, 6 * next);
   ElementGeometry g;
   for (const int e : elements) {
-    element_geometry(model, e, g);
+    element_geometry(model, prepared, e, g);
     g.section = &section;
     g.cross_section = *section.thickness;
     Eigen::MatrixXd Ke;
@@ -105,6 +105,25 @@ int reduced_shell_mesh_modes(const Model& model, const PreparedModel& prepared) 
         K.block<6, 6>(6 * slot[nodes[a]], 6 * slot[nodes[b]]) += Ke.block<6, 6>(6 * a, 6 * b);
   }
   return modes_beyond_rigid(K);
+}
+
+// Folds (nodes whose shells keep their own normals) and given normals far from their element's.
+void append_normal_warnings(const ShellNormals& normals, std::vector<std::string>& warnings) {
+  if (!normals.fold_nodes.empty()) {
+    std::string nodes;
+    for (std::size_t k = 0; k < normals.fold_nodes.size() && k < 8; ++k)
+      nodes += (k ? ", " : "") + std::to_string(normals.fold_nodes[k]);
+    if (normals.fold_nodes.size() > 8)
+      nodes += " and " + std::to_string(normals.fold_nodes.size() - 8) + " more";
+    warnings.push_back(std::to_string(normals.fold_nodes.size()) +
+                       " shell nodes are folds: the normals of the elements sharing them differ "
+                       "by more than " +
+                       format("%.0f", kNormalAveragingDegrees) +
+                       " degrees, so each element keeps its own there (give *NORMAL where the "
+                       "shell is smooth): nodes " +
+                       nodes);
+  }
+  warnings.insert(warnings.end(), normals.warnings.begin(), normals.warnings.end());
 }
 
 }  // namespace
@@ -228,6 +247,7 @@ std::vector<std::string> shell_warnings(const Model& model, const PreparedModel&
         "Tab 7.1b: 8 % too stiff at 25, 87 % at 250); remedy: reduced integration (S8R), the "
         "9-node Lagrange shell (S9 or S9R) or more elements");
   }
+  append_normal_warnings(prepared.shell_normals, warnings);
   return warnings;
 }
 

@@ -52,7 +52,7 @@ std::vector<double> assemble_eigenstrain_load(const Model& model, const Prepared
     Scratch& s = scratch[worker];
     for (int e = begin; e < end; ++e) {
       if (!states.loaded(e)) continue;  // no change, no load (and no *EXPANSION needed)
-      element_geometry(model, e, s.geometry);
+      element_geometry(model, prepared, e, s.geometry);
       const ElementOptions options{model.sections[model.elements[e].section].selective_volumetric};
       prepared.formulation[e]->eigenstrain_load(s.geometry, states.law(e), prepared.rule_kind[e],
                                                 element_load[e], options, states.initial_stress(e));

@@ -89,13 +89,67 @@ std::string plate_deck(const std::string& type, int n, long& centre) {
   return out.str();
 }
 
-// The centre deflection by Styk and by ccx, the deck being written by Styk's writer.
-std::pair<double, double> solve_both(const std::string& type, int n) {
-  const std::string job = "plate_" + type;
+// The Scordelis-Lo roof's quarter (R = 25, length 50, 80 degree arc, t = 0.25, E = 4.32e8,
+// nu = 0, weight 90 per unit area as GRAV with density 360) of n x n S8R: x = 25 s from mid-span,
+// the angle 40 r degrees from the crown. With `normals`, a *NORMAL line per node gives the radius
+// there. `edge` receives the free edge's mid-span node (reference deflection 0.3024 down).
+std::string roof_deck(int n, bool normals, long& edge) {
+  const int side = 2 * n + 1;
+  const double pi = 3.14159265358979323846;
+  const auto id = [&](int i, int j) { return j * side + i + 1; };
+  const auto kept = [](int i, int j) { return !(i % 2 == 1 && j % 2 == 1); };
+  std::ostringstream out;
+  out.precision(17);
+  out << "*NODE, NSET=NALL\n";
+  for (int j = 0; j < side; ++j)
+    for (int i = 0; i < side; ++i) {
+      const double phi = 40.0 * pi / 180.0 * j / (side - 1);
+      if (kept(i, j))
+        out << id(i, j) << ", " << 25.0 * i / (side - 1) << ", " << 25.0 * std::sin(phi) << ", "
+            << 25.0 * std::cos(phi) << "\n";
+    }
+  out << "*ELEMENT, TYPE=S8R, ELSET=ROOF\n";
+  int e = 1;
+  for (int b = 0; b < n; ++b)
+    for (int a = 0; a < n; ++a) {
+      const int I = 2 * a, J = 2 * b;
+      out << e++ << ", " << id(I, J) << ", " << id(I + 2, J) << ", " << id(I + 2, J + 2) << ", "
+          << id(I, J + 2) << ", " << id(I + 1, J) << ", " << id(I + 2, J + 1) << ", "
+          << id(I + 1, J + 2) << ", " << id(I, J + 1) << "\n";
+    }
+  out << "*MATERIAL, NAME=M\n*ELASTIC\n4.32e8, 0.\n*DENSITY\n360.\n"
+      << "*SHELL SECTION, ELSET=ROOF, MATERIAL=M\n0.25\n";
+  if (normals) {
+    out << "*NORMAL\n";
+    for (int j = 0; j < side; ++j)
+      for (int i = 0; i < side; ++i) {
+        const double phi = 40.0 * pi / 180.0 * j / (side - 1);
+        if (kept(i, j))
+          out << "ROOF, " << id(i, j) << ", 0., " << std::sin(phi) << ", " << std::cos(phi) << "\n";
+      }
+  }
+  out << "*BOUNDARY\n";
+  for (int j = 0; j < side; ++j)
+    for (int i = 0; i < side; ++i) {
+      if (!kept(i, j)) continue;
+      const auto fix = [&](int dof) { out << id(i, j) << ", " << dof << ", " << dof << "\n"; };
+      if (i == 0) fix(1), fix(5), fix(6);  // mid-span symmetry
+      if (j == 0) fix(2), fix(4), fix(6);  // crown symmetry
+      if (i == side - 1) fix(2), fix(3);   // diaphragm
+    }
+  out << "*STEP\n*STATIC\n*DLOAD\nROOF, GRAV, 1., 0., 0., -1.\n*NODE PRINT, NSET=NALL\nU\n"
+      << "*END STEP\n";
+  edge = id(0, side - 1);
+  return out.str();
+}
+
+// Node `node`'s displacement by Styk and by ccx, the deck being written by Styk's writer.
+std::pair<std::array<double, 3>, std::array<double, 3>> solve_deck_both(const std::string& job,
+                                                                        const std::string& deck,
+                                                                        long node) {
   const std::string dir = scratch_dir("ccx_shell_" + job);
-  long centre = 0;
   {
-    std::ofstream(dir + "/given.inp") << plate_deck(type, n, centre);
+    std::ofstream(dir + "/given.inp") << deck;
     ElementRegistry registry;
     register_builtin_elements(registry);
     const Model model = read_inp(dir + "/given.inp", registry);
@@ -107,8 +161,16 @@ std::pair<double, double> solve_both(const std::string& type, int n) {
   EXPECT_EQ(ours.exit_code, 0) << ours.err;
   const CommandResult peer = run_command("OMP_NUM_THREADS=1 ccx -i " + job, dir);
   EXPECT_EQ(peer.exit_code, 0) << "ccx failed on the deck Styk wrote\n" << peer.out << peer.err;
-  return {displacement(dir + "/styk/" + job + ".dat", centre)[2],
-          displacement(dir + "/" + job + ".dat", centre)[2]};
+  return {displacement(dir + "/styk/" + job + ".dat", node),
+          displacement(dir + "/" + job + ".dat", node)};
+}
+
+// The centre deflection by Styk and by ccx.
+std::pair<double, double> solve_both(const std::string& type, int n) {
+  long centre = 0;
+  const std::string deck = plate_deck(type, n, centre);
+  const auto [styk, ccx] = solve_deck_both("plate_" + type, deck, centre);
+  return {styk[2], ccx[2]};
 }
 
 TEST(CcxShellCrossCheck, PlateUnderPressure) {
@@ -122,6 +184,28 @@ TEST(CcxShellCrossCheck, PlateUnderPressure) {
                 100.0 * (ccx / styk - 1.0));
     EXPECT_GT(styk, 0.0) << "P pushes along the normal (+z) in both";
     EXPECT_NEAR(ccx / styk - 1.0, c.difference, 0.0005) << c.type;
+  }
+}
+
+// *NORMAL in a deck Styk writes runs in ccx: the roof with the radius given at every node and
+// without. Styk: 0.303314 / 0.303313 (the S8R's own normals on the exact cylinder already average
+// to the radius), +0.3 % of 0.3024. ccx's value is not compared: its shell expansion turns the
+// rotation conditions of the symmetry edges into rigid knots, measured 0.0468 with them and
+// 0.409 without them (symmetry then lost), so this roof is no peer check for ccx's shells.
+TEST(CcxShellCrossCheck, ScordelisLoRoofWithNormalsRunsInCcx) {
+  double with_normals = 0.0;
+  for (const bool normals : {true, false}) {
+    long edge = 0;
+    const std::string deck = roof_deck(4, normals, edge);
+    const auto [styk, ccx] = solve_deck_both(normals ? "roof_normals" : "roof", deck, edge);
+    std::printf("roof %s: Styk %.6g, ccx %.6g\n", normals ? "given normals" : "averaged normals",
+                -styk[2], -ccx[2]);
+    EXPECT_LE(std::abs(-styk[2] / 0.3024 - 1.0), 0.004);
+    if (normals) {
+      with_normals = styk[2];
+    } else {
+      EXPECT_NEAR(styk[2], with_normals, 1e-5 * std::abs(with_normals));
+    }
   }
 }
 

@@ -33,6 +33,7 @@ struct ShellGrid {
   double young = 1.0, poisson = 0.3;
   std::string load;            // step lines, e.g. "*DLOAD\nSHELL, P, 10.\n"
   std::string material_extra;  // e.g. "*DENSITY\n360.\n"
+  std::string model_extra;     // model keywords after the section, e.g. "*NORMAL\n..."
 };
 
 inline bool grid_triangles(const ShellGrid& g) { return g.type == "STRI3"; }
@@ -76,7 +77,8 @@ inline std::string shell_grid_deck(const ShellGrid& g) {
   deck << "*MATERIAL, NAME=M\n*ELASTIC\n"
        << g.young << ", " << g.poisson << "\n"
        << g.material_extra << "*SHELL SECTION, ELSET=SHELL, MATERIAL=M\n"
-       << g.thickness << "\n*BOUNDARY\n";
+       << g.thickness << "\n"
+       << g.model_extra << "*BOUNDARY\n";
   for (int j = 0; j <= jmax; ++j)
     for (int i = 0; i <= imax; ++i) {
       if (serendipity && i % 2 == 1 && j % 2 == 1) continue;

@@ -71,6 +71,7 @@ const std::vector<DeckReader::KeywordSpec>& DeckReader::keywords() {
         {"NODAL THICKNESS", false, V::None}},
        &DeckReader::on_shell_section,
        kData},
+      {"NORMAL", S::Model, {{"TYPE", false, V::Required}}, &DeckReader::on_normal, kData},
       {"BOUNDARY",
        S::Anywhere,
        {{"OP", false, V::Required}, {"FIXED", false, V::None}},

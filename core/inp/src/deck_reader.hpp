@@ -74,6 +74,7 @@ class DeckReader {
   void on_beam_section(const KeywordLine& kw);
   void on_shell_section(const KeywordLine& kw);  // shell_keywords.cpp
   void check_shell_pressure(const Element& element, const SourceLoc& where) const;
+  void on_normal(const KeywordLine& kw);  // normal_keywords.cpp
   // material_keywords.cpp
   void on_elastic(const KeywordLine& kw);
   void on_expansion(const KeywordLine& kw);

@@ -113,6 +113,17 @@ void write_shell_section(const Section& s, std::ostream& out) {
   out << '\n';
 }
 
+// *NORMAL lines, one per element and node, in the order read (a later line for the same element
+// and node wins on reading back, as it did here).
+void write_normals(const Model& model, std::ostream& out) {
+  if (model.normals.empty()) return;
+  out << "*NORMAL\n";
+  for (const UserNormal& n : model.normals)
+    out << model.elements[n.element].id << ", " << model.node_ids[n.node] << ", "
+        << num(n.direction[0]) << ", " << num(n.direction[1]) << ", " << num(n.direction[2])
+        << '\n';
+}
+
 void write_properties(const Model& model, std::ostream& out) {
   for (const Material& m : model.materials) {
     out << "*MATERIAL, NAME=" << m.name << '\n';
@@ -134,6 +145,7 @@ void write_properties(const Model& model, std::ostream& out) {
         << (s.orientation.empty() ? "" : ", ORIENTATION=" + s.orientation) << '\n';
     if (s.thickness) out << num(*s.thickness) << '\n';
   }
+  write_normals(model, out);
 }
 
 void write_boundaries(const Model& model, const std::vector<Boundary>& boundaries, bool op_new,

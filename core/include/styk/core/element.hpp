@@ -108,6 +108,10 @@ struct ElementGeometry {
   // (SectionMeasure::Beam: the *BEAM SECTION shape, dimensions and first section axis). May be
   // null for the others.
   const Section* section = nullptr;
+  // Shells: the unit normal at each element node (one row per node), as the model resolves it
+  // (normals averaged over the elements sharing a node, or given by *NORMAL). Empty: the element
+  // takes the normals of its own geometry.
+  Eigen::MatrixXd nodal_normals;
 };
 
 class TElement {

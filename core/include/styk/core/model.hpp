@@ -115,6 +115,15 @@ struct ShellSection {
   bool section_points_given = false;  // written back only when the deck gave it
 };
 
+// *NORMAL (TYPE=ELEMENT): the normal given for one node of one shell element. It replaces the
+// normal Styk would average there (docs/input.md, *NORMAL).
+struct UserNormal {
+  int element = 0;   // element index
+  int node = 0;      // node index (a node of that element)
+  Vec3 direction{};  // global components as given (not normalised)
+  SourceLoc where;
+};
+
 struct Section {
   std::string elset;     // upper-case
   std::string material;  // upper-case
@@ -472,6 +481,8 @@ class Model {
   std::map<std::string, ElementSet> elsets;  // by upper-case name
   std::vector<Material> materials;
   std::vector<Section> sections;
+  std::vector<UserNormal> normals;   // *NORMAL, in deck order (a later line for the same
+                                     // element and node wins)
   std::vector<Boundary> boundaries;  // given outside any step: hold in every step
   std::vector<Step> steps;
 

@@ -45,7 +45,7 @@ extern "C" {
  * and conversion() (new virtual functions); 6 = point_measure() takes the shape-function values
  * and strain_operator() is new (axisymmetric elements), FaceDef::axis = -1 marks faces off the
  * cube's planes. */
-#define STYK_PLUGIN_ABI_VERSION 6u
+#define STYK_PLUGIN_ABI_VERSION 7u
 
 /* The name of the entry point, for dlsym. */
 #define STYK_PLUGIN_ENTRY_NAME "styk_plugin_register"

@@ -3,13 +3,13 @@
 // 9-node shell). The section is a *SHELL SECTION (thickness t, optional OFFSET, section points).
 //
 // Geometry: x(xi, eta, zeta) = sum N_a(xi, eta) [X_a + z(zeta) V_a], z = t (zeta / 2 - offset),
-// with V_a the unit normal of the element's own mid-surface interpolation at node a (the
-// element's nodal normals: a curved surface is followed by the quadratic elements; neighbouring
-// elements are not averaged). Displacements: u = sum N_a [u_a + z(zeta) theta_a x V_a] with the
-// nodal translations u_a and small global rotations theta_a (dofs 1-6). Strains: the covariant
-// components of the 3D field, turned into the lamina axes (e1, e2 in the surface, e3 normal;
-// e1 is the projection of the global x axis, or of z when x is within 0.1 degree of the normal,
-// as in Abaqus), with sigma33 = 0 and the transverse shear factor 5/6.
+// with V_a the unit nodal normal: ElementGeometry::nodal_normals when the model resolved them
+// (averaged over the elements sharing the node, or given by *NORMAL: shell_normals.hpp), else the
+// normal of the element's own mid-surface interpolation at node a. Displacements: u = sum N_a [u_a
+// + z(zeta) theta_a x V_a] with the nodal translations u_a and small global rotations theta_a (dofs
+// 1-6). Strains: the covariant components of the 3D field, turned into the lamina axes (e1, e2 in
+// the surface, e3 normal; e1 is the projection of the global x axis, or of z when x is within 0.1
+// degree of the normal, as in Abaqus), with sigma33 = 0 and the transverse shear factor 5/6.
 //
 // Integration in the surface: S8, S9 3x3 Gauss; S8R, S9R 2x2 (the reduced rule); RuleKind::
 // Reduced of S8 / S9 is the 2x2 rule too (diagnostics, SPEC §7.3 Tab 7.1b). S4 and S4R both use
