@@ -9,7 +9,7 @@
 #include "styk/core/plugin_loader.hpp"
 #include "styk/elements/element_setup.hpp"
 
-namespace styk {
+namespace styk::gui {
 namespace {
 
 std::string fixture(const std::string& name) {
@@ -43,4 +43,4 @@ TEST(SessionGmshOpen, OpensAMeshWithItsPhysicalGroupsAsSets) {
 }
 
 }  // namespace
-}  // namespace styk
+}  // namespace styk::gui
