@@ -58,13 +58,14 @@ int import_command(const ImportArgs& args) {
   for (const auto& entry : model.elsets) sets.push_back("ELSET " + entry.first);
   for (const auto& entry : model.nsets) sets.push_back("NSET " + entry.first);
   std::cout << fmt::format("wrote {}: {} nodes, {} elements ({}) from MSH {} ({}-D mesh)\n", output,
-                           model.node_count(), model.element_count(),
-                           joined(summary.element_types), summary.format, summary.dimension);
+                           model.node_count(), model.element_count(), joined(summary.element_types),
+                           summary.format, summary.dimension);
   std::cout << "sets: " << joined(sets) << "\n";
   if (summary.lower_dimension_elements > 0)
-    std::cout << fmt::format("{} elements of lower dimension gave their physical groups' node sets "
-                             "only\n",
-                             summary.lower_dimension_elements);
+    std::cout << fmt::format(
+        "{} elements of lower dimension gave their physical groups' node sets "
+        "only\n",
+        summary.lower_dimension_elements);
   if (summary.unused_nodes > 0)
     std::cout << fmt::format("{} nodes belong to no imported element and were left out\n",
                              summary.unused_nodes);

@@ -46,8 +46,8 @@ TEST(CliImport, RefusalsNameFileAndLineAndWriteNothing) {
   };
   for (const Refusal& r : refusals) {
     const std::string out = dir + "/out.inp";
-    const CommandResult result =
-        run_command(styk_executable() + " import '" + r.mesh + "' " + r.options + " -o " + out, dir);
+    const CommandResult result = run_command(
+        styk_executable() + " import '" + r.mesh + "' " + r.options + " -o " + out, dir);
     SCOPED_TRACE(r.mesh + " " + r.options + "\nstderr: " + result.err);
     EXPECT_EQ(result.exit_code, 1);
     EXPECT_NE(result.err.find(r.mesh + ":" + std::to_string(r.line) + ": "), std::string::npos);
@@ -62,10 +62,11 @@ TEST(CliImport, RefusalsNameFileAndLineAndWriteNothing) {
 // pressure on x = 1 stretches by p / E there (nu = 0: the exact answer of the C3D20, 1e-9).
 TEST(CliImport, ImportedDeckSolvesThroughInclude) {
   const std::string dir = scratch_dir("cli_import_solve");
-  const CommandResult imported =
-      run_command(styk_executable() + " import '" + fixture("hex20_v22.msh") + "' -o cube.inp", dir);
+  const CommandResult imported = run_command(
+      styk_executable() + " import '" + fixture("hex20_v22.msh") + "' -o cube.inp", dir);
   ASSERT_EQ(imported.exit_code, 0) << imported.err;
-  EXPECT_NE(imported.out.find("1 elements (C3D20) from MSH 2.2"), std::string::npos) << imported.out;
+  EXPECT_NE(imported.out.find("1 elements (C3D20) from MSH 2.2"), std::string::npos)
+      << imported.out;
   std::ofstream(dir + "/model.inp") << "*INCLUDE, INPUT=cube.inp\n"
                                        "*MATERIAL, NAME=M\n*ELASTIC\n1000., 0.\n"
                                        "*SOLID SECTION, ELSET=SOLID, MATERIAL=M\n"

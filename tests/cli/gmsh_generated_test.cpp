@@ -37,22 +37,24 @@ struct Case {
   const char* mesh_options;  // .geo lines before the extrusion
   const char* layers;        // extrusion: "Layers{2}; Recombine;" or "" (a free volume: tetrahedra)
   int order;
-  const char* format;        // msh22 | msh41
+  const char* format;  // msh22 | msh41
   const char* styk_type;
   const char* linear_type;
 };
 
 // The box 2 x 1 x 1: a rectangle extruded along z.
 std::string geo(const Case& c) {
-  return std::string("h = 0.5;\n"
-                     "Point(1) = {0, 0, 0, h}; Point(2) = {2, 0, 0, h};\n"
-                     "Point(3) = {2, 1, 0, h}; Point(4) = {0, 1, 0, h};\n"
-                     "Line(1) = {1, 2}; Line(2) = {2, 3}; Line(3) = {3, 4}; Line(4) = {4, 1};\n"
-                     "Curve Loop(1) = {1, 2, 3, 4}; Plane Surface(1) = {1};\n") +
+  return std::string(
+             "h = 0.5;\n"
+             "Point(1) = {0, 0, 0, h}; Point(2) = {2, 0, 0, h};\n"
+             "Point(3) = {2, 1, 0, h}; Point(4) = {0, 1, 0, h};\n"
+             "Line(1) = {1, 2}; Line(2) = {2, 3}; Line(3) = {3, 4}; Line(4) = {4, 1};\n"
+             "Curve Loop(1) = {1, 2, 3, 4}; Plane Surface(1) = {1};\n") +
          c.mesh_options + "out[] = Extrude {0, 0, 1} { Surface{1}; " + c.layers +
          " };\nPhysical Volume(\"body\") = {out[1]};\n"
          "Physical Surface(\"xmin\") = {out[5]};\n"
-         "Mesh.ElementOrder = " + std::to_string(c.order) + ";\n";
+         "Mesh.ElementOrder = " +
+         std::to_string(c.order) + ";\n";
 }
 
 double check_element(const Model& model, int e, const std::string& linear_type) {
@@ -94,9 +96,8 @@ TEST_P(GmshGenerated, EveryElementIsValidAndTheVolumesMakeTheBox) {
   const Case& c = GetParam();
   const std::string dir = scratch_dir(std::string("gmsh_generated_") + c.name);
   std::ofstream(dir + "/box.geo") << geo(c);
-  const auto made = run_command(std::string("gmsh -v 2 -3 box.geo -format ") + c.format +
-                                    " -o box.msh",
-                                dir);
+  const auto made =
+      run_command(std::string("gmsh -v 2 -3 box.geo -format ") + c.format + " -o box.msh", dir);
   ASSERT_EQ(made.exit_code, 0) << "gmsh failed (is Debian's gmsh installed?)\n" << made.err;
   GmshImportSummary summary;
   const Model model = import_gmsh(dir + "/box.msh", {}, &summary);
@@ -108,7 +109,8 @@ TEST_P(GmshGenerated, EveryElementIsValidAndTheVolumesMakeTheBox) {
   EXPECT_NEAR(volume, 2.0, 2e-12);
   ASSERT_TRUE(model.find_nset("XMIN"));
   for (int n : model.find_nset("XMIN")->nodes) EXPECT_NEAR(model.coords[n][0], 0.0, 1e-12);
-  EXPECT_EQ(model.find_elset("BODY")->elements.size(), static_cast<std::size_t>(model.element_count()));
+  EXPECT_EQ(model.find_elset("BODY")->elements.size(),
+            static_cast<std::size_t>(model.element_count()));
 }
 
 constexpr const char* kHexes = "Transfinite Surface{1}; Recombine Surface{1};\n";
@@ -121,13 +123,16 @@ INSTANTIATE_TEST_SUITE_P(
                       Case{"tet10", "", "", 2, "msh22", "C3D10", "C3D4"},
                       Case{"tet10_v41", "", "", 2, "msh41", "C3D10", "C3D4"},
                       Case{"hex8", kHexes, kLayers, 1, "msh22", "C3D8", "C3D8"},
-                      Case{"hex20", "Transfinite Surface{1}; Recombine Surface{1};\n"
-                                    "Mesh.SecondOrderIncomplete = 1;\n",
+                      Case{"hex20",
+                           "Transfinite Surface{1}; Recombine Surface{1};\n"
+                           "Mesh.SecondOrderIncomplete = 1;\n",
                            kLayers, 2, "msh41", "C3D20", "C3D8"},
                       Case{"hex27", kHexes, kLayers, 2, "msh41", "C3D27", "C3D8"},
                       Case{"prism6", "", kLayers, 1, "msh41", "C3D6", "C3D6"},
                       Case{"prism15", kIncomplete, kLayers, 2, "msh22", "C3D15", "C3D6"}),
-    [](const ::testing::TestParamInfo<Case>& param_info) { return std::string(param_info.param.name); });
+    [](const ::testing::TestParamInfo<Case>& param_info) {
+      return std::string(param_info.param.name);
+    });
 
 }  // namespace
 }  // namespace styk

@@ -50,7 +50,7 @@ std::vector<int> same_order(int count) {
 // the bottom face, then the top face, then the edges between them. Entry i is the Gmsh index of
 // CalculiX node i (both 0-based), read off the two formats' node-numbering figures.
 const std::vector<int> kTet10 = {0, 1, 2, 3, 4, 5, 6, 7, 9, 8};
-const std::vector<int> kHex20 = {0, 1, 2,  3,  4,  5,  6,  7,  8,  11,
+const std::vector<int> kHex20 = {0,  1, 2,  3,  4,  5,  6,  7,  8,  11,
                                  13, 9, 16, 18, 19, 17, 10, 12, 14, 15};
 // Styk's C3D27 adds the face centres in face order S1..S6 (zeta -1, zeta +1, eta -1, xi +1,
 // eta +1, xi -1) and the centre; Gmsh's are faces 0123, 0154, 0374, 1265, 2376, 4567.
@@ -66,8 +66,9 @@ StykElementMapping planar_mapping(const GmshType& gmsh, const GmshImportOptions&
   const bool tri3 = gmsh.number == 2;
   switch (options.planar) {
     case PlanarElements::Unset:
-      why = "a surface mesh (its highest dimension is 2): say what its elements are with "
-            "--planar cps|cpe|cax|shell";
+      why =
+          "a surface mesh (its highest dimension is 2): say what its elements are with "
+          "--planar cps|cpe|cax|shell";
       return {};
     case PlanarElements::Shell:
       if (quad4) return {"S4", same_order(4)};
@@ -103,14 +104,22 @@ const GmshType* find_gmsh_type(int number) {
 StykElementMapping styk_mapping(const GmshType& gmsh, const GmshImportOptions& options,
                                 std::string& why) {
   switch (gmsh.number) {
-    case 4: return {"C3D4", same_order(4)};
-    case 11: return {"C3D10", kTet10};
-    case 5: return {"C3D8", same_order(8)};
-    case 17: return {"C3D20", kHex20};
-    case 12: return {"C3D27", kHex27};
-    case 6: return {"C3D6", same_order(6)};
-    case 18: return {"C3D15", kPrism15};
-    case 1: return {options.lines == LineElements::Truss ? "T3D2" : "B31", same_order(2)};
+    case 4:
+      return {"C3D4", same_order(4)};
+    case 11:
+      return {"C3D10", kTet10};
+    case 5:
+      return {"C3D8", same_order(8)};
+    case 17:
+      return {"C3D20", kHex20};
+    case 12:
+      return {"C3D27", kHex27};
+    case 6:
+      return {"C3D6", same_order(6)};
+    case 18:
+      return {"C3D15", kPrism15};
+    case 1:
+      return {options.lines == LineElements::Truss ? "T3D2" : "B31", same_order(2)};
     case 8:
       if (options.lines == LineElements::Truss) {
         why = "Styk's truss T3D2 has 2 nodes (use --lines beam for B32)";
@@ -120,8 +129,10 @@ StykElementMapping styk_mapping(const GmshType& gmsh, const GmshImportOptions& o
     case 2:
     case 3:
     case 10:
-    case 16: return planar_mapping(gmsh, options, why);
-    default: break;
+    case 16:
+      return planar_mapping(gmsh, options, why);
+    default:
+      break;
   }
   if (gmsh.number == 7 || gmsh.number == 14 || gmsh.number == 19)
     why = "Styk has no pyramid (mesh without pyramids: only tetrahedra, or hexahedra and prisms)";

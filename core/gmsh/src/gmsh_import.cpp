@@ -55,8 +55,7 @@ void merge_repeated_elements(const std::string& path, RawMesh& mesh) {
     RawElement& first = merged[found->second];
     if (first.type != element.type || first.nodes != element.nodes)
       throw InputError({path, element.line}, "element tag " + std::to_string(element.tag) +
-                                                 " was used at line " +
-                                                 std::to_string(first.line) +
+                                                 " was used at line " + std::to_string(first.line) +
                                                  " for another element");
     first.physicals.insert(first.physicals.end(), element.physicals.begin(),
                            element.physicals.end());
@@ -157,7 +156,8 @@ class ModelBuilder {
   void add_element(const RawElement& element, const gmsh::StykElementMapping& mapping,
                    GmshImportSummary& summary) {
     std::vector<int> nodes;
-    for (int g : mapping.gmsh_index) nodes.push_back(node_index_[raw_node(element, element.nodes[g])]);
+    for (int g : mapping.gmsh_index)
+      nodes.push_back(node_index_[raw_node(element, element.nodes[g])]);
     const int index = model_.add_element(element.tag, mapping.type, nodes, {path_, element.line});
     if (std::find(summary.element_types.begin(), summary.element_types.end(), mapping.type) ==
         summary.element_types.end())

@@ -20,14 +20,14 @@ struct RawNode {
 
 struct RawElement {
   Id tag = 0;
-  int type = 0;                     // Gmsh element type number
-  std::vector<int> physicals;       // physical tags (of the element's dimension)
-  std::vector<Id> nodes;            // node tags in Gmsh's order
+  int type = 0;                // Gmsh element type number
+  std::vector<int> physicals;  // physical tags (of the element's dimension)
+  std::vector<Id> nodes;       // node tags in Gmsh's order
   int line = 0;
 };
 
 struct RawMesh {
-  std::string format;                                    // "2.2" or "4.1"
+  std::string format;  // "2.2" or "4.1"
   std::vector<RawNode> nodes;
   std::vector<RawElement> elements;
   std::map<std::pair<int, int>, std::string> physical_names;  // (dim, tag) -> name

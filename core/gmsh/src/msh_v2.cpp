@@ -16,7 +16,8 @@ void read_nodes(MshTokens& tokens, RawMesh& mesh) {
     for (double& c : node.x) c = tokens.next_real("a node coordinate");
     mesh.nodes.push_back(node);
   }
-  if (tokens.next("$EndNodes") != "$EndNodes") tokens.fail("$Nodes holds more nodes than its count says");
+  if (tokens.next("$EndNodes") != "$EndNodes")
+    tokens.fail("$Nodes holds more nodes than its count says");
 }
 
 void read_elements(MshTokens& tokens, RawMesh& mesh) {
@@ -38,7 +39,8 @@ void read_elements(MshTokens& tokens, RawMesh& mesh) {
       // The first tag is the physical group (0: none), the second the elementary entity.
       if (t == 0 && tag != 0) element.physicals.push_back(static_cast<int>(tag));
     }
-    for (int n = 0; n < type->nodes; ++n) element.nodes.push_back(tokens.next_integer("a node tag"));
+    for (int n = 0; n < type->nodes; ++n)
+      element.nodes.push_back(tokens.next_integer("a node tag"));
     mesh.elements.push_back(std::move(element));
   }
   if (tokens.next("$EndElements") != "$EndElements")

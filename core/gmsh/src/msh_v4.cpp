@@ -125,8 +125,9 @@ void read_msh4(MshTokens& tokens, RawMesh& mesh) {
     else if (section == "$Elements")
       read_elements(tokens, physicals, mesh);
     else if (section == "$PartitionedEntities")
-      tokens.fail("a partitioned mesh ($PartitionedEntities) is not read: save the mesh whole "
-                  "(Mesh.PartitionSplitMeshFiles = 0, or without partitioning)");
+      tokens.fail(
+          "a partitioned mesh ($PartitionedEntities) is not read: save the mesh whole "
+          "(Mesh.PartitionSplitMeshFiles = 0, or without partitioning)");
     else if (section.rfind("$", 0) == 0 && section.rfind("$End", 0) != 0)
       skip_section(tokens, section);
     else

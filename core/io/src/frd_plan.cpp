@@ -11,10 +11,14 @@ namespace {
 
 bool holds(const IncrementResult& inc, FrdField field) {
   switch (field) {
-    case FrdField::Displacement: return !inc.U.empty();
-    case FrdField::Force: return !inc.RF.empty();
-    case FrdField::Stress: return !inc.S_nodal_I.empty();
-    case FrdField::Strain: return !inc.E_nodal_I.empty();
+    case FrdField::Displacement:
+      return !inc.U.empty();
+    case FrdField::Force:
+      return !inc.RF.empty();
+    case FrdField::Stress:
+      return !inc.S_nodal_I.empty();
+    case FrdField::Strain:
+      return !inc.E_nodal_I.empty();
     case FrdField::Temperature:
       return inc.scalar.kind == ScalarFieldResult::Kind::Temperature && !inc.scalar.value.empty();
     case FrdField::HeatFlux:
@@ -26,24 +30,36 @@ bool holds(const IncrementResult& inc, FrdField field) {
 
 int block_rank(FrdField field) {
   switch (field) {
-    case FrdField::Displacement: return 0;
-    case FrdField::Temperature: return 1;
-    case FrdField::Stress: return 2;
-    case FrdField::Strain: return 3;
-    case FrdField::Force: return 4;
-    case FrdField::HeatFlux: return 5;
+    case FrdField::Displacement:
+      return 0;
+    case FrdField::Temperature:
+      return 1;
+    case FrdField::Stress:
+      return 2;
+    case FrdField::Strain:
+      return 3;
+    case FrdField::Force:
+      return 4;
+    case FrdField::HeatFlux:
+      return 5;
   }
   return 6;
 }
 
 const char* variable_of(FrdField field) {
   switch (field) {
-    case FrdField::Displacement: return "U";
-    case FrdField::Force: return "RF";
-    case FrdField::Stress: return "S";
-    case FrdField::Strain: return "E";
-    case FrdField::Temperature: return "NT";
-    case FrdField::HeatFlux: return "HFL";
+    case FrdField::Displacement:
+      return "U";
+    case FrdField::Force:
+      return "RF";
+    case FrdField::Stress:
+      return "S";
+    case FrdField::Strain:
+      return "E";
+    case FrdField::Temperature:
+      return "NT";
+    case FrdField::HeatFlux:
+      return "HFL";
   }
   return "";
 }
@@ -51,16 +67,24 @@ const char* variable_of(FrdField field) {
 // The field a request variable writes; false for a variable the .frd does not carry.
 bool field_of(OutputRequest::Kind kind, const std::string& var, FrdField& field) {
   if (kind == OutputRequest::Kind::NodeFile) {
-    if (var == "U") field = FrdField::Displacement;
-    else if (var == "RF") field = FrdField::Force;
-    else if (var == "NT") field = FrdField::Temperature;
-    else return false;
+    if (var == "U")
+      field = FrdField::Displacement;
+    else if (var == "RF")
+      field = FrdField::Force;
+    else if (var == "NT")
+      field = FrdField::Temperature;
+    else
+      return false;
     return true;
   }
-  if (var == "S") field = FrdField::Stress;
-  else if (var == "E") field = FrdField::Strain;
-  else if (var == "HFL") field = FrdField::HeatFlux;
-  else return false;
+  if (var == "S")
+    field = FrdField::Stress;
+  else if (var == "E")
+    field = FrdField::Strain;
+  else if (var == "HFL")
+    field = FrdField::HeatFlux;
+  else
+    return false;
   return true;
 }
 
@@ -93,7 +117,8 @@ class RequestPlanner {
     if (step >= model_.steps.size() || !output_due(model_, step, inc.increment, last_of_step))
       return;
     FrdIncrement out{&inc, {}};
-    for (OutputRequest::Kind kind : {OutputRequest::Kind::NodeFile, OutputRequest::Kind::ElementFile})
+    for (OutputRequest::Kind kind :
+         {OutputRequest::Kind::NodeFile, OutputRequest::Kind::ElementFile})
       for (const OutputRequest* request : effective_requests(model_, step, kind))
         for (const std::string& var : request->vars) add_variable(inc, *request, var, out);
     // ccx's order of the blocks, whatever the order of the requests.

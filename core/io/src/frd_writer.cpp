@@ -3,8 +3,8 @@
 #include "styk/io/frd_writer.hpp"
 
 #include <cerrno>
-#include <cstdarg>
 #include <cmath>
+#include <cstdarg>
 #include <cstdio>
 #include <fstream>
 #include <stdexcept>
@@ -79,8 +79,7 @@ frd::FrdCell cell_of(const Model& model, const ElementRegistry& registry, int e)
   for (int k : cell.nodes)
     if (k < 0 || k >= element.node_count) cell.type = 0;
   if (cell.type == 0)
-    throw InputError(element.where, "element " + std::to_string(element.id) + " (" +
-                                        element.type +
+    throw InputError(element.where, "element " + std::to_string(element.id) + " (" + element.type +
                                         ") has no .frd element (its VTK cell, "
                                         "TElement::vtk_cell(), names none): it cannot be written");
   return cell;
@@ -117,12 +116,18 @@ struct BlockLayout {
 
 BlockLayout layout_of(FrdField field) {
   switch (field) {
-    case FrdField::Displacement: return {"DISP", 2, {"D1", "D2", "D3"}};
-    case FrdField::Force: return {"FORC", 2, {"F1", "F2", "F3"}};
-    case FrdField::Stress: return {"STRESS", 4, {"SXX", "SYY", "SZZ", "SXY", "SYZ", "SZX"}};
-    case FrdField::Strain: return {"TOSTRAIN", 4, {"EXX", "EYY", "EZZ", "EXY", "EYZ", "EZX"}};
-    case FrdField::Temperature: return {"NDTEMP", 1, {"T"}};
-    case FrdField::HeatFlux: return {"FLUX", 2, {"F1", "F2", "F3"}};
+    case FrdField::Displacement:
+      return {"DISP", 2, {"D1", "D2", "D3"}};
+    case FrdField::Force:
+      return {"FORC", 2, {"F1", "F2", "F3"}};
+    case FrdField::Stress:
+      return {"STRESS", 4, {"SXX", "SYY", "SZZ", "SXY", "SYZ", "SZX"}};
+    case FrdField::Strain:
+      return {"TOSTRAIN", 4, {"EXX", "EYY", "EZZ", "EXY", "EYZ", "EZX"}};
+    case FrdField::Temperature:
+      return {"NDTEMP", 1, {"T"}};
+    case FrdField::HeatFlux:
+      return {"FLUX", 2, {"F1", "F2", "F3"}};
   }
   return {"", 0, {}};
 }
@@ -135,12 +140,18 @@ std::vector<double> values_at(const IncrementResult& inc, FrdField field, int n)
   };
   auto vector = [](const Vec3& v) { return std::vector<double>{v[0], v[1], v[2]}; };
   switch (field) {
-    case FrdField::Displacement: return vector(inc.U.at(n));
-    case FrdField::Force: return vector(inc.RF.at(n));
-    case FrdField::Stress: return tensor(inc.S_nodal_I.at(n));
-    case FrdField::Strain: return tensor(inc.E_nodal_I.at(n));
-    case FrdField::Temperature: return {inc.scalar.value.at(n)};
-    case FrdField::HeatFlux: return vector(inc.scalar.flux_nodal.at(n));
+    case FrdField::Displacement:
+      return vector(inc.U.at(n));
+    case FrdField::Force:
+      return vector(inc.RF.at(n));
+    case FrdField::Stress:
+      return tensor(inc.S_nodal_I.at(n));
+    case FrdField::Strain:
+      return tensor(inc.E_nodal_I.at(n));
+    case FrdField::Temperature:
+      return {inc.scalar.value.at(n)};
+    case FrdField::HeatFlux:
+      return vector(inc.scalar.flux_nodal.at(n));
   }
   return {};
 }
@@ -184,12 +195,24 @@ void check_sizes(const Model& model, const FrdPlan& plan) {
     for (const FrdFieldOutput& field : inc.fields) {
       bool fits = true;
       switch (field.field) {
-        case FrdField::Displacement: fits = inc.increment->U.size() == nodes; break;
-        case FrdField::Force: fits = inc.increment->RF.size() == nodes; break;
-        case FrdField::Stress: fits = inc.increment->S_nodal_I.size() == nodes; break;
-        case FrdField::Strain: fits = inc.increment->E_nodal_I.size() == nodes; break;
-        case FrdField::Temperature: fits = inc.increment->scalar.value.size() == nodes; break;
-        case FrdField::HeatFlux: fits = inc.increment->scalar.flux_nodal.size() == nodes; break;
+        case FrdField::Displacement:
+          fits = inc.increment->U.size() == nodes;
+          break;
+        case FrdField::Force:
+          fits = inc.increment->RF.size() == nodes;
+          break;
+        case FrdField::Stress:
+          fits = inc.increment->S_nodal_I.size() == nodes;
+          break;
+        case FrdField::Strain:
+          fits = inc.increment->E_nodal_I.size() == nodes;
+          break;
+        case FrdField::Temperature:
+          fits = inc.increment->scalar.value.size() == nodes;
+          break;
+        case FrdField::HeatFlux:
+          fits = inc.increment->scalar.flux_nodal.size() == nodes;
+          break;
       }
       for (int n : field.nodes) fits = fits && n >= 0 && n < model.node_count();
       if (!fits)

@@ -65,7 +65,8 @@ void expect_nodes_at_natural_points(const Model& model, int e, const std::string
     linear.der(type.natural_nodes()[a], N, dN);
     for (int d = 0; d < 3; ++d) {
       double expected = 0.0;
-      for (int c = 0; c < corners; ++c) expected += N(c) * model.coords[model.element_nodes(e)[c]][d];
+      for (int c = 0; c < corners; ++c)
+        expected += N(c) * model.coords[model.element_nodes(e)[c]][d];
       EXPECT_NEAR(model.coords[model.element_nodes(e)[a]][d], expected, 1e-12)
           << element.type << " element " << element.id << " node " << a + 1 << " axis " << d;
     }

@@ -21,11 +21,11 @@ struct GmshImportOptions {
 };
 
 struct GmshImportSummary {
-  std::string format;                    // "2.2" or "4.1"
-  int dimension = 0;                     // the highest element dimension: what became elements
+  std::string format;                      // "2.2" or "4.1"
+  int dimension = 0;                       // the highest element dimension: what became elements
   std::vector<std::string> element_types;  // Styk types written, in the order first met
-  int lower_dimension_elements = 0;      // boundary elements that only gave node sets
-  int unused_nodes = 0;                  // nodes of no imported element (left out)
+  int lower_dimension_elements = 0;        // boundary elements that only gave node sets
+  int unused_nodes = 0;                    // nodes of no imported element (left out)
 };
 
 // Reads the Gmsh mesh at `path`. The elements of the mesh's highest dimension become elements
