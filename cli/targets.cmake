@@ -8,6 +8,7 @@ add_executable(styk
   src/mpi_launcher.cpp
   src/command_info.cpp
   src/command_export.cpp
+  src/command_import.cpp
   src/command_check.cpp
   src/command_elements.cpp
   src/atomic_file.cpp
@@ -21,7 +22,7 @@ target_include_directories(styk PRIVATE src)
 # nlohmann-json: the JSON lines of `styk solve --progress json` (json_progress.cpp only).
 find_package(nlohmann_json 3 REQUIRED)
 target_link_libraries(styk PRIVATE nlohmann_json::nlohmann_json)
-target_link_libraries(styk PRIVATE styk_solver styk_inp styk_io styk_elements styk_mesher styk_studies CLI11::CLI11 fmt::fmt
+target_link_libraries(styk PRIVATE styk_solver styk_inp styk_io styk_elements styk_mesher styk_studies styk_gmsh CLI11::CLI11 fmt::fmt
   styk_warnings)
 # `styk render` needs the OSMesa renderer (STYK_OSMESA, on by default).
 if(TARGET styk_render_osmesa)

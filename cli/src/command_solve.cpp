@@ -18,6 +18,7 @@
 #include "stderr_progress.hpp"
 #include "styk/inp/reader.hpp"
 #include "styk/io/dat_writer.hpp"
+#include "styk/io/frd_writer.hpp"
 #include "styk/io/results_file.hpp"
 #include "styk/solver/analysis.hpp"
 #include "styk/solver/mpi_world.hpp"
@@ -88,12 +89,19 @@ int solve_here(const SolveArgs& args, const MpiWorld& world) {
   const std::string h5_path = join_path(args.output_dir, job + ".styk.h5");
   const std::string dat_path = join_path(args.output_dir, job + ".dat");
 
+  // *NODE FILE / *EL FILE ask for a .frd, as in CalculiX (docs/results.md, "The .frd file").
+  const FrdPlan frd_plan = frd_plan_from_requests(model, results);
+  const std::string frd_path =
+      frd_plan.increments.empty() ? std::string() : join_path(args.output_dir, job + ".frd");
+  for (const std::string& note : frd_plan.notes) progress.warning(note);
+
   t0 = std::chrono::steady_clock::now();
   progress.begin("write");
   {
     AtomicTextFile dat(dat_path);
     write_dat(dat.stream(), model, results);
     write_results_file(h5_path, model, results);
+    if (!frd_path.empty()) write_frd(frd_path, model, registry, frd_plan, job);
     dat.commit();  // the .dat appears only once the results file is complete too
   }
   progress.end("write", seconds_since(t0));
@@ -104,6 +112,7 @@ int solve_here(const SolveArgs& args, const MpiWorld& world) {
               << std::endl;
   std::cout << "results: " << h5_path << "\n"
             << "report:  " << dat_path << "\n";
+  if (!frd_path.empty()) std::cout << "frd:     " << frd_path << "\n";
   std::cout << fmt::format("solved {} dofs with {} in {} step(s)\n", report.dofs,
                            report.linear_solver, model.steps.size());
   return kOk;

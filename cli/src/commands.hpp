@@ -27,15 +27,26 @@ struct InfoArgs {
 };
 int info_command(const InfoArgs& args);
 
+enum class ExportFormat { Vtu, Frd };
 struct ExportArgs {
   std::string input;   // .styk.h5 results file or .inp deck (mesh only)
-  std::string output;  // .vtu path; default: input stem + .vtu
-  int step = 0;        // 0 = last
-  int increment = 0;   // 0 = last of the step
+  std::string output;  // .vtu / .frd path; default: input stem + .vtu / .frd
+  ExportFormat format = ExportFormat::Vtu;
+  int step = 0;       // VTU: 0 = last; .frd: 0 = every step
+  int increment = 0;  // VTU: 0 = last of the step; .frd: 0 = every increment
 };
 int export_command(const ExportArgs& args);
 
 int elements_command();
+
+// `styk import MESH.msh`: a Gmsh mesh as a CalculiX mesh deck (command_import.cpp).
+struct ImportArgs {
+  std::string mesh;
+  std::string output;          // default: the mesh's name with .inp
+  std::string planar;          // cps | cpe | cax | shell: what a surface mesh's elements are
+  std::string lines = "beam";  // beam | truss: what a line mesh's elements are
+};
+int import_command(const ImportArgs& args);
 
 struct CheckArgs {
   std::string results;  // .styk.h5 results file

@@ -8,6 +8,7 @@
 #include "exit_codes.hpp"
 #include "mesh_args.hpp"
 #include "study_args.hpp"
+#include "styk/core/diagnostics.hpp"
 #include "verify_args.hpp"
 #ifdef STYK_WITH_RENDER
 #include "render_args.hpp"
@@ -63,16 +64,35 @@ int main(int argc, char** argv) {
 
   ExportArgs exp;
   bool vtu = false;
+  bool frd = false;
   CLI::App* export_cmd =
       app.add_subcommand("export", "Export a results file (or a deck's mesh) for other programs");
   export_cmd->add_option("input", exp.input, "Results file (.styk.h5) or deck (.inp)")->required();
-  export_cmd->add_flag("--vtu", vtu, "Write a VTK XML unstructured grid (.vtu) for ParaView")
-      ->required();
-  export_cmd->add_option("-o,--output", exp.output, "Output file (default: input name with .vtu)");
-  export_cmd->add_option("--step", exp.step, "Step number (default: last)")
+  CLI::Option* vtu_flag =
+      export_cmd->add_flag("--vtu", vtu, "Write a VTK XML unstructured grid (.vtu) for ParaView");
+  CLI::Option* frd_flag = export_cmd->add_flag(
+      "--frd", frd, "Write a CalculiX results file (.frd) for cgx, PrePoMax, ccx2paraview");
+  vtu_flag->excludes(frd_flag);
+  export_cmd->add_option("-o,--output", exp.output,
+                         "Output file (default: input name with .vtu or .frd)");
+  export_cmd->add_option("--step", exp.step, "Step number (default: last; --frd: every step)")
       ->check(CLI::NonNegativeNumber);
-  export_cmd->add_option("--inc", exp.increment, "Increment within the step (default: last)")
+  export_cmd
+      ->add_option("--inc", exp.increment,
+                   "Increment within the step (default: last; --frd: every increment)")
       ->check(CLI::NonNegativeNumber);
+
+  ImportArgs import;
+  CLI::App* import_cmd = app.add_subcommand(
+      "import", "Convert a Gmsh mesh (.msh, ASCII 2.2 or 4.1) into a CalculiX mesh deck (.inp)");
+  import_cmd->add_option("mesh", import.mesh, "Gmsh mesh (.msh)")->required();
+  import_cmd->add_option("-o,--output", import.output,
+                         "Deck to write (default: the mesh's name with .inp)");
+  import_cmd->add_option("--planar", import.planar,
+                         "A surface mesh's elements: cps (plane stress), cpe (plane strain), cax "
+                         "(axisymmetric) or shell");
+  import_cmd->add_option("--lines", import.lines,
+                         "A line mesh's elements: beam (B31/B32) or truss (T3D2)");
 
   CheckArgs check;
   CLI::App* check_cmd = app.add_subcommand(
@@ -256,7 +276,12 @@ int main(int argc, char** argv) {
       [&]() -> int {
         if (*solve_cmd) return solve_command(solve);
         if (*info_cmd) return info_command(info);
-        if (*export_cmd) return export_command(exp);
+        if (*export_cmd) {
+          if (!vtu && !frd) throw styk::InputError({}, "styk export needs --vtu or --frd");
+          exp.format = frd ? ExportFormat::Frd : ExportFormat::Vtu;
+          return export_command(exp);
+        }
+        if (*import_cmd) return import_command(import);
         if (*check_cmd) return check_command(check);
 #ifdef STYK_WITH_RENDER
         if (*render_cmd) return render_command(render);

@@ -6,6 +6,7 @@
 #include <Eigen/CholmodSupport>
 #include <Eigen/SparseCore>
 
+#include "analysis_setup.hpp"
 #include "assembly.hpp"
 #include "parallel.hpp"
 #include "phase_recorder.hpp"
@@ -193,9 +194,9 @@ void recover_fluxes(const Model& model, const ScalarFieldModel& prepared,
 Results run_scalar_field_analysis(const Model& model, const ElementRegistry& registry,
                                   const SolveOptions& options, ProgressSink* progress,
                                   AnalysisReport* report) {
-  if (report != nullptr) *report = AnalysisReport{};
-  const PhaseRecorder phases(progress, report);
-  const int threads = resolve_threads(options.threads);
+  const AnalysisStart start(options, progress, report);
+  const PhaseRecorder& phases = start.phases();
+  const int threads = start.threads();
   if (options.force == LinearSolverKind::Iterative)
     throw InputError(SourceLoc{model.source, 0},
                      "the iterative solver serves mechanical steps; steady heat and electric "

@@ -4,6 +4,7 @@
 
 #include <algorithm>
 #include <cstdio>
+#include <optional>
 #include <stdexcept>
 
 #include "h5_integrity.hpp"
@@ -14,6 +15,7 @@
 #include "results_rows.hpp"
 #include "results_schema.hpp"
 #include "styk/io/results_file.hpp"
+#include "styk/io/results_seal.hpp"
 
 namespace styk {
 namespace {
@@ -213,7 +215,9 @@ void conclude(io::FileIntegrity integrity, ResultsCheck& report) {
     report.summary = "whole \u2014 schema " + std::to_string(report.schema_version) + ", Styk " +
                      report.styk_version + "; " + counts +
                      " match their Fletcher-32 and CRC-32 checksums and the digest " +
-                     report.digest + "; every value finite; counts, ids and steps consistent";
+                     report.digest + "; every value finite; counts, ids and steps consistent; " +
+                     (report.seal.empty() ? "not sealed (written before Styk sealed its files)"
+                                          : "sealed: " + report.seal);
   }
 }
 
@@ -223,8 +227,10 @@ ResultsCheck check_results_file(const std::string& path) {
   const h5::QuietErrors quiet;
   ResultsCheck report;
   h5::Handle file;
+  std::optional<io::ResultsSeal> seal;
   try {
-    file = io::open_results_for_reading(path);
+    file = io::open_results_for_reading(path, &seal);
+    if (seal) report.seal = io::describe_seal(*seal);
   } catch (const std::runtime_error& e) {
     report.problems.push_back(e.what());
     conclude(io::FileIntegrity::Checksummed, report);

@@ -4,6 +4,7 @@
 #include <array>
 #include <cstdint>
 #include <limits>
+#include <optional>
 #include <stdexcept>
 #include <string>
 #include <vector>
@@ -211,13 +212,16 @@ ResultsFileContents read_results_file(const std::string& path) {
   const h5::QuietErrors quiet;
   const SourceLoc where{path, 0};
   h5::Handle file;
+  std::optional<io::ResultsSeal> seal;
   try {
-    file = io::open_results_for_reading(path);
+    file = io::open_results_for_reading(path, &seal);
   } catch (const std::runtime_error& e) {
     throw InputError(where, e.what());
   }
   try {
-    return read_contents(file.get(), path);
+    ResultsFileContents contents = read_contents(file.get(), path);
+    contents.sealed = seal.has_value();
+    return contents;
   } catch (const h5::NonFiniteError& e) {
     throw InputError(where, io::describe_non_finite(file.get(), e) +
                                 " \u2014 a results file holds finite numbers only");

@@ -17,6 +17,7 @@
 #include "results_structural.hpp"
 #include "styk/core/diagnostics.hpp"
 #include "styk/io/results_file.hpp"
+#include "styk/io/results_seal.hpp"
 #include "styk/io/temp_file.hpp"
 
 namespace styk {
@@ -181,7 +182,8 @@ void write_contents(hid_t file, const Model& model, const Results& results) {
 }
 
 h5::Handle create_file(const std::string& path, io::ResultsLayout layout) {
-  if (layout == io::ResultsLayout::Checksummed) return io::create_checksummed_file(path);
+  if (layout != io::ResultsLayout::PreChecksum)
+    return io::create_checksummed_file(path, layout == io::ResultsLayout::Sealed);
   return h5::Handle(H5Fcreate(path.c_str(), H5F_ACC_TRUNC, H5P_DEFAULT, H5P_DEFAULT), H5Fclose,
                     "cannot create " + path);
 }
@@ -209,9 +211,11 @@ void write_results_file_as(const std::string& path, const Model& model, const Re
         throw NonFiniteResultsError(what + ": " + describe_non_finite(file.get(), e) +
                                     "; Styk writes finite results only, so nothing was written");
       }
-      if (layout == ResultsLayout::Checksummed) write_digest(file.get());
+      if (layout != ResultsLayout::PreChecksum) write_digest(file.get());
       file.close("cannot finish " + temp.temp_path());
     }
+    // Over the bytes HDF5 left on the disk, once it has closed the file.
+    if (layout == ResultsLayout::Sealed) seal_results_file(temp.temp_path());
     temp.commit();
   } catch (const NonFiniteResultsError&) {
     throw;
@@ -227,7 +231,7 @@ void write_results_file_as(const std::string& path, const Model& model, const Re
 }  // namespace io
 
 void write_results_file(const std::string& path, const Model& model, const Results& results) {
-  io::write_results_file_as(path, model, results, io::ResultsLayout::Checksummed);
+  io::write_results_file_as(path, model, results, io::ResultsLayout::Sealed);
 }
 
 }  // namespace styk

@@ -1,5 +1,7 @@
 #include "results_integrity.hpp"
 
+#include "styk/io/results_seal.hpp"
+
 #include <algorithm>
 #include <cinttypes>
 #include <cstdio>
@@ -89,11 +91,14 @@ std::string digest_of(const std::vector<DatasetEntry>& datasets) {
   return text;
 }
 
-h5::Handle create_checksummed_file(const std::string& path) {
+h5::Handle create_checksummed_file(const std::string& path, bool seal_block) {
   const h5::Handle access(H5Pcreate(H5P_FILE_ACCESS), H5Pclose, "cannot create property list");
   h5::check(H5Pset_libver_bounds(access.get(), H5F_LIBVER_V110, H5F_LIBVER_V110),
             "cannot select the HDF5 1.10 file format");
-  h5::Handle file(H5Fcreate(path.c_str(), H5F_ACC_TRUNC, H5P_DEFAULT, access.get()), H5Fclose,
+  const h5::Handle creation(H5Pcreate(H5P_FILE_CREATE), H5Pclose, "cannot create property list");
+  if (seal_block)
+    h5::check(H5Pset_userblock(creation.get(), kSealBlockBytes), "cannot reserve the user block");
+  h5::Handle file(H5Fcreate(path.c_str(), H5F_ACC_TRUNC, creation.get(), access.get()), H5Fclose,
                   "cannot create " + path);
   h5::write_attribute(file.get(), h5::kChecksumsAttribute, std::string(h5::kChecksumsScheme));
   return file;

@@ -37,8 +37,9 @@ std::string digest_of(const std::vector<DatasetEntry>& datasets);
 
 // Creates a results file with checksums: HDF5 1.10 file format (its metadata carries HDF5's own
 // checksums, which 1.8's does not) and the root attribute `checksums` that tells the dataset
-// helpers to checksum everything written to it.
-h5::Handle create_checksummed_file(const std::string& path);
+// helpers to checksum everything written to it. With `seal_block`, HDF5 reserves the user block
+// the whole-file seal is written into once the file is closed (styk/io/results_seal.hpp).
+h5::Handle create_checksummed_file(const std::string& path, bool seal_block);
 
 // Writes the root attribute `digest` over every dataset written. Call last, before closing.
 void write_digest(hid_t file);

@@ -8,11 +8,15 @@
 
 namespace styk::io {
 
-h5::Handle open_results_for_reading(const std::string& path) {
+h5::Handle open_results_for_reading(const std::string& path, std::optional<ResultsSeal>* seal) {
   if (FILE* probe = std::fopen(path.c_str(), "rb"))
     std::fclose(probe);
   else
     throw std::runtime_error(std::string("cannot be opened: ") + std::strerror(errno));
+  // Before HDF5 sees a byte: damaged metadata can make HDF5 over-read its buffers or allocate
+  // gigabytes before it reports the file damaged (docs/fuzzing.md).
+  const std::optional<ResultsSeal> verified = verify_results_seal(path);
+  if (seal != nullptr) *seal = verified;
   std::error_code size_error;
   const auto bytes = std::filesystem::file_size(path, size_error);
   if (H5Fis_hdf5(path.c_str()) <= 0) {

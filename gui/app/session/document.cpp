@@ -57,6 +57,20 @@ void Document::open_results(const std::string& path) {
   changed(true);
 }
 
+void Document::open_msh(const std::string& path, const GmshImportOptions& options) {
+  Model model = import_gmsh(path, options);
+  model_ = std::move(model);
+  results_.reset();
+  results_path_.clear();
+  path_ = path;
+  history_.clear();
+  layers_ = LayerTable{};  // a new model: the user layers of the old one go
+  filter_ = ElementDisplayFilter{};
+  open_warnings_.clear();
+  results_notice_.clear();
+  changed(false);
+}
+
 void Document::save_inp(const std::string& path) {
   write_deck_copy(path);
   path_ = path;

@@ -15,6 +15,7 @@
 #include "styk/core/element_registry.hpp"
 #include "styk/core/model.hpp"
 #include "styk/core/results.hpp"
+#include "styk/gmsh/gmsh_import.hpp"
 
 namespace styk::gui {
 
@@ -33,6 +34,11 @@ class Document {
   // checksum mismatch — the file is damaged") or std::runtime_error on failure, document
   // unchanged. A file written before checksums opens with results_notice() set.
   void open_results(const std::string& path);
+  // A Gmsh mesh (.msh, as `styk import` reads it: styk/gmsh/gmsh_import.hpp): its elements and
+  // nodes become the model, its physical groups sets; no materials or steps yet, and Save asks
+  // for a deck name. `options` says what a surface or line mesh's elements are. Throws
+  // InputError ("file:line: message") and leaves the document unchanged on failure.
+  void open_msh(const std::string& path, const GmshImportOptions& options);
   // Writes the model as a deck (atomically: a temporary file renamed over `path`), followed by the
   // layers and the filter as comment lines (view_state.hpp).
   void save_inp(const std::string& path);

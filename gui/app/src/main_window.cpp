@@ -5,6 +5,7 @@
 #include <QDockWidget>
 #include <QFileDialog>
 #include <QFileInfo>
+#include <QInputDialog>
 #include <QLabel>
 #include <QMessageBox>
 #include <QPlainTextEdit>
@@ -142,10 +143,16 @@ void MainWindow::run_dialog(QDialog* dialog) {
 
 bool MainWindow::open_file(const QString& path) {
   try {
-    if (path.endsWith(".h5"))
+    if (path.endsWith(".h5")) {
       document_.open_results(path.toStdString());
-    else
+    } else if (path.endsWith(".msh")) {
+      GmshImportOptions options;
+      if (gmsh_mesh_dimension(path.toStdString()) == 2 && !ask_planar_elements(options))
+        return false;
+      document_.open_msh(path.toStdString(), options);
+    } else {
       document_.open_inp(path.toStdString());
+    }
   } catch (const std::exception& e) {
     show_error("Open " + QFileInfo(path).fileName(), QString::fromUtf8(e.what()));
     return false;
@@ -162,6 +169,21 @@ bool MainWindow::open_file(const QString& path) {
   view_->set_named_view("iso");
   if (document_.results()) results_->set_field("S.mises");
   refresh_model();
+  return true;
+}
+
+// A surface mesh from Gmsh does not say what its elements are: the user picks, as `styk import
+// --planar` asks.
+bool MainWindow::ask_planar_elements(GmshImportOptions& options) {
+  const QStringList kinds{"shell (S4, S8, S9, STRI3)", "plane stress (CPS4, CPS8)",
+                          "plane strain (CPE4, CPE8)", "axisymmetric (CAX4, CAX8)"};
+  bool ok = false;
+  const QString kind = QInputDialog::getItem(
+      this, "Open Gmsh mesh", "A surface mesh: its elements are", kinds, 0, false, &ok);
+  if (!ok) return false;
+  const PlanarElements choices[] = {PlanarElements::Shell, PlanarElements::PlaneStress,
+                                    PlanarElements::PlaneStrain, PlanarElements::Axisymmetric};
+  options.planar = choices[kinds.indexOf(kind)];
   return true;
 }
 

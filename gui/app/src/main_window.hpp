@@ -92,6 +92,7 @@ class MainWindow : public QMainWindow {
   void closeEvent(QCloseEvent* event) override;
 
  private:
+  bool ask_planar_elements(GmshImportOptions& options);
   void build_menus();  // main_window_menus.cpp: one builder per menu
   void build_file_menu();
   void build_edit_menu();

@@ -38,7 +38,8 @@ void MainWindow::build_file_menu() {
   file->addAction("&Open...", QKeySequence::Open, this, [this] {
     if (!maybe_save()) return;
     const QString path = QFileDialog::getOpenFileName(
-        this, "Open", QString(), "Models and results (*.inp *.styk.h5 *.h5);;All files (*)");
+        this, "Open", QString(),
+        "Models, results and Gmsh meshes (*.inp *.styk.h5 *.h5 *.msh);;All files (*)");
     if (!path.isEmpty()) open_file(path);
   });
   recent_menu_ = file->addMenu("Open &recent");

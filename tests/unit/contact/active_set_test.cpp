@@ -127,6 +127,37 @@ TEST(ActiveSet, CycleIsDetectedAndBroken) {
   EXPECT_EQ(solutions, 1);  // SPD compliance: the solution is unique
 }
 
+// ActiveSetOptions::cycle_damping steers the damped steps after a cycle: on the cycling system
+// above the step after the first detected cycle has the option's length (0.75 instead of the
+// default 0.5), every step length is a power of it or a full step, and the solution is the
+// defaults' (the LCP's unique one, 1e-10). On this system the milder damping converges in fewer
+// iterations (20 against 34 with 0.5; 0.25 does not converge in 50).
+TEST(ActiveSet, CycleDampingFollowsTheOptions) {
+  const std::vector<ContactConstraint> cs(3, constraint(FrictionLaw::Kind::Frictionless, 0, 0, 0));
+  const LinearContactSystem s = cycling_system();
+  ContactState reference;
+  const IncrementOutcome by_default = solve_increment(cs, s, reference, ActiveSetOptions{}, {});
+  ASSERT_TRUE(by_default.converged) << by_default.reason;
+  ActiveSetOptions options;
+  options.cycle_damping = 0.75;
+  ContactState state;
+  std::vector<IterationRecord> records;
+  const IncrementOutcome out = solve_increment(
+      cs, s, state, options, [&](const IterationRecord& r) { records.push_back(r); });
+  ASSERT_TRUE(out.converged) << out.reason;
+  EXPECT_LT(out.iterations, by_default.iterations);
+  std::size_t first_cycle = records.size();
+  for (std::size_t i = 0; i < records.size(); ++i) {
+    const double powers = std::log(records[i].damping) / std::log(0.75);
+    EXPECT_NEAR(powers, std::round(powers), 1e-9) << "step length " << records[i].damping;
+    if (records[i].cycle && first_cycle == records.size()) first_cycle = i;
+  }
+  ASSERT_LT(first_cycle + 1, records.size());
+  EXPECT_EQ(records[first_cycle + 1].damping, 0.75);
+  for (int i = 0; i < 3; ++i)
+    EXPECT_NEAR((state.nodes[i].lambda - reference.nodes[i].lambda).norm(), 0.0, 1e-10);
+}
+
 TEST(ActiveSet, NonConvergenceIsReportedWithTheFlippingNodes) {
   const std::vector<ContactConstraint> cs(3, constraint(FrictionLaw::Kind::Frictionless, 0, 0, 0));
   ContactState state;

@@ -8,6 +8,7 @@
 #include <vector>
 
 #include "styk/io/results_file.hpp"
+#include "styk/io/results_seal.hpp"
 
 namespace styk::damage {
 namespace {
@@ -20,6 +21,26 @@ std::fstream open_in_place(const std::string& file) {
   std::fstream f(file, std::ios::in | std::ios::out | std::ios::binary);
   require(bool(f), "cannot open " + file);
   return f;
+}
+
+bool starts_with_seal(const std::string& file) {
+  std::ifstream in(file, std::ios::binary);
+  std::string head(18, '\0');
+  in.read(head.data(), static_cast<std::streamsize>(head.size()));
+  return bool(in) && head == "styk-results-seal ";
+}
+
+// Runs `damage` on `file`, sealing it again afterwards when asked and it was sealed.
+template <class Damage>
+void beneath_seal(const std::string& file, Seal seal, Damage damage) {
+  const bool was_sealed = seal == Seal::Reseal && starts_with_seal(file);
+  damage();
+  if (!was_sealed) return;
+  try {
+    io::seal_results_file(file);
+  } catch (const std::runtime_error&) {
+    // The damage moved or destroyed HDF5's superblock: there is nothing left to seal.
+  }
 }
 
 }  // namespace
@@ -35,11 +56,17 @@ StoredBytes first_chunk(const std::string& file, const std::string& dataset) {
   haddr_t address = 0;
   hsize_t size = 0;
   const herr_t status = H5Dget_chunk_info(d, space, 0, offset, &mask, &address, &size);
+  // HDF5's addresses count from its superblock, which a sealed file's user block precedes.
+  const hid_t creation = H5Fget_create_plist(f);
+  hsize_t user_block = 0;
+  const herr_t block_status = H5Pget_userblock(creation, &user_block);
+  H5Pclose(creation);
   H5Sclose(space);
   H5Dclose(d);
   H5Fclose(f);
   require(status >= 0 && size > 0, dataset + " has no stored chunk");
-  return {address, size};
+  require(block_status >= 0, "cannot read the user block size of " + file);
+  return {address + user_block, size};
 }
 
 void copy_file(const std::string& from, const std::string& to) {
@@ -48,46 +75,54 @@ void copy_file(const std::string& from, const std::string& to) {
 
 std::uint64_t file_size(const std::string& file) { return std::filesystem::file_size(file); }
 
-void flip_byte(const std::string& file, std::uint64_t offset) {
-  std::fstream f = open_in_place(file);
-  f.seekg(static_cast<std::streamoff>(offset));
-  char byte = 0;
-  f.get(byte);
-  f.seekp(static_cast<std::streamoff>(offset));
-  f.put(static_cast<char>(~byte));
-  require(bool(f), "cannot flip a byte of " + file);
+void flip_byte(const std::string& file, std::uint64_t offset, Seal seal) {
+  beneath_seal(file, seal, [&] {
+    std::fstream f = open_in_place(file);
+    f.seekg(static_cast<std::streamoff>(offset));
+    char byte = 0;
+    f.get(byte);
+    f.seekp(static_cast<std::streamoff>(offset));
+    f.put(static_cast<char>(~byte));
+    require(bool(f), "cannot flip a byte of " + file);
+  });
 }
 
-void truncate_file(const std::string& file, std::uint64_t size) {
-  std::filesystem::resize_file(file, size);
+void truncate_file(const std::string& file, std::uint64_t size, Seal seal) {
+  beneath_seal(file, seal, [&] { std::filesystem::resize_file(file, size); });
 }
 
-void zero_bytes(const std::string& file, std::uint64_t offset, std::uint64_t size) {
-  std::fstream f = open_in_place(file);
-  f.seekp(static_cast<std::streamoff>(offset));
-  const std::vector<char> zeros(size, 0);
-  f.write(zeros.data(), static_cast<std::streamsize>(size));
-  require(bool(f), "cannot zero bytes of " + file);
+void zero_bytes(const std::string& file, std::uint64_t offset, std::uint64_t size, Seal seal) {
+  beneath_seal(file, seal, [&] {
+    std::fstream f = open_in_place(file);
+    f.seekp(static_cast<std::streamoff>(offset));
+    const std::vector<char> zeros(size, 0);
+    f.write(zeros.data(), static_cast<std::streamsize>(size));
+    require(bool(f), "cannot zero bytes of " + file);
+  });
 }
+
+void reseal(const std::string& file) { io::seal_results_file(file); }
 
 void set_value(const std::string& file, const std::string& dataset, std::uint64_t row,
-               std::uint64_t column, double value) {
-  const hid_t f = H5Fopen(file.c_str(), H5F_ACC_RDWR, H5P_DEFAULT);
-  require(f >= 0, "cannot open " + file);
-  const hid_t d = H5Dopen2(f, dataset.c_str(), H5P_DEFAULT);
-  require(d >= 0, "no dataset " + dataset);
-  const hid_t space = H5Dget_space(d);
-  const int rank = H5Sget_simple_extent_ndims(space);
-  const hsize_t start[2] = {row, column};
-  const hsize_t one[2] = {1, 1};
-  H5Sselect_hyperslab(space, H5S_SELECT_SET, start, nullptr, one, nullptr);
-  const hid_t memory = H5Screate_simple(1, one, nullptr);
-  const herr_t status = H5Dwrite(d, H5T_NATIVE_DOUBLE, memory, space, H5P_DEFAULT, &value);
-  H5Sclose(memory);
-  H5Sclose(space);
-  H5Dclose(d);
-  H5Fclose(f);
-  require(status >= 0 && rank >= 1, "cannot write into " + dataset);
+               std::uint64_t column, double value, Seal seal) {
+  beneath_seal(file, seal, [&] {
+    const hid_t f = H5Fopen(file.c_str(), H5F_ACC_RDWR, H5P_DEFAULT);
+    require(f >= 0, "cannot open " + file);
+    const hid_t d = H5Dopen2(f, dataset.c_str(), H5P_DEFAULT);
+    require(d >= 0, "no dataset " + dataset);
+    const hid_t space = H5Dget_space(d);
+    const int rank = H5Sget_simple_extent_ndims(space);
+    const hsize_t start[2] = {row, column};
+    const hsize_t one[2] = {1, 1};
+    H5Sselect_hyperslab(space, H5S_SELECT_SET, start, nullptr, one, nullptr);
+    const hid_t memory = H5Screate_simple(1, one, nullptr);
+    const herr_t status = H5Dwrite(d, H5T_NATIVE_DOUBLE, memory, space, H5P_DEFAULT, &value);
+    H5Sclose(memory);
+    H5Sclose(space);
+    H5Dclose(d);
+    H5Fclose(f);
+    require(status >= 0 && rank >= 1, "cannot write into " + dataset);
+  });
 }
 
 std::string write_cube_results(const std::string& path) {

@@ -1,5 +1,6 @@
-// `styk check`: is a results file whole? Verifies the schema version, every checksum (Fletcher-32
-// of each stored chunk, CRC-32 of each dataset, the file digest), that every value is a finite
+// `styk check`: is a results file whole? Verifies the schema version, every checksum (the
+// whole-file seal before anything else, Fletcher-32 of each stored chunk, CRC-32 of each dataset,
+// the file digest), that every value is a finite
 // number, and the internal consistency of counts, ids and the step/increment structure. Every
 // dataset of the file is read, known to this build or not.
 #pragma once
@@ -26,6 +27,7 @@ struct ResultsCheck {
   int schema_version = 0;
   std::string styk_version;
   std::string digest;             // "crc32:xxxxxxxx" (empty for an older file)
+  std::string seal;               // "crc32:xxxxxxxx over N bytes" (empty: not sealed)
   std::size_t datasets = 0;       // datasets read
   std::uint64_t value_bytes = 0;  // bytes of values in them
   int steps = 0;

@@ -24,6 +24,9 @@ struct ResultsFileContents {
   // its values are finite and its counts consistent, but whether they are what the solver wrote
   // cannot be verified; readers say so with unverified_notice().
   bool verified = false;
+  // True when the file carries the whole-file seal (docs/results.md, "Integrity"), verified
+  // before HDF5 read it. Files written before Styk sealed its results files have none.
+  bool sealed = false;
 };
 
 // The results to write hold a NaN or an infinity (a failed solve: an overflow, a singular

@@ -1,0 +1,76 @@
+// The pieces the active-set iteration (active_set.cpp) is made of: the per-constraint constants of
+// one linear contact system, the iterate, the loads the contacts feel, the linearised solve
+// (linearised_step.cpp) and the check of bodies held by friction alone (body_hold.cpp).
+#pragma once
+
+#include <array>
+#include <vector>
+
+#include <Eigen/Core>
+
+#include "styk/contact/active_set.hpp"
+
+namespace styk::contact::active_set_detail {
+
+// Per-constraint constants of one linear system: which components can carry force and the
+// complementarity parameters (the inverse self-compliance, so c d has force units and the
+// iteration does not depend on the units of the model).
+struct Setup {
+  std::vector<std::array<bool, 3>> live;
+  std::vector<double> c_n, c_t;
+  double load_force = 0.0;  // force scale of the loading as the contacts feel it
+};
+
+Setup set_up(const std::vector<ContactConstraint>& constraints, const LinearContactSystem& system,
+             const ActiveSetOptions& options);
+
+LocalPoint point_of(const ContactConstraint& constraint, const Setup& setup, int k,
+                    const Eigen::Vector3d& lambda, const Eigen::Vector3d& d,
+                    const Eigen::Vector3d& d_ref, double eps, double proximal = 0.0);
+
+// The iterate: all multipliers, rigid motions and the displacements they give.
+struct Iterate {
+  Eigen::VectorXd lambda, alpha, d;
+};
+
+// What the contacts feel besides their own forces: the structure's loads (d0, h) and the fluid
+// forces of the penetrated zone, fluid = the known normal forces p A on its nodes:
+// d0 - S fluid and h - G^T fluid.
+struct Loads {
+  Eigen::VectorXd d0, h;
+};
+
+Loads loads_with_fluid(const LinearContactSystem& system, const std::vector<char>& penetrated);
+
+Eigen::VectorXd displacements(const LinearContactSystem& system, const Loads& loads,
+                              const Iterate& x);
+
+// Solves the linearised conditions of `status` at `at` (slip rows with the proximal weight, see
+// LocalPoint::proximal). Returns false when the system is singular (a body held only by contact is
+// not held by the closed constraints).
+bool solve_linearised(const std::vector<ContactConstraint>& constraints,
+                      const LinearContactSystem& system, const Loads& loads, const Setup& setup,
+                      const std::vector<NodeStatus>& status, const Iterate& at,
+                      const std::vector<ConstraintState>& previous, double eps, double proximal,
+                      Iterate& out);
+
+// How the bodies held only by contact are held at `at` under `status`. Along a free rigid motion a
+// (column of G) the closed constraints can carry, with the normal forces of `at` and tangential
+// forces anywhere in their cones, the range sum_j G_nj lambda_nj +- sum_j lambda_nj |G_tj|
+// (scaled variables: the cone is the unit disk).
+// - slip_only: for some motion every closed constraint that could resist it slips. The exact
+//   tangent has no stiffness along the slip there, so the linearised system is singular or
+//   nearly so (slip directions a little off the motion) and its step is meaningless.
+// - loss: for such a motion the load h_a lies outside that range: no friction force distribution
+//   balances it, the body slides (a genuine loss of equilibrium).
+struct BodyHold {
+  bool slip_only = false;
+  EquilibriumLoss loss;
+};
+
+BodyHold body_hold(const std::vector<ContactConstraint>& constraints,
+                   const LinearContactSystem& system, const Loads& loads, const Setup& setup,
+                   const std::vector<NodeStatus>& status, const Iterate& at,
+                   const std::vector<ConstraintState>& previous, const ActiveSetOptions& options);
+
+}  // namespace styk::contact::active_set_detail

@@ -1,0 +1,125 @@
+// Per-system constants of the iteration (which components carry force, the complementarity
+// parameters), the loads the contacts feel and the displacements of an iterate.
+#include <algorithm>
+#include <cmath>
+
+#include <Eigen/Cholesky>
+
+#include "active_set_parts.hpp"
+
+namespace styk::contact::active_set_detail {
+namespace {
+
+// A component that moves only what the node's earlier components already move is dependent:
+// e.g. on a symmetry plane the tangent t2 = (eps, 1, 0) of a node whose y is prescribed acts only
+// through eps u_x, a multiple of the normal row (eps is the quadratic face's normal error at the
+// node, ~1e-3, so the degeneracy test of set_up keeps it). Its multiplier would be undetermined and
+// the linearised system singular; the force it stood for is taken by the support. Test: the Schur
+// complement of the row in the Gram matrix of the node's rows, S_kk + w^2 G_k G_k^T (the rigid
+// motions of bodies held by contact count as movement, weighted to S's scale), at most
+// `ratio` (ActiveSetOptions::dependent_row_ratio) of its diagonal.
+void drop_dependent_rows(const LinearContactSystem& system, int k, double max_diag, double g_max,
+                         double ratio, std::array<bool, 3>& live) {
+  Eigen::Matrix3d M = system.S.block<3, 3>(3 * k, 3 * k);
+  if (system.G.cols() > 0 && g_max > 0.0) {
+    const Eigen::MatrixXd Gk = system.G.middleRows<3>(3 * k);
+    M += (max_diag / (g_max * g_max)) * Gk * Gk.transpose();
+  }
+  std::vector<int> accepted;
+  for (int c = 0; c < 3; ++c) {
+    if (!live[c]) continue;
+    double schur = M(c, c);
+    if (!accepted.empty()) {
+      const int a = static_cast<int>(accepted.size());
+      Eigen::MatrixXd Maa(a, a);
+      Eigen::VectorXd mac(a);
+      for (int i = 0; i < a; ++i) {
+        mac[i] = M(accepted[i], c);
+        for (int j = 0; j < a; ++j) Maa(i, j) = M(accepted[i], accepted[j]);
+      }
+      schur -= mac.dot(Maa.ldlt().solve(mac));
+    }
+    if (schur <= ratio * M(c, c))
+      live[c] = false;
+    else
+      accepted.push_back(c);
+  }
+}
+
+}  // namespace
+
+Setup set_up(const std::vector<ContactConstraint>& constraints, const LinearContactSystem& system,
+             const ActiveSetOptions& options) {
+  const int m = static_cast<int>(constraints.size());
+  Setup s;
+  s.live.resize(m);
+  s.c_n.assign(m, 1.0);
+  s.c_t.assign(m, 1.0);
+  double max_diag = 0.0;
+  for (int i = 0; i < 3 * m; ++i) max_diag = std::max(max_diag, system.S(i, i));
+  if (!(max_diag > 0.0)) max_diag = 1.0;
+  const double g_max = system.G.size() > 0 ? system.G.cwiseAbs().maxCoeff() : 0.0;
+  for (int k = 0; k < m; ++k) {
+    for (int c = 0; c < 3; ++c) {
+      const int row = 3 * k + c;
+      const bool allowed = c == 0 || constraints[k].scale(c) > 0.0;
+      // A component whose dofs are all prescribed moves nothing: its force goes to the reactions.
+      const bool degenerate =
+          system.S(row, row) <= 1e-12 * max_diag &&
+          (system.G.cols() == 0 || system.G.row(row).cwiseAbs().maxCoeff() <= 1e-12 * g_max);
+      s.live[k][c] = allowed && !degenerate;
+    }
+    drop_dependent_rows(system, k, max_diag, g_max, options.dependent_row_ratio, s.live[k]);
+    const double snn = system.S(3 * k, 3 * k);
+    s.c_n[k] = 1.0 / (snn > 1e-12 * max_diag ? snn : max_diag);
+    double stt = 0.0;
+    int count = 0;
+    for (int c = 1; c < 3; ++c)
+      if (s.live[k][c]) {
+        stt += system.S(3 * k + c, 3 * k + c);
+        ++count;
+      }
+    s.c_t[k] = count > 0 && stt > 1e-12 * max_diag ? count / stt : s.c_n[k];
+    s.load_force = std::max(s.load_force, s.c_n[k] * std::abs(system.d0[3 * k]));
+  }
+  return s;
+}
+
+LocalPoint point_of(const ContactConstraint& constraint, const Setup& setup, int k,
+                    const Eigen::Vector3d& lambda, const Eigen::Vector3d& d,
+                    const Eigen::Vector3d& d_ref, double eps, double proximal) {
+  LocalPoint p;
+  p.proximal = proximal;
+  p.lambda = lambda;
+  p.d = d;
+  p.d_ref = d_ref;
+  p.gap0 = constraint.gap0;
+  p.c_n = setup.c_n[k];
+  p.c_t = setup.c_t[k];
+  p.eps = eps;
+  p.live = setup.live[k];
+  p.tied = constraint.law.kind == FrictionLaw::Kind::Tied;
+  p.frictional = constraint.law.has_tangential();
+  return p;
+}
+
+Loads loads_with_fluid(const LinearContactSystem& system, const std::vector<char>& penetrated) {
+  Loads out{system.d0, system.h};
+  for (std::size_t j = 0; j < penetrated.size(); ++j) {
+    if (!penetrated[j]) continue;
+    const double f = system.fluid.force[j];
+    const auto row = static_cast<Eigen::Index>(3 * j);
+    out.d0 -= f * system.S.col(row);
+    if (system.G.cols() > 0) out.h -= f * system.G.row(row).transpose();
+  }
+  return out;
+}
+
+Eigen::VectorXd displacements(const LinearContactSystem& system, const Loads& loads,
+                              const Iterate& x) {
+  Eigen::VectorXd d = loads.d0 - system.S * x.lambda;
+  if (system.G.cols() > 0) d += system.G * x.alpha;
+  return d;
+}
+
+}  // namespace styk::contact::active_set_detail

@@ -1,0 +1,117 @@
+// One Newton step of the active-set iteration: the linearised complementarity conditions of the
+// closed constraints under the current statuses, with the equilibrium of the bodies held only by
+// contact, assembled densely and solved by LU (dense_lu.hpp).
+#include <algorithm>
+#include <cmath>
+
+#include "active_set_parts.hpp"
+#include "dense_lu.hpp"
+
+namespace styk::contact::active_set_detail {
+namespace {
+
+// The system A x = rhs for x = (the closed constraints' live multipliers, the rigid motions).
+struct LinearisedSystem {
+  std::vector<int> unknowns;  // global rows 3 node + component of the multipliers
+  Eigen::MatrixXd A;
+  Eigen::VectorXd rhs;
+};
+
+std::vector<int> closed_unknowns(const Setup& setup, const std::vector<NodeStatus>& status) {
+  std::vector<int> unknowns;
+  for (std::size_t j = 0; j < status.size(); ++j)
+    if (status[j] != NodeStatus::Open)
+      for (int c = 0; c < 3; ++c)
+        if (setup.live[j][c]) unknowns.push_back(static_cast<int>(3 * j) + c);
+  return unknowns;
+}
+
+// Per closed node the rows Q d + D lambda = r with d = d0 - S lambda + G alpha substituted, then
+// the rigid equilibrium G^T lambda = h.
+LinearisedSystem assemble_rows(const std::vector<ContactConstraint>& constraints,
+                               const LinearContactSystem& system, const Loads& loads,
+                               const Setup& setup, const std::vector<NodeStatus>& status,
+                               const Iterate& at, const std::vector<ConstraintState>& previous,
+                               double eps, double proximal) {
+  const int k = static_cast<int>(system.G.cols());
+  LinearisedSystem out;
+  out.unknowns = closed_unknowns(setup, status);
+  const std::vector<int>& unknowns = out.unknowns;
+  const int n = static_cast<int>(unknowns.size());
+  out.A = Eigen::MatrixXd::Zero(n + k, n + k);
+  out.rhs = Eigen::VectorXd::Zero(n + k);
+  Eigen::MatrixXd S_rows(3, n);
+  for (int i = 0; i < n;) {
+    const int node = unknowns[i] / 3;
+    int end = i;
+    while (end < n && unknowns[end] / 3 == node) ++end;
+    const LocalPoint p = point_of(constraints[node], setup, node, at.lambda.segment<3>(3 * node),
+                                  at.d.segment<3>(3 * node), previous[node].d_ref, eps, proximal);
+    const LocalRows rows = linearise(p, status[node]);
+    for (int j = 0; j < n; ++j) S_rows.col(j) = system.S.block<3, 1>(3 * node, unknowns[j]);
+    const Eigen::MatrixXd QS = rows.Q * S_rows;
+    const Eigen::Vector3d Qd0 = rows.Q * loads.d0.segment<3>(3 * node);
+    Eigen::MatrixXd QG;
+    if (k > 0) QG = rows.Q * system.G.middleRows<3>(3 * node);
+    for (int r = i; r < end; ++r) {
+      const int c = unknowns[r] % 3;
+      out.A.row(r).head(n) = -QS.row(c);
+      for (int q = i; q < end; ++q) out.A(r, q) += rows.D(c, unknowns[q] % 3);
+      if (k > 0) out.A.row(r).tail(k) = QG.row(c);
+      out.rhs[r] = rows.r[c] - Qd0[c];
+    }
+    i = end;
+  }
+  for (int a = 0; a < k; ++a) {
+    for (int j = 0; j < n; ++j) out.A(n + a, j) = system.G(unknowns[j], a);
+    out.rhs[n + a] = loads.h[a];
+  }
+  return out;
+}
+
+// Solves the system in place; false when it is singular. Rows mix units (displacement rows of S,
+// force^2 rows of the slip law, force rows of the rigid equilibrium): they are equilibrated so the
+// condition estimate means something.
+bool solve_equilibrated(LinearisedSystem& system, Eigen::VectorXd& x) {
+  Eigen::MatrixXd& A = system.A;
+  Eigen::VectorXd& rhs = system.rhs;
+  const Eigen::Index size = A.rows();
+  for (Eigen::Index r = 0; r < size; ++r) {
+    const double largest = A.row(r).cwiseAbs().maxCoeff();
+    if (!(largest > 0.0)) return false;  // e.g. a free rigid motion no closed node touches
+    A.row(r) /= largest;
+    rhs[r] /= largest;
+  }
+  for (Eigen::Index c = 0; c < size; ++c)
+    if (!(A.col(c).cwiseAbs().maxCoeff() > 1e-14)) return false;
+  const contact_detail::DenseLu lu(std::move(A));
+  if (!lu.factorised() || !(lu.rcond() > 1e-15)) return false;
+  x = lu.solve(rhs);
+  return x.allFinite();
+}
+
+}  // namespace
+
+bool solve_linearised(const std::vector<ContactConstraint>& constraints,
+                      const LinearContactSystem& system, const Loads& loads, const Setup& setup,
+                      const std::vector<NodeStatus>& status, const Iterate& at,
+                      const std::vector<ConstraintState>& previous, double eps, double proximal,
+                      Iterate& out) {
+  const int m = static_cast<int>(constraints.size());
+  const int k = static_cast<int>(system.G.cols());
+  LinearisedSystem linearised =
+      assemble_rows(constraints, system, loads, setup, status, at, previous, eps, proximal);
+  const int n = static_cast<int>(linearised.unknowns.size());
+  out.lambda = Eigen::VectorXd::Zero(3 * m);
+  out.alpha = Eigen::VectorXd::Zero(k);
+  if (n + k > 0) {
+    Eigen::VectorXd x;
+    if (!solve_equilibrated(linearised, x)) return false;
+    for (int j = 0; j < n; ++j) out.lambda[linearised.unknowns[j]] = x[j];
+    out.alpha = x.tail(k);
+  }
+  out.d = displacements(system, loads, out);
+  return true;
+}
+
+}  // namespace styk::contact::active_set_detail
