@@ -8,19 +8,26 @@
 #include <Eigen/Eigenvalues>
 
 #include "assembly.hpp"
+#include "section_extent.hpp"
 #include "styk/core/beam_section.hpp"
 #include "warning_format.hpp"
 
 namespace styk::solver_detail {
 namespace {
 
-// Locking beyond this bending stiffening is warned of: from 1 + 0.11 on, the bending deflection
-// is 1 / 1.11 = 0.90 of the true one or less, an error over the 10 % that docs/stability.md
-// counts as failing. Measured (styk study stability, thin-beam: 8 B31/B21 with INTEGRATION=FULL
-// under a uniform load; SPEC §7.3 Tab 7.1a): factor 0.045 -> 3.9 % error, 0.078 -> 7.2 %
-// (Tab 7.1a thick, 8 elements), 0.31 -> 24 % (4 elements), 0.50 -> 33 %; the former 2 % warned
-// at the first two, where the error stays below 10 %.
-constexpr double kLockingWarned = 0.11;
+// Locking is warned of where it costs an estimated 10 % of the deflection or more, the error
+// docs/stability.md counts as failing. A 2-node element's bending stiffens by 1 + f, so its
+// deflection falls short by f / (1 + f): 10 % from f = 0.11. Measured (styk study stability,
+// thin-beam: 8 B31/B21 with INTEGRATION=FULL under a uniform load; SPEC §7.3 Tab 7.1a): f 0.045
+// -> 3.9 % error, 0.078 -> 7.2 % (Tab 7.1a thick, 8 elements), 0.31 -> 24 % (4 elements), 0.50
+// -> 33 %. A 3-node element locks only the part of its bending that varies within it; fully
+// locked, that part costs about (l / L)^2 / 3 of the deflection, L the extent of the member's
+// section (section_extent.hpp): a cantilever of n elements with a linear moment loses 1 / (4 n^2)
+// (each element keeps its mean curvature), and under a uniform load the 8 B32/B22 elements of
+// the sweep level off at 0.52 % = (1/8)^2 / 3 (docs/stability.md). So a 3-node element is warned
+// of only where it is a large part of its member: one or two elements per member.
+constexpr double kLockingWarned = 0.10;
+constexpr double kQuadraticLockedShare = 1.0 / 3.0;
 
 bool is_beam(const TElement& element) { return element.section_measure() == SectionMeasure::Beam; }
 
@@ -51,15 +58,20 @@ std::string locking_warning(const Model& model, const Section& section, const TE
          std::to_string(model.elements[worst_element].id) + "), so shear locking makes " +
          (linear ? "their bending" : "the varying part of their bending") + " about " +
          format("%.3g", 1.0 + worst.factor) + " times too stiff (k G A l^2 / (" +
-         (linear ? "12" : "60") + " E I) = " + format("%.3g", worst.factor) +
-         "); remedy: reduced integration (drop INTEGRATION=FULL, the Abaqus default)" +
+         (linear ? "12" : "60") + " E I) = " + format("%.3g", worst.factor) + ")" +
+         (linear ? std::string()
+                 : ", which with elements " + format("%.2g", worst.share_of_member) +
+                       " of their member's extent can cost (l / L)^2 / 3 of the deflection") +
+         ": the deflection estimated " + format("%.0f", 100.0 * worst.error) +
+         " % short; remedy: reduced integration (drop INTEGRATION=FULL, the Abaqus default)" +
          (linear ? ", the quadratic " + quadratic + " elements" : std::string()) +
          " or more elements (the error falls with the element length squared)";
 }
 
 }  // namespace
 
-BeamLocking beam_locking(const Model& model, const PreparedModel& prepared, int e) {
+BeamLocking beam_locking(const Model& model, const PreparedModel& prepared, int e,
+                         double member_extent) {
   BeamLocking out;
   const Section& section = model.sections[model.elements[e].section];
   const Material& material = *prepared.material[e];
@@ -71,7 +83,8 @@ BeamLocking beam_locking(const Model& model, const PreparedModel& prepared, int 
   const Vec3& b = model.coords[nodes[model.elements[e].node_count - 1]];
   const double l = std::sqrt((b[0] - a[0]) * (b[0] - a[0]) + (b[1] - a[1]) * (b[1] - a[1]) +
                              (b[2] - a[2]) * (b[2] - a[2]));
-  const double c = prepared.formulation[e]->node_count() == 2 ? 12.0 : 60.0;
+  const bool two_node = prepared.formulation[e]->node_count() == 2;
+  const double c = two_node ? 12.0 : 60.0;
   const bool planar = !prepared.formulation[e]->active_dofs()[2];
   // Bending about axis 1 is resisted with shear along axis 2, and about axis 2 with axis 1.
   const double about1 = G * p.shear_area2 * l * l / (c * E * p.I11);
@@ -79,6 +92,10 @@ BeamLocking beam_locking(const Model& model, const PreparedModel& prepared, int 
   const int axis = about1 >= about2 ? 0 : 1;
   out.factor = std::max(about1, about2);
   out.slenderness = l / depth(*section.beam, axis);
+  out.share_of_member = member_extent > 0.0 ? std::min(1.0, l / member_extent) : 1.0;
+  const double locked = out.factor / (1.0 + out.factor);
+  out.error = two_node ? locked
+                       : locked * kQuadraticLockedShare * out.share_of_member * out.share_of_member;
   return out;
 }
 
@@ -146,15 +163,16 @@ std::vector<std::string> beam_warnings(const Model& model, const PreparedModel& 
     BeamLocking locking;
   };
   std::map<std::pair<int, const TElement*>, Worst> locking;
+  const std::vector<double> extent = section_extents(model);
   for (int e = 0; e < model.element_count(); ++e) {
     if (!is_beam(*prepared.formulation[e]) || prepared.rule_kind[e] != RuleKind::Full) continue;
     const TElement& type = *prepared.formulation[e];
     if (type.rule(RuleKind::Full).size() == type.rule(RuleKind::Reduced).size()) continue;
-    const BeamLocking l = beam_locking(model, prepared, e);
-    if (l.factor < kLockingWarned) continue;
+    const BeamLocking l = beam_locking(model, prepared, e, extent[model.elements[e].section]);
+    if (l.error < kLockingWarned) continue;
     Worst& w = locking[{model.elements[e].section, &type}];
     ++w.count;
-    if (w.element < 0 || l.factor > w.locking.factor) w.element = e, w.locking = l;
+    if (w.element < 0 || l.error > w.locking.error) w.element = e, w.locking = l;
   }
   for (const auto& [key, w] : locking)
     warnings.push_back(locking_warning(model, model.sections[key.first], *key.second, w.count,

@@ -87,9 +87,10 @@ std::vector<std::string> warning_kinds(const std::vector<std::string>& warnings)
     const std::string kind =
         has("lock volumetrically") || has("shear locking") || has("locks in shear") ? "locking"
         : has("hourglass")                                                          ? "hourglass"
-        : has("zero-energy modes") ? "spurious modes"
-        : has("distorted")         ? "distortion"
-                                   : "other";
+        : has("zero-energy modes")     ? "spurious modes"
+        : has("thick for a Kirchhoff") ? "no shear deflection"
+        : has("distorted")             ? "distortion"
+                                       : "other";
     if (std::find(kinds.begin(), kinds.end(), kind) == kinds.end()) kinds.push_back(kind);
   }
   return kinds;
