@@ -264,3 +264,60 @@ TEST_F(ShellRender, TriangularShellsShowTheFieldOnTheChosenFibre) {
 
 }  // namespace
 }  // namespace styk::render_test
+
+namespace styk::render_test {
+namespace {
+
+// A curved shell is drawn with the normals the solver uses (docs/elements.md "Nodal normals of
+// shells"): a cylindrical panel (R = 10, 40 degrees in 4 flat S4 facets of 10 degrees, length 4,
+// t = 0.5) has, at each node shared by two facets, the average of their normals, which is the
+// radius; the top and bottom faces along those shared edges therefore lie on the cylinders
+// R +- t/2 (a facet's own normal, 5 degrees off the radius, would put them (t/2)(1 - cos 5 deg)
+// = 9.5e-4 inside and 2.2e-3 rad round). Checked on every drawn vertex at a shared node's angle
+// (float vertices: 1e-5).
+TEST(ShellRenderNormals, CurvedShellsAreDrawnWithTheSolversNodalNormals) {
+  constexpr double kRadius = 10.0, kPanelLength = 4.0, kPanelThickness = 0.5;
+  constexpr int kFacets = 4;
+  const auto angle = [](int i) { return (-20.0 + 10.0 * i) * M_PI / 180.0; };
+  std::ostringstream deck;
+  deck.precision(17);
+  deck << "*NODE, NSET=NALL\n";
+  for (int j = 0; j <= 1; ++j)
+    for (int i = 0; i <= kFacets; ++i)
+      deck << j * 5 + i + 1 << ", " << kRadius * std::sin(angle(i)) << ", " << kPanelLength * j
+           << ", " << kRadius * std::cos(angle(i)) << "\n";
+  deck << "*ELEMENT, TYPE=S4, ELSET=PANEL\n";
+  for (int i = 0; i < kFacets; ++i)
+    deck << i + 1 << ", " << i + 1 << ", " << i + 6 << ", " << i + 7 << ", " << i + 2 << "\n";
+  deck << "*MATERIAL, NAME=STEEL\n*ELASTIC\n210000., 0.3\n*SHELL SECTION, ELSET=PANEL, "
+       << "MATERIAL=STEEL\n"
+       << kPanelThickness << "\n*BOUNDARY\n1, 1, 6\n*STEP\n*STATIC\n*END STEP\n";
+  const std::string path = (test::test_scratch_dir("shell_render") / "panel.inp").string();
+  std::ofstream(path) << deck.str();
+  PluginLibraries libraries;
+  const ElementRegistry registry = make_test_registry(libraries);
+  const Model model = read_inp(path, registry);
+  render::RenderOptions o;
+  o.width = 320, o.height = 240;
+  o.deform.kind = render::DeformSpec::Kind::None;
+  const render::RenderJob j(model, registry, nullptr, o);
+  const Frame frame = j.frame();
+  const Vec3& origin = frame.geometry.origin;
+  int checked = 0;
+  for (const render::Vertex& v : frame.geometry.face_vertices) {
+    const double x = v.position[0] + origin[0], z = v.position[2] + origin[2];
+    const double phi = std::atan2(x, z), r = std::hypot(x, z);
+    for (int i = 1; i < kFacets; ++i) {
+      if (std::abs(phi - angle(i)) > 1e-6) continue;
+      const double expected =
+          r > kRadius ? kRadius + 0.5 * kPanelThickness : kRadius - 0.5 * kPanelThickness;
+      EXPECT_NEAR(r, expected, 1e-5) << "vertex at " << phi * 180.0 / M_PI << " degrees";
+      ++checked;
+    }
+  }
+  // Both faces of both facets at each of the 3 shared edges, each edge a row of grid points.
+  EXPECT_GE(checked, 3 * 2 * 2 * 2);
+}
+
+}  // namespace
+}  // namespace styk::render_test

@@ -354,6 +354,7 @@ SkinModel::SkinModel(const Model& model, const ElementRegistry& registry,
                      const std::vector<Layer>& layers, const ElementFilter& filter)
     : model_(model),
       formulations_(element_formulations(model, registry)),
+      shell_normals_(resolve_shell_normals(model, formulations_)),
       shapes_(std::make_unique<FaceShapes>(formulations_)) {
   for (const TElement* f : formulations_)
     if (f && !drawn_.count(f)) drawn_.emplace(f, drawn_faces(*f));

@@ -197,8 +197,10 @@ struct PlacedShell {
   std::vector<Vector3> directors;
 };
 
-PlacedShell place_shell(const Model& model, const TElement& f, int e, const GeometryRequest& rq,
+PlacedShell place_shell(const SkinModel& skin, const TElement& f, int e, const GeometryRequest& rq,
                         const Vec3& origin) {
+  const Model& model = skin.model();
+  const std::vector<Vec3>& resolved = skin.shell_normals().at_slot;
   PlacedShell s;
   s.f = &f;
   s.e = e;
@@ -210,14 +212,19 @@ PlacedShell place_shell(const Model& model, const TElement& f, int e, const Geom
   Eigen::VectorXd N(n);
   Eigen::MatrixXd dN(n, 3);
   for (int a = 0; a < n; ++a) {
-    // The element's own normal at node a (the solver's director V_a).
-    f.der(f.natural_nodes()[a], N, dN);
-    Vector3 g1 = Vector3::Zero(), g2 = Vector3::Zero();
-    for (int b = 0; b < n; ++b) {
-      g1 += dN(b, 0) * vec(model.coords[conn[b]]);
-      g2 += dN(b, 1) * vec(model.coords[conn[b]]);
+    // The solver's director V_a: the nodal normal resolved over the mesh (averaged where the
+    // shell is smooth, given by *NORMAL), else the element's own normal at node a.
+    const std::size_t slot = static_cast<std::size_t>(model.elements[e].first_node + a);
+    Vector3 director = slot < resolved.size() ? vec(resolved[slot]) : Vector3(Vector3::Zero());
+    if (director.norm() == 0.0) {
+      f.der(f.natural_nodes()[a], N, dN);
+      Vector3 g1 = Vector3::Zero(), g2 = Vector3::Zero();
+      for (int b = 0; b < n; ++b) {
+        g1 += dN(b, 0) * vec(model.coords[conn[b]]);
+        g2 += dN(b, 1) * vec(model.coords[conn[b]]);
+      }
+      director = g1.cross(g2);
     }
-    Vector3 director = g1.cross(g2);
     director = director.norm() > 0 ? Vector3(director.normalized()) : Vector3::UnitZ();
     Vector3 x = vec(model.coords[conn[a]]) - vec(origin);
     if (scale != 0.0) x += scale * vec((*rq.displacement)[conn[a]]);
@@ -388,7 +395,7 @@ void add_shell_elements(const SkinModel& skin, const SkinModel::LayerSkin& layer
     if (colouring.has_field() && !colouring.covered() && request.hide_undefined_faces) continue;
     const Rgb color =
         colouring.has_field() && !colouring.covered() ? neutral_face_color() : layer.color;
-    const PlacedShell placed = place_shell(model, f, e, request, g.origin);
+    const PlacedShell placed = place_shell(skin, f, e, request, g.origin);
     ShellBuilder out(g, color);
     add_faces(placed, colouring, out);
     add_edges(placed, colouring, free[i], out);

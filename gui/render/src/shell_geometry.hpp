@@ -1,7 +1,9 @@
 // Private: shells drawn as surfaces with their thickness. A shell element (TElement::form() ==
 // Shell: S4 ... S9R) has no faces; it is drawn as the body its section describes, with the
 // geometry the solver uses (docs/elements.md "Shells"): x(xi, eta, zeta) = sum N_a [X_a + z V_a],
-// z = t (zeta / 2 - offset), V_a the element's own unit normal at node a. The bottom (zeta = -1)
+// z = t (zeta / 2 - offset), V_a the solver's unit nodal normal at node a (averaged over the
+// elements sharing a smooth node, *NORMAL where given: styk/core/shell_normals.hpp; else the
+// element's own normal there). The bottom (zeta = -1)
 // and top (zeta = +1) faces are lit grids over the element, the free edges of the layer's shells
 // (used by one shell of the layer) get side walls between them. Deformed: the nodes move by the
 // scaled translations and the directors V_a turn by the scaled nodal rotations (UR), so bending

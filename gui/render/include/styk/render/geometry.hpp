@@ -12,6 +12,7 @@
 
 #include "styk/core/element_registry.hpp"
 #include "styk/core/model.hpp"
+#include "styk/core/shell_normals.hpp"
 #include "styk/render/color_scale.hpp"
 #include "styk/render/field.hpp"
 #include "styk/render/layers.hpp"
@@ -85,6 +86,8 @@ class SkinModel {
   Vec3 centre() const { return centre_; }  // centre of the undeformed visible bounding box
   double size() const { return size_; }    // diagonal of that box
   const std::vector<const TElement*>& formulations() const { return formulations_; }
+  // The curved shells' nodal normals the solver uses (averaged where the shell is smooth).
+  const ShellNormals& shell_normals() const { return shell_normals_; }
   const FaceShapes& shapes() const { return *shapes_; }
   // The definition of drawn face `face` of element `element` (drawn_faces of its formulation).
   const FaceDef& face_def(int element, int face) const {
@@ -95,6 +98,7 @@ class SkinModel {
  private:
   const Model& model_;
   std::vector<const TElement*> formulations_;
+  ShellNormals shell_normals_;
   std::map<const TElement*, std::vector<FaceDef>> drawn_;  // per distinct formulation
   std::unique_ptr<FaceShapes> shapes_;
   std::vector<LayerSkin> layers_;
