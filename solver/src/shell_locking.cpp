@@ -61,7 +61,7 @@ bool is_shell(const TElement& element) {
 const LockingLaw* locking_law(const TElement& element, RuleKind kind) {
   if (!is_shell(element) || element.node_count() != 8) return nullptr;
   return element.rule(kind).size() > element.rule(RuleKind::Reduced).size() ? &kS8Locking
-                                                                             : &kS8RLocking;
+                                                                            : &kS8RLocking;
 }
 
 std::string where(const Section& section) {
@@ -117,10 +117,10 @@ std::vector<std::string> shell_locking_warnings(const Model& model, const Prepar
         format("%.3g", extent[key.first]) + " across, where the " +
         (w.law == &kS8Locking ? "fully integrated" : "reduced-integration") +
         " 8-node serendipity shell locks in shear: its deflection estimated " +
-        format("%.0f", 100.0 * w.factor / (1.0 + w.factor)) + " % short (stiffening 1 + f, f = " +
-        format("%.3g", w.law->coefficient) + " (size / t)^2 (size / extent)^" +
-        format("%g", w.law->exponent) + " = " + format("%.3g", w.factor) + ", fitted to " +
-        w.law->fitted + "); remedy: " + w.law->remedy);
+        format("%.0f", 100.0 * w.factor / (1.0 + w.factor)) +
+        " % short (stiffening 1 + f, f = " + format("%.3g", w.law->coefficient) +
+        " (size / t)^2 (size / extent)^" + format("%g", w.law->exponent) + " = " +
+        format("%.3g", w.factor) + ", fitted to " + w.law->fitted + "); remedy: " + w.law->remedy);
   }
   return warnings;
 }
@@ -137,10 +137,10 @@ std::vector<std::string> thick_kirchhoff_shell_warnings(const Model& model,
     const double ratio = section.thickness.value_or(0.0) / extent[s];
     if (!(extent[s] > 0.0) || ratio < kKirchhoffThickWarned) continue;
     warnings.push_back(
-        where(section) + std::to_string(count) + " STRI3 elements of element set " +
-        section.elset + " are thick for a Kirchhoff (thin) shell: thickness / extent " +
-        format("%.3g", ratio) + " (thickness " + format("%.3g", *section.thickness) +
-        ", the shell " + format("%.3g", extent[s]) +
+        where(section) + std::to_string(count) + " STRI3 elements of element set " + section.elset +
+        " are thick for a Kirchhoff (thin) shell: thickness / extent " + format("%.3g", ratio) +
+        " (thickness " + format("%.3g", *section.thickness) + ", the shell " +
+        format("%.3g", extent[s]) +
         " across); STRI3 has no transverse shear deflection, which adds about 5.2 (t / span)^2 "
         "to the bending deflection of a simply supported plate (SPEC §7.3; 17 % short at "
         "t / span 0.2); remedy: a Reissner-Mindlin shell (S4R, S8R, S9R)");

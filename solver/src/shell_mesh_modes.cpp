@@ -45,7 +45,8 @@ std::set<long> supported_dofs(const Model& model) {
   std::set<int> transformed;
   for (const Transform& t : model.transforms) {
     const auto set = model.nsets.find(t.nset);
-    if (set != model.nsets.end()) transformed.insert(set->second.nodes.begin(), set->second.nodes.end());
+    if (set != model.nsets.end())
+      transformed.insert(set->second.nodes.begin(), set->second.nodes.end());
   }
   std::set<long> dofs;
   const auto add = [&](const std::vector<Boundary>& boundaries) {
@@ -84,7 +85,8 @@ Eigen::MatrixXd rigid_motions(const Model& model, const std::map<int, int>& slot
 Eigen::MatrixXd unit_stiffness(const Model& model, const PreparedModel& prepared,
                                const std::vector<int>& elements, const std::map<int, int>& slot) {
   double size = 0.0;
-  for (const int e : elements) size += shell_element_size(model, e) / static_cast<double>(elements.size());
+  for (const int e : elements)
+    size += shell_element_size(model, e) / static_cast<double>(elements.size());
   Section section;
   section.elset = "MESH";
   section.thickness = 0.1 * size;
@@ -106,8 +108,7 @@ Eigen::MatrixXd unit_stiffness(const Model& model, const PreparedModel& prepared
     const int count = model.elements[e].node_count;
     for (int a = 0; a < count; ++a)
       for (int b = 0; b < count; ++b)
-        K.block<6, 6>(6 * slot.at(nodes[a]), 6 * slot.at(nodes[b])) +=
-            Ke.block<6, 6>(6 * a, 6 * b);
+        K.block<6, 6>(6 * slot.at(nodes[a]), 6 * slot.at(nodes[b])) += Ke.block<6, 6>(6 * a, 6 * b);
   }
   return K;
 }
