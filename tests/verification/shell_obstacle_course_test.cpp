@@ -251,6 +251,38 @@ TEST(ShellObstacleCourse, ScordelisLoRoofWithGivenNormals) {
   EXPECT_LE(std::abs(given / reference - 1.0), 0.012);
 }
 
+// The same radial normals given on the *NODE lines (Abaqus' fields 5-7, docs/input.md) instead of
+// *NORMAL lines: the node normals become *NORMAL entries of every shell at the node, so the roof
+// deflects exactly as with the *NORMAL lines (to round-off, 1e-12).
+TEST(ShellObstacleCourse, ScordelisLoRoofWithNormalsOnTheNodeLines) {
+  const ElementRegistry registry = builtin();
+  constexpr int n = 16;
+  const test::ShellGrid g = scordelis_lo("S4", n);
+  std::istringstream in(test::shell_grid_deck(g));
+  std::ostringstream deck;
+  deck.precision(17);
+  bool node_lines = false;
+  for (std::string line; std::getline(in, line);) {
+    if (!line.empty() && line[0] == '*') {
+      node_lines = line == "*NODE";
+    } else if (node_lines) {
+      const int row = (std::stoi(line) - 1) / (n + 1);  // grid row j: the angle
+      const double phi = 40.0 * kPi / 180.0 * row / n;
+      std::ostringstream normal;
+      normal.precision(17);
+      normal << ", 0., " << std::sin(phi) << ", " << std::cos(phi);
+      line += normal.str();
+    }
+    deck << line << "\n";
+  }
+  const Model model = test::read_shell_deck("scordelis_lo_node_normals.inp", deck.str(), registry);
+  const Results results = run_static_analysis(model, registry, SolveOptions{}, nullptr, nullptr);
+  const double on_nodes =
+      -results.increments.back().U[model.node_index(test::grid_node(g, 0, n))][2];
+  const double on_normal_lines = scordelis_lo_deflection("S4", n, registry, true);
+  EXPECT_NEAR(on_nodes, on_normal_lines, 1e-12 * on_normal_lines);
+}
+
 // Pinched cylinder (octant, 16 x 16): S8R 1.8305e-5 (+0.3 %), S9R 1.8671e-5 (+2.3 %), S4 (MITC4)
 // 1.6949e-5 (-7.1 %, its known slow convergence under a point load).
 TEST(ShellObstacleCourse, PinchedCylinderWithDiaphragms) {

@@ -483,6 +483,7 @@ void DeckReader::finish() {
     throw InputError(deck, "the deck has no analysis step (*STEP ... *END STEP)");
   check_field_kinds();  // includes the materials' *ELASTIC / *CONDUCTIVITY checks
   assign_sections();
+  resolve_node_normals();
   resolve_contact_references();
   resolve_constraint_references();
   resolve_cyclic_references();

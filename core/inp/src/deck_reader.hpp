@@ -139,6 +139,9 @@ class DeckReader {
   void read_cyclic_tie(const KeywordLine& kw);
   void on_cyclic_symmetry_model(const KeywordLine& kw);
   void resolve_cyclic_references();
+  // normal_keywords.cpp: the normals of *NODE lines (Abaqus' fields 5-7) become *NORMAL entries
+  // of every shell at the node once the elements are known, ahead of the deck's *NORMAL lines.
+  void resolve_node_normals();
   // penetration_keywords.cpp
   void on_pressure_penetration(const KeywordLine& kw);
   void resolve_penetration_references();
@@ -193,6 +196,12 @@ class DeckReader {
   // Where each node was defined (file index into files_, line), for duplicate-id messages.
   std::vector<std::pair<int, int>> node_lines_;
   std::vector<std::string> files_;
+  struct NodeNormal {  // fields 5-7 of a *NODE line
+    int node = 0;
+    Vec3 direction{};
+    SourceLoc where;
+  };
+  std::vector<NodeNormal> node_normals_;
 };
 
 // "A, B, C and 4 more" or "none are defined" for messages.

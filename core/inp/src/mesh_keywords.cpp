@@ -43,29 +43,36 @@ void DeckReader::on_heading(const KeywordLine&) {
 namespace {
 
 // CalculiX reads a node's coordinates from fields 2-4 and defaults a missing or blank one to 0
-// (a line with the id alone places the node at the origin); it ignores any later field. Styk
-// ignores a later field only when it is blank or zero, so that no coordinate is lost to a
-// stray comma unnoticed.
-Vec3 node_coordinates(const DataLine& line) {
+// (a line with the id alone places the node at the origin); it ignores any later field. Abaqus
+// reads fields 5-7 as the direction of the normal at the node (for the shells there). Styk reads
+// that normal when it is not zero, and ignores later fields only when they are blank or zero, so
+// that no number is lost to a stray comma unnoticed.
+struct NodeLine {
   Vec3 x{0.0, 0.0, 0.0};
+  Vec3 normal{0.0, 0.0, 0.0};
+};
+
+NodeLine node_line(const DataLine& line) {
+  NodeLine out;
   for (std::size_t i = 1; i < line.fields.size(); ++i) {
-    const bool coordinate = i <= 3;
-    const std::string what = coordinate
-                                 ? std::string(1, static_cast<char>('x' + i - 1)) + " coordinate"
-                                 : "after z, ignored";
     if (line.fields[i].empty()) continue;
-    const double value = real_field(line, i, what);
-    if (coordinate) {
-      x[i - 1] = value;
-    } else if (value != 0.0) {
-      throw InputError(line.where, "*NODE data line has " + std::to_string(line.fields.size()) +
-                                       " fields, expected node id, x, y, z; field " +
-                                       std::to_string(i + 1) + " (" + line.fields[i] +
-                                       ") would be ignored, as CalculiX ignores it: check the "
-                                       "commas of this line");
+    if (i <= 3) {
+      out.x[i - 1] =
+          real_field(line, i, std::string(1, static_cast<char>('x' + i - 1)) + " coordinate");
+      continue;
     }
+    if (i <= 6) {
+      out.normal[i - 4] = real_field(line, i, "normal component n" + std::to_string(i - 3));
+      continue;
+    }
+    if (real_field(line, i, "after the normal, ignored") != 0.0)
+      throw InputError(line.where, "*NODE data line has " + std::to_string(line.fields.size()) +
+                                       " fields, expected node id, x, y, z and optionally the "
+                                       "normal nx, ny, nz; field " +
+                                       std::to_string(i + 1) + " (" + line.fields[i] +
+                                       ") would be ignored: check the commas of this line");
   }
-  return x;
+  return out;
 }
 
 }  // namespace
@@ -75,14 +82,16 @@ void DeckReader::on_node(const KeywordLine& kw) {
   while (std::optional<DataLine> line = next_data_line()) {
     if (files_.empty() || files_.back() != line->where.file) files_.push_back(line->where.file);
     const Id id = id_field(*line, 0, "node id");
-    const Vec3 x = node_coordinates(*line);
+    const NodeLine read = node_line(*line);
     const int existing = model_.node_index(id);
     if (existing >= 0) {
       const auto [f, l] = node_lines_[existing];
       throw InputError(line->where, "node " + std::to_string(id) + " is defined twice (first at " +
                                         SourceLoc{files_[f], l}.str() + ")");
     }
-    const int index = model_.add_node(id, x, line->where);
+    const int index = model_.add_node(id, read.x, line->where);
+    if (read.normal != Vec3{0.0, 0.0, 0.0})
+      node_normals_.push_back({index, read.normal, line->where});
     node_lines_.emplace_back(static_cast<int>(files_.size()) - 1, line->where.line);
     if (set) set->nodes.push_back(index);
   }

@@ -7,6 +7,7 @@
 
 #include "deck_reader.hpp"
 #include "numbers.hpp"
+#include "styk/core/shell_normals.hpp"
 
 namespace styk::inp {
 namespace {
@@ -66,6 +67,29 @@ void DeckReader::on_normal(const KeywordLine& kw) {
     throw InputError(kw.where,
                      "*NORMAL needs data lines: element or element set, node or node set, nx, "
                      "ny, nz");
+}
+
+void DeckReader::resolve_node_normals() {
+  if (node_normals_.empty()) return;
+  // Which shells take normals at each node.
+  std::vector<std::vector<int>> shells_at(model_.coords.size());
+  for (int e = 0; e < model_.element_count(); ++e) {
+    const TElement* formulation = registry_.find(model_.elements[e].type);
+    if (!formulation || !takes_nodal_normals(*formulation)) continue;
+    const int* nodes = model_.element_nodes(e);
+    for (int k = 0; k < model_.elements[e].node_count; ++k) shells_at[nodes[k]].push_back(e);
+  }
+  std::vector<UserNormal> given;
+  for (const NodeNormal& n : node_normals_) {
+    if (shells_at[n.node].empty())
+      throw InputError(n.where, "*NODE: node " + std::to_string(model_.node_ids[n.node]) +
+                                    " has a normal (fields 5-7) but belongs to no curved shell "
+                                    "element; Styk takes nodal normals for shells only (a "
+                                    "beam's second section axis is given on its *BEAM SECTION)");
+    for (const int e : shells_at[n.node]) given.push_back({e, n.node, n.direction, n.where});
+  }
+  // The deck's *NORMAL lines come later, so they win for their element and node.
+  model_.normals.insert(model_.normals.begin(), given.begin(), given.end());
 }
 
 }  // namespace styk::inp

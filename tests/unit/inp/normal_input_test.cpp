@@ -95,6 +95,37 @@ TEST(NormalInput, WrittenDeckReadsBackTheSameNormals) {
   EXPECT_EQ(back.normals[0].direction, (Vec3{0.25, -0.5, 1.0}));
 }
 
+// Abaqus' *NODE form: fields 5-7 give the normal at the node. It becomes a *NORMAL entry of
+// every shell at the node (elements 1 and 2 share node 2; the beam there takes none), ahead of
+// the deck's *NORMAL lines, which therefore win; a zero normal is no normal (CalculiX ignores
+// the fields); written back as *NORMAL lines, which ccx reads.
+TEST(NormalInput, NodeLinesCarryAbaqusNormals) {
+  std::string mesh = kMesh;
+  mesh.replace(mesh.find("2, 1., 0., 0.\n"), 14, "2, 1., 0., 0., 0., 0.1, 1.\n");
+  mesh.replace(mesh.find("3, 1., 1., 0.\n"), 14, "3, 1., 1., 0., 0., 0., 0.\n");
+  const Model m = read("node_normals.inp", mesh + "*NORMAL\n1, 2, 0., 0., 1.\n" + kStep);
+  ASSERT_EQ(m.normals.size(), 3u);
+  const int node2 = m.node_index(2);
+  for (int k = 0; k < 2; ++k) {
+    EXPECT_EQ(m.normals[k].element, k);
+    EXPECT_EQ(m.normals[k].node, node2);
+    EXPECT_EQ(m.normals[k].direction, (Vec3{0.0, 0.1, 1.0}));
+    EXPECT_EQ(m.normals[k].where.line, 3);
+  }
+  EXPECT_EQ(m.normals[2].element, 0);
+  EXPECT_EQ(m.normals[2].direction, (Vec3{0.0, 0.0, 1.0}));
+  std::ostringstream written;
+  write_inp(m, written);
+  const Model back = read("node_normals_back.inp", written.str());
+  ASSERT_EQ(back.normals.size(), 3u);
+  for (int k = 0; k < 3; ++k) EXPECT_EQ(back.normals[k].direction, m.normals[k].direction) << k;
+  // Node 11 belongs to the brick only: the normal would be lost.
+  std::string brick = kMesh;
+  brick.replace(brick.find("11, 0., 0., 5.\n"), 15, "11, 0., 0., 5., 0., 0., 1.\n");
+  expect_error("node_normal_brick.inp", brick + kStep, "11, 0., 0., 5., 0., 0., 1.",
+               "node 11 has a normal (fields 5-7) but belongs to no curved shell");
+}
+
 TEST(NormalInput, RefusesWhatItCannotUseAtTheLine) {
   const std::string mesh = kMesh;
   expect_error("normal_contact.inp", mesh + "*NORMAL, TYPE=CONTACT SURFACE\n1, 1, 0., 0., 1.\n",
