@@ -133,6 +133,24 @@ TEST_F(AtlasWarnings, IncompatibleModesOnTrapezoidsAreNotWarned) {
   EXPECT_TRUE(ring.warnings.empty());
 }
 
+// Sweep "aspect-ratio" (Timoshenko & Goodier §21 cantilever, two elements through the height,
+// 20 / ratio along the length): the fully integrated quadratic bricks shear-lock in bending as
+// the elements grow long, 4.5 % (C3D20) at ratio 10 and 22.7 % at 20, where one element spans
+// the bent length; the reduced C3D20R stays below 1e-6. No warning fires: a shape check would
+// also fire on the long thin C3D21 contact layers of every joint model, which carry no bending
+// across (docs/stability.md "What the warnings cannot see").
+TEST_F(AtlasWarnings, LongQuadraticBricksLockInBendingUnwarned) {
+  const RunRecord ten = run("aspect-ratio", "C3D20", 10);
+  EXPECT_NEAR(*ten.error_of(kStabilityMeasure), 0.0446, 0.0005);
+  EXPECT_TRUE(ten.warnings.empty());
+  for (const char* family : {"C3D20", "C3D21"}) {
+    const RunRecord twenty = run("aspect-ratio", family, 20);
+    EXPECT_NEAR(*twenty.error_of(kStabilityMeasure), 0.227, 0.001) << family;
+    EXPECT_TRUE(twenty.warnings.empty()) << family;
+  }
+  EXPECT_LT(*run("aspect-ratio", "C3D20R", 20).error_of(kStabilityMeasure), 1e-6);
+}
+
 // Sweep "thin-beam" (slenderness L/h, 8 elements, uniform load; Timoshenko beam theory, SPEC
 // §7.3): the shear-locking warning of the fully integrated 2-node beams fires from a bending
 // stiffening k G A l^2 / (12 E I) of 0.11 (solver/src/beam_warnings.cpp): silent at L/h = 3
