@@ -268,17 +268,13 @@ TEST_F(ShellRender, TriangularShellsShowTheFieldOnTheChosenFibre) {
 namespace styk::render_test {
 namespace {
 
-// A curved shell is drawn with the normals the solver uses (docs/elements.md "Nodal normals of
-// shells"): a cylindrical panel (R = 10, 40 degrees in 4 flat S4 facets of 10 degrees, length 4,
-// t = 0.5) has, at each node shared by two facets, the average of their normals, which is the
-// radius; the top and bottom faces along those shared edges therefore lie on the cylinders
-// R +- t/2 (a facet's own normal, 5 degrees off the radius, would put them (t/2)(1 - cos 5 deg)
-// = 9.5e-4 inside and 2.2e-3 rad round). Checked on every drawn vertex at a shared node's angle
-// (float vertices: 1e-5).
-TEST(ShellRenderNormals, CurvedShellsAreDrawnWithTheSolversNodalNormals) {
-  constexpr double kRadius = 10.0, kPanelLength = 4.0, kPanelThickness = 0.5;
-  constexpr int kFacets = 4;
-  const auto angle = [](int i) { return (-20.0 + 10.0 * i) * M_PI / 180.0; };
+constexpr double kRadius = 10.0, kPanelLength = 4.0, kPanelThickness = 0.5;
+constexpr int kFacets = 4;
+double angle(int i) { return (-20.0 + 10.0 * i) * M_PI / 180.0; }
+
+// A cylindrical panel (R = 10, 40 degrees in 4 flat S4 facets of 10 degrees, length 4, t = 0.5),
+// nodes (i, j) with id j * 5 + i + 1 at angle(i); `model_extra` goes after the section.
+std::string panel_deck(const std::string& name, const std::string& model_extra = "") {
   std::ostringstream deck;
   deck.precision(17);
   deck << "*NODE, NSET=NALL\n";
@@ -291,12 +287,24 @@ TEST(ShellRenderNormals, CurvedShellsAreDrawnWithTheSolversNodalNormals) {
     deck << i + 1 << ", " << i + 1 << ", " << i + 6 << ", " << i + 7 << ", " << i + 2 << "\n";
   deck << "*MATERIAL, NAME=STEEL\n*ELASTIC\n210000., 0.3\n*SHELL SECTION, ELSET=PANEL, "
        << "MATERIAL=STEEL\n"
-       << kPanelThickness << "\n*BOUNDARY\n1, 1, 6\n*STEP\n*STATIC\n*END STEP\n";
-  const std::string path = (test::test_scratch_dir("shell_render") / "panel.inp").string();
+       << kPanelThickness << "\n"
+       << model_extra << "*BOUNDARY\n1, 1, 6\n*STEP\n*STATIC\n*END STEP\n";
+  const std::string path = (test::test_scratch_dir("shell_render") / name).string();
   std::ofstream(path) << deck.str();
+  return path;
+}
+
+// A curved shell is drawn with the normals the solver uses (docs/elements.md "Nodal normals of
+// shells"): a cylindrical panel (R = 10, 40 degrees in 4 flat S4 facets of 10 degrees, length 4,
+// t = 0.5) has, at each node shared by two facets, the average of their normals, which is the
+// radius; the top and bottom faces along those shared edges therefore lie on the cylinders
+// R +- t/2 (a facet's own normal, 5 degrees off the radius, would put them (t/2)(1 - cos 5 deg)
+// = 9.5e-4 inside and 2.2e-3 rad round). Checked on every drawn vertex at a shared node's angle
+// (float vertices: 1e-5).
+TEST(ShellRenderNormals, CurvedShellsAreDrawnWithTheSolversNodalNormals) {
   PluginLibraries libraries;
   const ElementRegistry registry = make_test_registry(libraries);
-  const Model model = read_inp(path, registry);
+  const Model model = read_inp(panel_deck("panel.inp"), registry);
   render::RenderOptions o;
   o.width = 320, o.height = 240;
   o.deform.kind = render::DeformSpec::Kind::None;
@@ -317,6 +325,46 @@ TEST(ShellRenderNormals, CurvedShellsAreDrawnWithTheSolversNodalNormals) {
   }
   // Both faces of both facets at each of the 3 shared edges, each edge a row of grid points.
   EXPECT_GE(checked, 3 * 2 * 2 * 2);
+}
+
+// The normals a deck gives (*NORMAL, or *NODE fields 5-7) travel in the results file
+// (/model/shell_normals, docs/results.md), so a picture drawn from the file alone has the slabs
+// the solver used: here node 3 (shared by facets 2 and 3) gets a normal tilted 10 degrees off the
+// radius; written and read back, the normals are the same and every drawn vertex is where the
+// deck's model puts it (float vertices: 1e-6), while without the group they would move by
+// (t/2) sin 10 deg = 0.043 at that node.
+TEST(ShellRenderNormals, AResultsFileKeepsTheGivenNormals) {
+  PluginLibraries libraries;
+  const ElementRegistry registry = make_test_registry(libraries);
+  const double tilt = angle(2) + 10.0 * M_PI / 180.0;
+  std::ostringstream normal;
+  normal.precision(17);
+  normal << "*NORMAL\nPANEL, 3, " << std::sin(tilt) << ", 0., " << std::cos(tilt) << "\n";
+  Model model = read_inp(panel_deck("panel_given.inp", normal.str()), registry);
+  ASSERT_EQ(model.normals.size(), 2u);
+  Results results = run_static_analysis(model, registry, SolveOptions{}, nullptr, nullptr);
+  const std::string path =
+      (test::test_scratch_dir("shell_render") / "panel_given.styk.h5").string();
+  write_results_file(path, model, results);
+  const ResultsFileContents file = read_results_file(path);
+  ASSERT_EQ(file.model.normals.size(), model.normals.size());
+  for (std::size_t k = 0; k < model.normals.size(); ++k) {
+    EXPECT_EQ(file.model.normals[k].element, model.normals[k].element);
+    EXPECT_EQ(file.model.normals[k].node, model.normals[k].node);
+    EXPECT_EQ(file.model.normals[k].direction, model.normals[k].direction);
+  }
+  render::RenderOptions o;
+  o.width = 320, o.height = 240;
+  o.deform.kind = render::DeformSpec::Kind::None;
+  const Frame from_deck = render::RenderJob(model, registry, nullptr, o).frame();
+  const Frame from_file = render::RenderJob(file.model, registry, nullptr, o).frame();
+  ASSERT_EQ(from_file.geometry.face_vertices.size(), from_deck.geometry.face_vertices.size());
+  for (std::size_t v = 0; v < from_deck.geometry.face_vertices.size(); ++v)
+    for (int d = 0; d < 3; ++d)
+      EXPECT_NEAR(from_file.geometry.face_vertices[v].position[d] + from_file.geometry.origin[d],
+                  from_deck.geometry.face_vertices[v].position[d] + from_deck.geometry.origin[d],
+                  1e-6)
+          << v;
 }
 
 }  // namespace

@@ -201,6 +201,7 @@ ResultsFileContents read_contents(hid_t file, const std::string& path) {
     read_sets(mesh.get(), where, contents.model);
     io::read_beam_sections(mesh.get(), where, contents.model);
     io::read_shell_sections(mesh.get(), where, contents.model);
+    io::read_shell_normals(mesh.get(), where, contents.model);
   }
   read_steps(file, contents.model, contents.results);
   return contents;

@@ -132,6 +132,7 @@ void write_mesh(hid_t file, const Model& model) {
   }
   io::write_beam_sections(mesh.get(), model);
   io::write_shell_sections(mesh.get(), model);
+  io::write_shell_normals(mesh.get(), model);
   const h5::Handle sets = h5::create_group(mesh.get(), "sets");
   const h5::Handle node_sets = h5::create_group(sets.get(), "nodes");
   for (const auto& [name, set] : model.nsets)

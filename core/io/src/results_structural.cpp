@@ -227,4 +227,46 @@ void read_shell_sections(hid_t mesh, const SourceLoc& where, Model& model) {
   }
 }
 
+void write_shell_normals(hid_t mesh, const Model& model) {
+  if (model.normals.empty()) return;
+  std::vector<std::int64_t> elements, nodes;
+  std::vector<double> directions;
+  for (const UserNormal& n : model.normals) {
+    elements.push_back(n.element);
+    nodes.push_back(n.node);
+    directions.insert(directions.end(), n.direction.begin(), n.direction.end());
+  }
+  const h5::Handle group = h5::create_group(mesh, "shell_normals");
+  h5::write_int64(group.get(), "elements", elements);
+  h5::write_int64(group.get(), "nodes", nodes);
+  h5::write_dataset(group.get(), "directions", H5T_IEEE_F64LE, H5T_NATIVE_DOUBLE, directions.data(),
+                    elements.size(), 3);
+}
+
+void read_shell_normals(hid_t mesh, const SourceLoc& where, Model& model) {
+  if (!h5::has_link(mesh, "shell_normals")) return;
+  const h5::Handle group = h5::open_group(mesh, "shell_normals");
+  const std::string label = "/model/shell_normals";
+  std::vector<std::int64_t> elements, nodes;
+  std::vector<double> directions;
+  h5::read_int64(group.get(), "elements", elements);
+  h5::read_int64(group.get(), "nodes", nodes);
+  const std::uint64_t rows = h5::read_doubles(group.get(), "directions", 3, directions);
+  if (elements.size() != rows || nodes.size() != rows)
+    corrupt(label + ": its datasets differ in length");
+  for (std::uint64_t i = 0; i < rows; ++i) {
+    const std::int64_t e = elements[i], node = nodes[i];
+    if (e < 0 || e >= model.element_count() || node < 0 || node >= model.node_count())
+      corrupt(label + " row " + std::to_string(i) + ": element or node index out of range");
+    const int* first = model.element_nodes(static_cast<int>(e));
+    const int* last = first + model.elements[static_cast<std::size_t>(e)].node_count;
+    if (std::find(first, last, static_cast<int>(node)) == last)
+      corrupt(label + " row " + std::to_string(i) + ": the node is not one of the element's");
+    const Vec3 direction{directions[3 * i], directions[3 * i + 1], directions[3 * i + 2]};
+    if (!(std::hypot(direction[0], direction[1], direction[2]) > 0.0))
+      corrupt(label + " row " + std::to_string(i) + ": the normal is zero or not finite");
+    model.normals.push_back({static_cast<int>(e), static_cast<int>(node), direction, where});
+  }
+}
+
 }  // namespace styk::io

@@ -39,4 +39,11 @@ void write_shell_sections(hid_t mesh, const Model& model);
 // Rebuilds those sections (no material) and assigns them to the elements of their sets.
 void read_shell_sections(hid_t mesh, const SourceLoc& where, Model& model);
 
+// Group "shell_normals" under `mesh` with one row per given nodal normal of a shell (*NORMAL, or
+// fields 5-7 of *NODE; none: no group), so that the renderer draws the normals the solver used.
+void write_shell_normals(hid_t mesh, const Model& model);
+
+// Rebuilds Model::normals in their order (a later row wins, as a later *NORMAL line does).
+void read_shell_normals(hid_t mesh, const SourceLoc& where, Model& model);
+
 }  // namespace styk::io
