@@ -5,12 +5,11 @@
 #include <map>
 #include <utility>
 
-#include <Eigen/Eigenvalues>
-
 #include "assembly.hpp"
 #include "section_extent.hpp"
 #include "styk/core/beam_section.hpp"
 #include "warning_format.hpp"
+#include "zero_energy_modes.hpp"
 
 namespace styk::solver_detail {
 namespace {
@@ -124,20 +123,12 @@ int spurious_beam_modes(const TElement& element, RuleKind kind) {
   }
   // Only the dofs the type stiffens (planar beams: ux, uy, rz).
   const DofSet active = element.active_dofs();
-  std::vector<int> kept;
+  std::vector<Eigen::Index> kept;
   for (int node = 0; node < nodes; ++node)
     for (int d = 0; d < 6; ++d)
       if (active[d]) kept.push_back(6 * node + d);
-  Eigen::MatrixXd Kr(kept.size(), kept.size());
-  for (std::size_t i = 0; i < kept.size(); ++i)
-    for (std::size_t j = 0; j < kept.size(); ++j) Kr(i, j) = K(kept[i], kept[j]);
-  const Eigen::SelfAdjointEigenSolver<Eigen::MatrixXd> eigen(Kr, Eigen::EigenvaluesOnly);
-  const Eigen::VectorXd& values = eigen.eigenvalues();
-  const double largest = values.cwiseAbs().maxCoeff();
-  int zero = 0;
-  for (Eigen::Index k = 0; k < values.size(); ++k) zero += std::abs(values[k]) < 1e-9 * largest;
   const int rigid = active[2] ? 6 : 3;
-  return std::max(0, zero - rigid);
+  return std::max(0, zero_eigenvalue_count(K, kept) - rigid);
 }
 
 std::vector<std::string> beam_warnings(const Model& model, const PreparedModel& prepared) {

@@ -7,12 +7,13 @@
 #include <utility>
 #include <vector>
 
-#include <Eigen/Eigenvalues>
+#include <Eigen/Geometry>
 #include <Eigen/QR>
 
 #include "assembly.hpp"
 #include "shell_locking.hpp"
 #include "shell_warnings.hpp"
+#include "zero_energy_modes.hpp"
 
 namespace styk::solver_detail {
 namespace {
@@ -133,12 +134,7 @@ int supported_shell_mesh_modes(const Model& model, const PreparedModel& prepared
   for (const auto& [node, place] : slot)
     for (int d = 0; d < 6; ++d)
       (held_dofs.count(6L * node + d) ? held : free).push_back(6 * place + d);
-  const Eigen::MatrixXd Kff = K(free, free);
-  const Eigen::SelfAdjointEigenSolver<Eigen::MatrixXd> eigen(Kff, Eigen::EigenvaluesOnly);
-  const Eigen::VectorXd& values = eigen.eigenvalues();
-  const double largest = values.size() > 0 ? values.cwiseAbs().maxCoeff() : 0.0;
-  int zero = 0;
-  for (Eigen::Index k = 0; k < values.size(); ++k) zero += std::abs(values[k]) <= 1e-9 * largest;
+  const int zero = zero_eigenvalue_count(K, free);
   // The rigid motions the supports leave free: 6 minus the rank of their held rows.
   int held_rank = 0;
   if (!held.empty()) {

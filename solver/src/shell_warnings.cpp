@@ -7,28 +7,17 @@
 #include <map>
 #include <utility>
 
-#include <Eigen/Eigenvalues>
-
 #include "assembly.hpp"
 #include "shell_locking.hpp"
 #include "shell_mesh_modes.hpp"
 #include "warning_format.hpp"
+#include "zero_energy_modes.hpp"
 
 namespace styk::solver_detail {
 namespace {
 
 bool is_shell(const TElement& element) {
   return element.section_measure() == SectionMeasure::Shell;
-}
-
-// Zero eigenvalues beyond the six rigid motions of a dense symmetric stiffness matrix.
-int modes_beyond_rigid(const Eigen::MatrixXd& K) {
-  const Eigen::SelfAdjointEigenSolver<Eigen::MatrixXd> eigen(K, Eigen::EigenvaluesOnly);
-  const Eigen::VectorXd& values = eigen.eigenvalues();
-  const double largest = values.cwiseAbs().maxCoeff();
-  int zero = 0;
-  for (Eigen::Index k = 0; k < values.size(); ++k) zero += std::abs(values[k]) < 1e-9 * largest;
-  return std::max(0, zero - 6);
 }
 
 // Folds (nodes whose shells keep their own normals) and given normals far from their element's.
@@ -102,14 +91,11 @@ int spurious_shell_modes(const TElement& element, RuleKind kind, int cells) {
                         order * y0 + static_cast<int>(std::lround(order * (xi[1] + 1.0) / 2.0))});
     add_element(points);
   }
-  std::vector<int> kept;  // the grid points the type has (no centre nodes for 8-node elements)
+  std::vector<Eigen::Index> kept;  // the grid points the type has (no centre node in S8)
   for (int p = 0; p < side * side; ++p)
     if (used[p])
       for (int d = 0; d < 6; ++d) kept.push_back(6 * p + d);
-  Eigen::MatrixXd Kr(kept.size(), kept.size());
-  for (std::size_t i = 0; i < kept.size(); ++i)
-    for (std::size_t j = 0; j < kept.size(); ++j) Kr(i, j) = K(kept[i], kept[j]);
-  return modes_beyond_rigid(Kr);
+  return std::max(0, zero_eigenvalue_count(K, kept) - 6);
 }
 
 std::vector<std::string> shell_warnings(const Model& model, const PreparedModel& prepared) {

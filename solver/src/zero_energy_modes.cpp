@@ -131,6 +131,16 @@ Patch patch_of(const TElement& element) {
 
 }  // namespace
 
+int zero_eigenvalue_count(const Eigen::MatrixXd& K, const std::vector<Eigen::Index>& kept) {
+  if (kept.empty()) return 0;
+  const Eigen::SelfAdjointEigenSolver<Eigen::MatrixXd> eigen(K(kept, kept), Eigen::EigenvaluesOnly);
+  const Eigen::VectorXd& values = eigen.eigenvalues();
+  const double largest = values.cwiseAbs().maxCoeff();
+  int zero = 0;
+  for (Eigen::Index k = 0; k < values.size(); ++k) zero += std::abs(values[k]) < 1e-9 * largest;
+  return zero;
+}
+
 int spurious_zero_energy_modes(const TElement& element, RuleKind kind) {
   // Beams and shells carry rotations; their own checks (beam_warnings, shell_warnings) count
   // their modes.
@@ -168,18 +178,10 @@ int spurious_zero_energy_modes(const TElement& element, RuleKind kind) {
   }
   // Only the displacements the type stiffens: the others are no modes, they are not there.
   const DofSet active = element.active_dofs();
-  std::vector<int> kept;
+  std::vector<Eigen::Index> kept;
   for (int dof = 0; dof < dofs; ++dof)
     if (active[dof % 3]) kept.push_back(dof);
-  Eigen::MatrixXd Kr(kept.size(), kept.size());
-  for (std::size_t r = 0; r < kept.size(); ++r)
-    for (std::size_t c = 0; c < kept.size(); ++c) Kr(r, c) = K(kept[r], kept[c]);
-  const Eigen::SelfAdjointEigenSolver<Eigen::MatrixXd> eigen(Kr, Eigen::EigenvaluesOnly);
-  const Eigen::VectorXd& values = eigen.eigenvalues();
-  const double largest = values.cwiseAbs().maxCoeff();
-  int zero = 0;
-  for (Eigen::Index k = 0; k < values.size(); ++k) zero += std::abs(values[k]) < 1e-9 * largest;
-  return std::max(0, zero - patch.rigid_modes);
+  return std::max(0, zero_eigenvalue_count(K, kept) - patch.rigid_modes);
 }
 
 }  // namespace styk::solver_detail

@@ -7,9 +7,18 @@
 // single-element modes of some types (C3D20R; C3D6's twist about its axis) do not spread.
 #pragma once
 
+#include <vector>
+
+#include <Eigen/Core>
+
 #include "styk/core/element.hpp"
 
 namespace styk::solver_detail {
+
+// The zero eigenvalues (below 1e-9 of the largest in magnitude) of the symmetric matrix
+// K(kept, kept): the zero-energy modes of a stiffness over the dofs in `kept`. The beam and
+// shell warnings count theirs with it too.
+int zero_eigenvalue_count(const Eigen::MatrixXd& K, const std::vector<Eigen::Index>& kept);
 
 // 0 for line elements.
 int spurious_zero_energy_modes(const TElement& element, RuleKind kind = RuleKind::Full);
