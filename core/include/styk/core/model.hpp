@@ -396,9 +396,10 @@ struct PressureOverclosure {
 
 struct SurfaceInteraction {          // *SURFACE INTERACTION, NAME=
   std::string name;                  // upper-case
-  PressureOverclosure behavior;      // *SURFACE BEHAVIOR (default: hard, exact)
   std::optional<Friction> friction;  // none: frictionless
   SourceLoc where;
+  PressureOverclosure behavior;  // *SURFACE BEHAVIOR (default: hard, exact); last, so that
+                                 // aggregate initialisation {name, friction, where} stays valid
 };
 
 struct ContactPair {  // one data line of *CONTACT PAIR
