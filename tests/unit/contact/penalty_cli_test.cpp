@@ -102,6 +102,37 @@ TEST(PenaltyCli, TiedPenaltyCarriesTension) {
   EXPECT_NE(s.dat.find("       law penalty TIED K= 1.000000E+04"), std::string::npos) << s.dat;
 }
 
+// EXPONENTIAL is read but not solved, TIED with *FRICTION makes no sense: `styk solve` stops at
+// the card (file:line, exit code 1) and writes nothing.
+TEST(PenaltyCli, LawsNotSolvedAreRefusedByName) {
+  const std::string linear = read_file(kDecks + "penalty_linear_blocks.inp");
+  const std::string card = "*SURFACE BEHAVIOR, PRESSURE-OVERCLOSURE=LINEAR\n1.e4, 1.e-8\n";
+  ASSERT_NE(linear.find(card), std::string::npos);
+  const std::pair<std::string, std::string> cases[] = {
+      {"*SURFACE BEHAVIOR, PRESSURE-OVERCLOSURE=EXPONENTIAL\n1.e-4, 0.1\n",
+       "PRESSURE-OVERCLOSURE=EXPONENTIAL is read and written but Styk does not solve it"},
+      {"*SURFACE BEHAVIOR, PRESSURE-OVERCLOSURE=TIED\n1.e4\n*FRICTION\n0.2\n",
+       "*FRICTION does not apply to it"}};
+  int k = 0;
+  for (const auto& [replacement, message] : cases) {
+    const std::string dir = scratch_dir("penalty_refused_" + std::to_string(k++));
+    std::string deck = linear;
+    deck.replace(deck.find(card), card.size(), replacement);
+    { std::ofstream(dir + "/refused.inp") << deck; }
+    const CommandResult r = run_command(styk_executable() + " solve refused.inp -o out", dir);
+    EXPECT_EQ(r.exit_code, 1) << r.err;
+    EXPECT_NE(r.err.find(message), std::string::npos) << r.err;
+    const std::string keyword = replacement.find("*FRICTION") != std::string::npos
+                                    ? std::string("*FRICTION\n")
+                                    : replacement.substr(0, replacement.find('\n') + 1);
+    int line = 1;
+    for (std::size_t i = 0; i < deck.find(keyword); ++i) line += deck[i] == '\n';
+    EXPECT_NE(r.err.find("refused.inp:" + std::to_string(line) + ":"), std::string::npos) << r.err;
+    EXPECT_FALSE(std::ifstream(dir + "/out/refused.dat").good());
+    EXPECT_FALSE(std::ifstream(dir + "/out/refused.styk.h5").good());
+  }
+}
+
 // CalculiX 2.20 solves tests/inputs/contact/penalty_linear_eccentric.inp unchanged (node-to-face
 // penalty contact, LINEAR). Its springs live on the deformed geometry (area and normal), Styk's on
 // the undeformed one (small displacements), a difference of the order of the strains: with E = 1e8

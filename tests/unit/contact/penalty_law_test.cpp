@@ -9,6 +9,8 @@
 
 #include "styk/contact/active_set.hpp"
 #include "styk/contact/friction_law.hpp"
+#include "styk/contact/penalty_law.hpp"
+#include "styk/core/diagnostics.hpp"
 
 namespace styk::contact {
 namespace {
@@ -122,6 +124,45 @@ TEST(PenaltyLaw, SlipTangentWithPenaltyMatchesFiniteDifferences) {
   EXPECT_EQ(rows.Q(0, 0), 1.0);
   EXPECT_EQ(rows.D(0, 0), -0.2);
   EXPECT_EQ(rows.r[0], 0.3);
+}
+
+// The spring of one node is K A (A = 1 for a node surface, whose "pressure" is a force); a face
+// node with a non-positive area (a C3D20 face corner, -1/12 of the unit square) is refused by name.
+TEST(PenaltyLaw, SpringStiffnessIsSlopeTimesArea) {
+  SurfaceInteraction interaction;
+  interaction.name = "PEN";
+  interaction.behavior.law = PressureOverclosure::Law::Linear;
+  interaction.behavior.slope = 4e5;
+  interaction.behavior.where = {"deck.inp", 12};
+  Surface faces;
+  faces.name = "SLAVE";
+  ContactConstraint c;
+  c.area = 0.25;
+  apply_penalty_law(interaction, faces, "7", c);
+  EXPECT_EQ(c.penalty_stiffness, 1e5);
+  EXPECT_EQ(c.penalty_compliance(), 1e-5);
+  EXPECT_FALSE(c.bonded);
+  Surface nodes = faces;
+  nodes.kind = Surface::Kind::Nodes;
+  c.area = 0.0;
+  apply_penalty_law(interaction, nodes, "7", c);
+  EXPECT_EQ(c.penalty_stiffness, 4e5);
+  c.area = -1.0 / 12.0;
+  try {
+    apply_penalty_law(interaction, faces, "7", c);
+    ADD_FAILURE() << "a negative area was accepted";
+  } catch (const InputError& e) {
+    EXPECT_EQ(e.where().line, 12);
+    EXPECT_NE(e.message().find("slave node 7 of surface SLAVE has the nodal area"),
+              std::string::npos)
+        << e.what();
+  }
+  interaction.behavior.law = PressureOverclosure::Law::Tied;
+  c.area = 1.0;
+  apply_penalty_law(interaction, faces, "7", c);
+  EXPECT_TRUE(c.bonded);
+  EXPECT_EQ(normal_law_label(interaction.behavior), "penalty TIED K=400000");
+  EXPECT_EQ(normal_law_label(PressureOverclosure{}), "exact (hard)");
 }
 
 }  // namespace
