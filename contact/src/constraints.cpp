@@ -1,4 +1,5 @@
 #include "styk/contact/constraints.hpp"
+#include "styk/contact/penalty_law.hpp"
 
 #include <Eigen/Geometry>
 
@@ -67,6 +68,12 @@ Eigen::Vector3d position(const Model& model, int node) {
 
 FrictionLaw friction_law(const SurfaceInteraction& interaction) {
   FrictionLaw law;
+  if (interaction.behavior.law == PressureOverclosure::Law::Tied) {
+    // Springs in all three directions, unscaled like the tied rows of ROUGH.
+    law.kind = FrictionLaw::Kind::Tied;
+    law.mu1 = law.mu2 = 1.0;
+    return law;
+  }
   if (!interaction.friction) return law;
   const Friction& f = *interaction.friction;
   if (f.kind == Friction::Kind::Rough) {
@@ -229,6 +236,7 @@ std::vector<ContactConstraint> build_contact_constraints(const Model& model,
     if (interaction == model.surface_interactions.end())
       throw InputError(pair.where, "*CONTACT PAIR names interaction " + pair.interaction +
                                        ", which is not defined");
+    check_penalty_law(interaction->second);
     const FrictionLaw law = friction_law(interaction->second);
     const Orientation* orientation = nullptr;
     if (interaction->second.friction && !interaction->second.friction->orientation.empty()) {
@@ -272,6 +280,8 @@ std::vector<ContactConstraint> build_contact_constraints(const Model& model,
       c.slave = node;
       c.law = law;
       c.area = s.area;
+      apply_penalty_law(interaction->second, slave_surface, std::to_string(model.node_ids[node]),
+                        c);
       const Eigen::Vector3d xs = position(model, node);
       bool have_normal = !s.normal_sum.isZero();
       if (have_normal) c.normal = s.normal_sum.normalized();

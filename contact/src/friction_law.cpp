@@ -5,7 +5,10 @@
 namespace styk::contact {
 namespace {
 
-double normal_indicator(const LocalPoint& p) { return p.lambda[0] + p.c_n * (p.d[0] - p.gap0); }
+// The overclosure beyond what the penalty spring carries: 0 on a closed node at a solution.
+double normal_indicator(const LocalPoint& p) {
+  return p.lambda[0] + p.c_n * (p.d[0] - p.gap0 - p.compliance * p.lambda[0]);
+}
 
 // Tangential part with the components that do not take part masked to zero.
 Eigen::Vector2d masked(const LocalPoint& p, const Eigen::Vector3d& v) {
@@ -33,6 +36,7 @@ const char* status_name(NodeStatus status) {
 }
 
 NodeStatus classify(const LocalPoint& p) {
+  if (p.bonded) return NodeStatus::Stick;
   const double b = normal_indicator(p);
   if (!(b > p.eps)) return NodeStatus::Open;
   // Frictionless closed nodes slide freely: "slip" with no tangential force.
@@ -52,9 +56,15 @@ LocalRows linearise(const LocalPoint& p, NodeStatus status) {
     rows.D.setIdentity();
     return rows;
   }
-  rows.Q(0, 0) = 1.0;  // d_n = gap0
+  rows.Q(0, 0) = 1.0;  // d_n - e lambda_n = gap0
+  rows.D(0, 0) = -p.compliance;
   rows.r[0] = p.gap0;
-  if (status == NodeStatus::Stick) {
+  if (p.bonded) {
+    for (int k = 1; k < 3; ++k) {
+      rows.Q(k, k) = 1.0;  // d_t - e lambda_t = 0: a spring from the initial position
+      rows.D(k, k) = -p.compliance;
+    }
+  } else if (status == NodeStatus::Stick) {
     for (int k = 1; k < 3; ++k) {
       rows.Q(k, k) = 1.0;  // d_t = d_t_ref
       rows.r[k] = p.d_ref[k];
@@ -70,7 +80,8 @@ LocalRows linearise(const LocalPoint& p, NodeStatus status) {
     const Eigen::Vector2d e = xi / length;
     const Eigen::Matrix2d P = Eigen::Matrix2d::Identity() - e * e.transpose();
     const Eigen::Vector2d dref = masked(p, p.d_ref);
-    rows.D.block<2, 1>(1, 0) = -e;
+    // db = (1 - c_n e_pen) d lambda_n + c_n d d_n (e_pen: the penalty compliance).
+    rows.D.block<2, 1>(1, 0) = -(1.0 - p.c_n * p.compliance) * e;
     rows.D.block<2, 2>(1, 1) = Eigen::Matrix2d::Identity() - beta * P;
     rows.Q.block<2, 1>(1, 0) = -p.c_n * e;
     rows.Q.block<2, 2>(1, 1) = -beta * p.c_t * P;
@@ -93,6 +104,13 @@ LocalRows linearise(const LocalPoint& p, NodeStatus status) {
 
 Eigen::Vector3d complementarity_residual(const LocalPoint& p) {
   Eigen::Vector3d residual = Eigen::Vector3d::Zero();
+  if (p.bonded) {
+    // lambda = (d - gap0 n) / e in every live component, in force units.
+    residual[0] = p.lambda[0] - (p.d[0] - p.gap0) / p.compliance;
+    for (int k = 1; k < 3; ++k)
+      if (p.live[k]) residual[k] = p.lambda[k] - p.d[k] / p.compliance;
+    return residual;
+  }
   const double b = normal_indicator(p);
   residual[0] = p.lambda[0] - std::max(0.0, b);
   if (!has_tangential(p)) return residual;

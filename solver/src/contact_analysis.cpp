@@ -31,6 +31,7 @@
 #include "stress_averaging.hpp"
 #include "styk/contact/active_set.hpp"
 #include "styk/contact/contact_results.hpp"
+#include "styk/contact/penalty_law.hpp"
 #include "styk/contact/penetration.hpp"
 #include "thermal_load.hpp"
 
@@ -127,6 +128,10 @@ ContactModel check_contact_model(const Model& model, const ElementRegistry& regi
           "slave node " + std::to_string(model.node_ids[c.slave]) + " belongs to no element");
   phases.info("contact: " + std::to_string(out.constraints.size()) + " constraints in " +
               std::to_string(model.contact_pairs.size()) + " pairs");
+  for (const ContactPair& pair : model.contact_pairs)
+    phases.info(
+        "contact pair " + pair.slave + "/" + pair.master + ": normal law " +
+        contact::normal_law_label(model.surface_interactions.at(pair.interaction).behavior));
   return out;
 }
 

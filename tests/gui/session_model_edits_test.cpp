@@ -104,6 +104,21 @@ TEST_F(ModelEditTest, ContactPairRefusals) {
             "interaction FIT exists already; choose another name");
 }
 
+// The contact form edits friction only: a pair read with a penalty law keeps it when edited.
+TEST_F(ModelEditTest, EditContactPairKeepsThePenaltyLaw) {
+  apply(contact_command(model, fit()));
+  model.surface_interactions.at("FIT").behavior.law = PressureOverclosure::Law::Linear;
+  model.surface_interactions.at("FIT").behavior.slope = 5e5;
+  ContactInput in = contact_input_of(model, 0);
+  in.mu = 0.3;
+  apply(contact_command(model, in, 0));
+  const SurfaceInteraction& i = model.surface_interactions.at("FIT");
+  EXPECT_EQ(i.behavior.law, PressureOverclosure::Law::Linear);
+  EXPECT_EQ(i.behavior.slope, 5e5);
+  ASSERT_TRUE(i.friction);
+  EXPECT_DOUBLE_EQ(i.friction->mu, 0.3);
+}
+
 TEST_F(ModelEditTest, EditContactPairRoughWithInterference) {
   apply(contact_command(model, fit()));
   ContactInput in = contact_input_of(model, 0);

@@ -120,12 +120,81 @@ void DeckReader::on_surface_behavior(const KeywordLine& kw) {
     throw InputError(kw.where, kw.label() +
                                    " must follow *SURFACE INTERACTION (it belongs to the "
                                    "interaction defined just above it)");
-  const Parameter* law = kw.find("PRESSURE-OVERCLOSURE");
-  if (normalize_name(law->value) != "HARD")
-    throw InputError(kw.where, "PRESSURE-OVERCLOSURE=" + law->value +
-                                   " is not supported: Styk enforces contact exactly (hard "
-                                   "contact, no penetration); use PRESSURE-OVERCLOSURE=HARD");
-  // Hard contact is what Styk does for every interaction; nothing to store.
+  SurfaceInteraction& interaction = model_.surface_interactions.at(interaction_);
+  if (interaction.behavior.where.line > 0)
+    throw InputError(kw.where, "surface interaction " + interaction.name +
+                                   " already has *SURFACE BEHAVIOR (at " +
+                                   interaction.behavior.where.str() + ")");
+  interaction.behavior = read_pressure_overclosure(kw);
+}
+
+namespace {
+
+double positive_field(const DataLine& line, std::size_t index, const std::string& what) {
+  const double value = real_field(line, index, what);
+  if (!(value > 0.0))
+    throw InputError(line.where, what + " must be positive, read " + line.fields[index]);
+  return value;
+}
+
+bool field_given(const DataLine& line, std::size_t index) {
+  return line.fields.size() > index && !line.fields[index].empty();
+}
+
+}  // namespace
+
+// CalculiX's data lines: LINEAR "K, sigma_inf, c0" (sigma_inf and c0 only for node-to-face
+// contact, c0 defaulting to 1e-3), EXPONENTIAL "c0, p0", TIED "K"; HARD none.
+PressureOverclosure DeckReader::read_pressure_overclosure(const KeywordLine& kw) {
+  using Law = PressureOverclosure::Law;
+  PressureOverclosure behavior;
+  behavior.where = kw.where;
+  const std::string law = normalize_name(kw.find("PRESSURE-OVERCLOSURE")->value);
+  if (law == "HARD") {
+    if (std::optional<DataLine> line = next_data_line())
+      throw InputError(line->where,
+                       "PRESSURE-OVERCLOSURE=HARD takes no data line (Styk enforces hard contact "
+                       "exactly); penalty parameters belong to LINEAR, EXPONENTIAL or TIED");
+    return behavior;
+  }
+  if (law == "LINEAR") {
+    behavior.law = Law::Linear;
+    const std::optional<DataLine> line = single_data_line(kw, true, "K [, sigma_inf [, c0]]");
+    expect_fields(*line, 1, 3, "K [, sigma_inf [, c0]]");
+    behavior.slope = positive_field(*line, 0, "the slope K of the pressure-overclosure curve");
+    if (field_given(*line, 1)) {
+      const double sigma = real_field(*line, 1, "sigma_inf (tension at large clearances)");
+      if (sigma < 0.0)
+        throw InputError(line->where,
+                         "sigma_inf (tension at large clearances) must not be "
+                         "negative, read " +
+                             line->fields[1]);
+      behavior.sigma_inf = sigma;
+    }
+    if (field_given(*line, 2)) behavior.c0 = positive_field(*line, 2, "c0 (clearance factor)");
+    return behavior;
+  }
+  if (law == "EXPONENTIAL") {
+    behavior.law = Law::Exponential;
+    const std::optional<DataLine> line = single_data_line(kw, true, "c0, p0");
+    expect_fields(*line, 2, 2, "c0, p0");
+    behavior.c0 = positive_field(*line, 0, "c0 (clearance at which the pressure is 1 % of p0)");
+    behavior.p0 = positive_field(*line, 1, "p0 (contact pressure at zero clearance)");
+    return behavior;
+  }
+  if (law == "TIED") {
+    behavior.law = Law::Tied;
+    const std::optional<DataLine> line = single_data_line(kw, true, "K");
+    expect_fields(*line, 1, 1, "K");
+    behavior.slope = positive_field(*line, 0, "the slope K of the pressure-overclosure curve");
+    return behavior;
+  }
+  throw InputError(kw.where, "PRESSURE-OVERCLOSURE=" + kw.find("PRESSURE-OVERCLOSURE")->value +
+                                 " is not supported; expected HARD (exact contact, the "
+                                 "default), LINEAR, EXPONENTIAL or TIED" +
+                                 (law == "TABULAR" ? " (TABULAR pressure-overclosure tables are "
+                                                     "not supported)"
+                                                   : ""));
 }
 
 void DeckReader::on_friction(const KeywordLine& kw) {
@@ -252,8 +321,8 @@ void DeckReader::on_contact_print(const KeywordLine& kw) {
         throw InputError(line->where,
                          "output variable " + quote(field) + " is not supported by " + kw.label() +
                              "; Styk writes " + kContactVariables +
-                             (var == "CELS" ? " (contact elastic energy is zero: Styk enforces "
-                                              "contact exactly, without penalty springs)"
+                             (var == "CELS" ? " (Styk does not write the contact elastic "
+                                              "energy)"
                                             : ""));
       if (std::find(request.vars.begin(), request.vars.end(), var) == request.vars.end())
         request.vars.push_back(var);

@@ -28,11 +28,34 @@ void write_surfaces(const Model& model, std::ostream& out) {
   }
 }
 
+void write_behavior(const PressureOverclosure& b, std::ostream& out) {
+  const auto& n = shortest_number;
+  out << "*SURFACE BEHAVIOR, PRESSURE-OVERCLOSURE=";
+  switch (b.law) {
+    case PressureOverclosure::Law::Hard:
+      out << "HARD\n";
+      return;
+    case PressureOverclosure::Law::Linear:
+      out << "LINEAR\n" << n(b.slope);
+      // CalculiX reads the fields by position: an empty sigma_inf keeps c0 in the third field.
+      if (b.sigma_inf || b.c0) out << ", " << (b.sigma_inf ? n(*b.sigma_inf) : std::string());
+      if (b.c0) out << ", " << n(*b.c0);
+      out << '\n';
+      return;
+    case PressureOverclosure::Law::Exponential:
+      out << "EXPONENTIAL\n" << n(b.c0.value_or(0.0)) << ", " << n(b.p0) << '\n';
+      return;
+    case PressureOverclosure::Law::Tied:
+      out << "TIED\n" << n(b.slope) << '\n';
+      return;
+  }
+}
+
 void write_interactions(const std::map<std::string, SurfaceInteraction>& interactions,
                         std::ostream& out) {
   for (const auto& [name, interaction] : interactions) {
     out << "*SURFACE INTERACTION, NAME=" << name << '\n';
-    out << "*SURFACE BEHAVIOR, PRESSURE-OVERCLOSURE=HARD\n";
+    write_behavior(interaction.behavior, out);
     if (!interaction.friction) continue;
     const Friction& f = *interaction.friction;
     switch (f.kind) {

@@ -156,7 +156,7 @@ const std::vector<DeckReader::KeywordSpec>& DeckReader::keywords() {
        S::Interaction,
        {{"PRESSURE-OVERCLOSURE", true, V::Required}},
        &DeckReader::on_surface_behavior,
-       kNoData},
+       kData},
       {"FRICTION",
        S::Interaction,
        {{"ANISOTROPIC", false, V::None},

@@ -176,6 +176,7 @@ class DeckReader {
                      const std::string& layout) const;
   std::optional<DataLine> single_data_line(const KeywordLine& kw, bool required,
                                            const std::string& layout);
+  PressureOverclosure read_pressure_overclosure(const KeywordLine& kw);
 
   CardSource source_;
   const ElementRegistry& registry_;

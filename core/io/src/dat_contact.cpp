@@ -34,6 +34,29 @@ void vector_row(std::ostream& out, const char* label, const Vec3& v) {
   out << '\n';
 }
 
+// The normal law of a pair (Styk-only line): "exact (hard)" or the penalty law and its slope.
+void law_row(std::ostream& out, const Model& model, const ContactPair& pair) {
+  out << "       law ";
+  const auto it = model.surface_interactions.find(pair.interaction);
+  const PressureOverclosure behavior =
+      it == model.surface_interactions.end() ? PressureOverclosure{} : it->second.behavior;
+  switch (behavior.law) {
+    case PressureOverclosure::Law::Hard:
+      out << "exact (hard)\n";
+      return;
+    case PressureOverclosure::Law::Linear:
+      out << "penalty LINEAR K=" << fortran_e13_6(behavior.slope) << '\n';
+      return;
+    case PressureOverclosure::Law::Tied:
+      out << "penalty TIED K=" << fortran_e13_6(behavior.slope) << '\n';
+      return;
+    case PressureOverclosure::Law::Exponential:
+      out << "penalty EXPONENTIAL c0=" << fortran_e13_6(behavior.c0.value_or(0.0))
+          << " p0=" << fortran_e13_6(behavior.p0) << '\n';
+      return;
+  }
+}
+
 }  // namespace
 
 void print_contact(std::ostream& out, const Model& model, const OutputRequest& request,
@@ -80,6 +103,7 @@ void print_contact(std::ostream& out, const Model& model, const OutputRequest& r
            inc.total_time);
     vector_row(out, "force", inc.contact_pairs[p].force);
     vector_row(out, "moment", inc.contact_pairs[p].moment);
+    law_row(out, model, pair);
   }
   // Pressure penetration (Styk-only): per definition the fluid pressure, the penetrated share and
   // the leak flag, then the penetrated slave nodes with the fluid pressure acting on them.

@@ -34,6 +34,10 @@ Checked check_contact(const Model& model, const ContactInput& in, int replacing)
       refuse("a contact pair " + slave.name + " / " + master.name + " exists already");
   Checked out;
   out.interaction.name = name;
+  // The form edits friction only: an edited pair keeps its interaction's *SURFACE BEHAVIOR law.
+  if (const auto kept = model.surface_interactions.find(own);
+      !own.empty() && kept != model.surface_interactions.end())
+    out.interaction.behavior = kept->second.behavior;
   const std::string kind = to_upper(in.friction);
   check_finite(in.mu, "friction coefficient");
   check_finite(in.mu2, "friction coefficient mu2");

@@ -790,6 +790,38 @@ def _():
 
 
 # ----------------------------------------------------------------------------------------------
+# Contact laws (issue 15 item 4)
+
+
+@deck("p01_penalty_linear_nonmatching")
+def _():
+    lower, upper = two_blocks((2, 2, 1), (3, 3, 1))
+    o = upper.origin
+    top = upper.nodes_where(lambda x: abs(x[2] - o[2] - 1.0) < 1e-9)
+    left = [n for n in top if upper.coords[n][0] < 1.0 - 1e-9]
+    right = [n for n in top if upper.coords[n][0] >= 1.0 - 1e-9]
+    # Loads small enough (strains ~1e-8) that ccx's contact springs, which it evaluates on the
+    # deformed geometry, solve the same linear problem as Styk's to 1e-6.
+    return ("** Deck set p01 (CalculiX manual, *SURFACE BEHAVIOR, PRESSURE-OVERCLOSURE=LINEAR): a "
+            "fine block pressed unevenly onto a coarse one through penalty contact (node to "
+            "surface, frictionless).\n" + lower.node_text("NALL") + upper.node_text("NALL") +
+            lower.element_text("ELOW") + upper.element_text("EUP") + STEEL +
+            "*MATERIAL, NAME=ALU\n*ELASTIC\n70000., 0.33\n"
+            "*SOLID SECTION, ELSET=ELOW, MATERIAL=STEEL\n*SOLID SECTION, ELSET=EUP, MATERIAL=ALU\n" +
+            surface("LOWERTOP", lower.faces("z1")) + surface("UPPERBOT", upper.faces("z0")) +
+            "*SURFACE INTERACTION, NAME=SPRING\n*SURFACE BEHAVIOR, PRESSURE-OVERCLOSURE=LINEAR\n"
+            "1.e5, 1.e-12\n*CONTACT PAIR, INTERACTION=SPRING, TYPE=NODE TO SURFACE\n"
+            "UPPERBOT, LOWERTOP\n" +
+            nset("BASE", lower.nodes_where(lambda x: abs(x[2]) < 1e-9)) +
+            nset("UPX0", upper.nodes_where(lambda x: abs(x[0]) < 1e-9)) +
+            nset("UPY0", upper.nodes_where(lambda x: abs(x[1]) < 1e-9)) +
+            "*BOUNDARY\nBASE, 1, 3\nUPX0, 1\nUPY0, 2\n" + nset("TOPL", left) +
+            nset("TOPR", right) + nset("TOP", top) +
+            step("*CLOAD\nTOPL, 3, -4.e-4\nTOPR, 3, -1.e-4\n",
+                 "*NODE PRINT, NSET=TOP\nU\n*EL PRINT, ELSET=EUP\nS\n"))
+
+
+# ----------------------------------------------------------------------------------------------
 
 
 def main():

@@ -85,6 +85,7 @@ std::size_t expect_increment(const std::vector<std::string>& lines, std::size_t 
       "UPPER_BOTTOM/LOWER_TOP");
   const std::vector<double> force = row_values(next(), "     force", 3);
   const std::vector<double> moment = row_values(next(), "    moment", 3);
+  EXPECT_EQ(next(), "       law exact (hard)");
   const std::vector<double> force_expected = {0.0, 0.0, 3.0 * t};
   const std::vector<double> moment_expected = {1.5 * t, -3.0 * t, 0.0};
   for (std::size_t d = 0; d < force.size() && d < 3; ++d) {

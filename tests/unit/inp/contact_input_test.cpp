@@ -249,10 +249,10 @@ TEST(ContactInput, FrictionErrors) {
   expect_error("friction_stick_slope.inp",
                base + "*SURFACE INTERACTION, NAME=I\n*FRICTION\n0.1, 0.\n" + kStep, "0.1, 0.",
                "stick slope must be positive");
-  expect_error("behavior_linear.inp",
+  expect_error("behavior_tabular.inp",
                base + "*SURFACE INTERACTION, NAME=I\n*SURFACE BEHAVIOR, " +
-                   "PRESSURE-OVERCLOSURE=LINEAR\n" + kStep,
-               "*SURFACE BEHAVIOR", "PRESSURE-OVERCLOSURE=LINEAR is not supported");
+                   "PRESSURE-OVERCLOSURE=TABULAR\n0., 0.\n1., 1.\n" + kStep,
+               "*SURFACE BEHAVIOR", "TABULAR pressure-overclosure tables are not supported");
   expect_error("interaction_twice.inp",
                base + "*SURFACE INTERACTION, NAME=I\n*SURFACE INTERACTION, NAME=i\n" + kStep,
                "*SURFACE INTERACTION, NAME=i", "surface interaction I is defined twice");
@@ -318,7 +318,7 @@ TEST(ContactInput, ContactPrintVariablesAndPlace) {
   expect_error("contact_print_cels.inp",
                base + "*STEP\n*STATIC\n*CONTACT PRINT\nCSTR, CELS\n*END STEP\n", "CSTR, CELS",
                "output variable 'CELS' is not supported by *CONTACT PRINT; Styk writes CSTR, "
-               "CDIS, CSTATUS (contact elastic energy is zero");
+               "CDIS, CSTATUS (Styk does not write the contact elastic energy)");
   expect_error("contact_print_empty.inp", base + "*STEP\n*STATIC\n*CONTACT PRINT\n*END STEP\n",
                "*CONTACT PRINT", "*CONTACT PRINT needs a data line naming the variables");
   expect_error("contact_print_model.inp", base + "*CONTACT PRINT\nCSTR\n" + kStep, "*CONTACT PRINT",

@@ -52,6 +52,15 @@ struct ContactConstraint {
   double area = 0.0;  // nodal contact area: sum of integral N_i dA (SPEC §2.5)
   double gap0 = 0.0;
   FrictionLaw law;
+  // Penalty laws of *SURFACE BEHAVIOR (penalty_law.hpp): the spring stiffness K A of the node
+  // (force per length; 0: exact contact, the default) and whether the spring is TIED (never
+  // opens, acts in all three directions; law is then FrictionLaw::Kind::Tied).
+  double penalty_stiffness = 0.0;
+  bool bonded = false;
+  // The spring's compliance 1 / (K A) (length per force), 0 for exact contact.
+  double penalty_compliance() const {
+    return penalty_stiffness > 0.0 ? 1.0 / penalty_stiffness : 0.0;
+  }
 
   // Row c (0 = normal, 1, 2 = tangential) of the generalised constraint operator: the direction
   // whose dot product with d gives the generalised displacement dtilde_c. Tangential rows are

@@ -8,6 +8,10 @@
 //   open  (b <= 0):            lambda = 0
 //   stick (b > 0, |xi| <= b):  d_n = gap0, d_t = d_t_ref          (tied: always stick)
 //   slip  (b > 0, |xi| > b):   d_n = gap0, F_t = lambda_t - b xi / |xi| = 0
+// A penalty law (penalty_law.hpp) puts a spring of compliance e = 1 / (K A) in series: the
+// closed conditions become d_n - gap0 = e lambda_n (the overclosure that carries lambda_n) and
+// b = lambda_n + c_n (d_n - gap0 - e lambda_n); with e = 0 they are the exact ones. A bonded
+// (TIED) node is closed for good, with springs in all three directions: d = gap0 n + e lambda.
 // c_n, c_t > 0 are complementarity parameters (force per length; any positive values give the same
 // solution, they only steer the iteration). b > eps counts as closed (eps >= 0 absorbs round-off).
 #pragma once
@@ -32,6 +36,8 @@ struct LocalPoint {
   double eps = 0.0;
   std::array<bool, 3> live{true, false, false};  // components taking part
   bool tied = false;                             // no slip
+  double compliance = 0.0;  // penalty spring 1 / (K A), length per force (0: exact contact)
+  bool bonded = false;      // TIED penalty law: never opens, springs in all directions
   bool frictional = false;  // the law has friction (a closed node whose tangential components
                             // are all held by supports then sticks; frictionless ones slide)
   // Proximal weight gamma >= 0 of the slip rows (0: the exact tangent). The exact tangent of a

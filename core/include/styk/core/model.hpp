@@ -380,10 +380,26 @@ struct Friction {                                     // *FRICTION inside a *SUR
   SourceLoc where;
 };
 
-struct SurfaceInteraction {          // *SURFACE INTERACTION, NAME= (hard contact, exact)
+// *SURFACE BEHAVIOR, PRESSURE-OVERCLOSURE= (CalculiX semantics, docs/input.md). Hard: exact
+// contact (Lagrange multipliers). The others are penalty laws: the contact pressure is a function
+// of the overclosure h (penetration, length), p(h).
+struct PressureOverclosure {
+  enum class Law { Hard, Linear, Exponential, Tied };
+  Law law = Law::Hard;
+  double slope = 0.0;               // Linear, Tied: K, pressure per length (> 0)
+  std::optional<double> sigma_inf;  // Linear: tension for large clearances (CalculiX; kept)
+  std::optional<double> c0;         // Linear: clearance factor; Exponential: c0 (length)
+  double p0 = 0.0;                  // Exponential: pressure at zero clearance
+  SourceLoc where;
+  bool penalty() const { return law != Law::Hard; }
+};
+
+struct SurfaceInteraction {          // *SURFACE INTERACTION, NAME=
   std::string name;                  // upper-case
   std::optional<Friction> friction;  // none: frictionless
   SourceLoc where;
+  PressureOverclosure behavior;  // *SURFACE BEHAVIOR (default: hard, exact); last, so that
+                                 // aggregate initialisation {name, friction, where} stays valid
 };
 
 struct ContactPair {  // one data line of *CONTACT PAIR
