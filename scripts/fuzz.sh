@@ -4,7 +4,8 @@
 # from samples/ and tests/inputs/, and runs each harness for SECONDS (default 60).
 #   scripts/fuzz.sh [SECONDS] [HARNESS...]     harnesses: inp_reader dat_reader results_reader
 # With STYK_FUZZ_RUNS=N each harness runs N inputs from a fixed random seed instead (the test
-# command's short, repeatable run: scripts/run-tests.sh).
+# command's short, repeatable run: scripts/run-tests.sh). STYK_FUZZ_RESEAL=1 makes the results
+# harness seal each mutated file again, so mutations reach HDF5 behind the seal (docs/fuzzing.md).
 # The corpora grow in build-fuzz/corpus/ from run to run. A finding (crash, sanitizer report,
 # timeout, memory blow-up) stops with a non-zero exit and its input in build-fuzz/findings/; it
 # becomes a regression input under tests/inputs/fuzz/ with the fix.
@@ -33,7 +34,16 @@ seed() {  # harness, find pattern, largest size
 }
 seed inp_reader '*.inp' 64k
 seed dat_reader '*.dat' 64k
-seed results_reader '*.styk.h5' 128k   # the smallest results files are ~75 KB
+# Results files: sealed ones only (docs/fuzzing.md). An unsealed seed (written before the seal) is
+# parsed by HDF5 itself, and its mutations reach memory errors inside HDF5 that Styk cannot
+# prevent; a sealed seed's mutations are refused by the seal before HDF5 reads a byte (unless
+# STYK_FUZZ_RESEAL=1 seals them again: the harness' measurement mode).
+mkdir -p "$build/corpus/results_reader"
+find samples tests/inputs -type f -name '*.styk.h5' -size -128k -print0 |   # smallest ~75 KB
+  while IFS= read -r -d '' f; do
+    [[ "$(head -c 18 "$f")" == "styk-results-seal " ]] || continue
+    cp -n "$f" "$build/corpus/results_reader/$(echo "$f" | tr '/' '_')"
+  done
 for f in samples/spec-2.1-cantilever-c3d8-6x1.inp samples/cantilever-c3d20.inp; do
   [[ -f "$f" ]] || continue
   include_seed="$build/corpus/inp_reader/include_$(basename "$f")"

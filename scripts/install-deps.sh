@@ -2,8 +2,9 @@
 # Installs the Debian 12 packages Styk needs. Idempotent: apt-get skips what is present, and the
 # package index is refreshed only when a package is missing.
 # Usage: scripts/install-deps.sh [--test] [--fuzz]   (--test adds the test-only peers: calculix-ccx
-# and its test suite, time, gmsh (meshes for the import tests); --fuzz adds clang and its
-# libFuzzer / sanitizer runtimes: scripts/fuzz.sh)
+# and its test suite, time, gmsh (meshes for the import tests), clang-format and clang-tidy
+# (scripts/check-format.sh, scripts/check-tidy.sh); --fuzz adds clang and its libFuzzer /
+# sanitizer runtimes: scripts/fuzz.sh)
 set -euo pipefail
 
 packages=(
@@ -17,7 +18,7 @@ packages=(
 )
 for option in "$@"; do
   case "$option" in
-    --test) packages+=(calculix-ccx calculix-ccx-test time python3 xvfb xauth python3-meshio clang-format-14
+    --test) packages+=(calculix-ccx calculix-ccx-test time python3 xvfb xauth python3-meshio clang-format-14 clang-tidy-14
                        python3-h5py gmsh) ;;
     --fuzz) packages+=(clang libclang-rt-14-dev) ;;
     *) echo "install-deps: unknown option $option (use --test, --fuzz)" >&2; exit 1 ;;

@@ -25,8 +25,6 @@
 #include "styk/render/osmesa_renderer.hpp"
 #include "styk/render/render_job.hpp"
 
-extern char** environ;
-
 namespace styk::cli {
 namespace {
 

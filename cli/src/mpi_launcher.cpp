@@ -14,6 +14,7 @@
 #include <vector>
 
 #include "exit_codes.hpp"
+#include "json_progress.hpp"
 #include "output_paths.hpp"
 
 namespace styk::cli {
@@ -25,7 +26,7 @@ std::string find_program(const std::string& name) {
   const char* path = std::getenv("PATH");
   std::stringstream dirs(path != nullptr ? path : "");
   for (std::string dir; std::getline(dirs, dir, ':');) {
-    const std::string candidate = (dir.empty() ? "." : dir) + "/" + name;
+    std::string candidate = (dir.empty() ? "." : dir) + "/" + name;
     if (access(candidate.c_str(), X_OK) == 0) return candidate;
   }
   return "";
@@ -81,6 +82,17 @@ int run_and_wait(const std::vector<std::string>& command) {
   return 128 + (WIFSIGNALED(status) ? WTERMSIG(status) : 0);
 }
 
+// A failure of the launch itself, as the run's last line: prose for people, or with `--progress
+// json` the protocol's error event (kind "run_environment"), so a driving program sees why the run
+// ended instead of an unparsed line.
+int report_launch_failure(const SolveArgs& args, const std::string& message) {
+  if (args.progress == ProgressFormat::JsonLines)
+    std::cerr << json_error_line(kRunEnvironment, "run_environment", "", 0, message) << "\n";
+  else
+    std::cerr << "styk: " << message << "\n";
+  return kRunEnvironment;
+}
+
 void remove_partial_results(const SolveArgs& args) {
   const std::string job = job_name(args.deck);
   for (const std::string& name : {job + ".styk.h5.tmp", job + ".dat.tmp"})
@@ -93,24 +105,24 @@ int launch_ranks(const SolveArgs& args) {
   const char* configured = std::getenv("STYK_MPIRUN");
   const std::string name = configured != nullptr && *configured != '\0' ? configured : "mpirun";
   const std::string runner = find_program(name);
-  if (runner.empty()) {
-    std::cerr << "styk: --ranks " << args.ranks << " needs an MPI runner, and '" << name
-              << "' was not found" << (name.find('/') == std::string::npos ? " on PATH" : "")
-              << " (Debian: the openmpi-bin package, which scripts/install-deps.sh installs; "
-                 "STYK_MPIRUN names another runner); nothing was solved\n";
-    return kRunEnvironment;
-  }
+  if (runner.empty())
+    return report_launch_failure(
+        args, "--ranks " + std::to_string(args.ranks) + " needs an MPI runner, and '" + name +
+                  "' was not found" + (name.find('/') == std::string::npos ? " on PATH" : "") +
+                  " (Debian: the openmpi-bin package, which scripts/install-deps.sh installs; "
+                  "STYK_MPIRUN names another runner); nothing was solved");
   const int status = run_and_wait(runner_command(args, runner));
   // Rank 0 has already reported these in the usual way.
   if (status == kOk || status == kBadInput || status == kNotConverged || status == kResourceLimit)
     return status;
   remove_partial_results(args);
   // Open MPI's runner passes on 128 + the signal that killed a rank as its own exit status.
-  std::cerr << "styk: the distributed run failed: " << runner << " ended with status " << status
-            << (status > 128 ? " (signal " + std::to_string(status - 128) + ")" : "")
-            << " (a rank died, or MPI could not start its " << args.ranks
-            << " ranks); no results were written\n";
-  return kRunEnvironment;
+  return report_launch_failure(
+      args, "the distributed run failed: " + runner + " ended with status " +
+                std::to_string(status) +
+                (status > 128 ? " (signal " + std::to_string(status - 128) + ")" : "") +
+                " (a rank died, or MPI could not start its " + std::to_string(args.ranks) +
+                " ranks); no results were written");
 }
 
 }  // namespace styk::cli

@@ -3,6 +3,7 @@
 #include <stdexcept>
 
 #include "styk/mesher/hex_topology.hpp"
+#include "styk/mesher/mesh_size_limit.hpp"
 
 namespace styk::mesher {
 namespace {
@@ -100,6 +101,7 @@ Block mesh_block(Mesh& mesh, const BlockMap& map, const BlockSpec& spec) {
     throw std::invalid_argument("mesh_block: element type must be C3D8 or C3D20, not " + spec.type);
   for (int a = 0; a < 3; ++a)
     if (spec.divisions[a] < 1) throw std::invalid_argument("mesh_block: divisions must be >= 1");
+  check_block_fits(spec.divisions, step, spec.type);
 
   std::array<std::vector<double>, 3> xi;
   std::array<int, 3> grid{};

@@ -2,6 +2,8 @@
 
 #include <stdexcept>
 
+#include "styk/mesher/mesh_size_limit.hpp"
+
 namespace styk::mesher {
 namespace {
 
@@ -25,10 +27,10 @@ BoxMesh::BoxMesh(const BoxSpec& spec, Model& model) : spec_(spec) {
   } else {
     throw std::invalid_argument("BoxMesh: element type must be C3D8 or C3D20, not " + spec.type);
   }
-  for (int a = 0; a < 3; ++a) {
+  for (int a = 0; a < 3; ++a)
     if (spec.divisions[a] < 1) throw std::invalid_argument("BoxMesh: divisions must be >= 1");
-    grid_[a] = step_ * spec.divisions[a] + 1;
-  }
+  check_block_fits(spec.divisions, step_, spec.type);
+  for (int a = 0; a < 3; ++a) grid_[a] = step_ * spec.divisions[a] + 1;
 
   const SourceLoc here{"box mesher", 0};
   node_index_.assign(static_cast<std::size_t>(grid_[0]) * grid_[1] * grid_[2], -1);

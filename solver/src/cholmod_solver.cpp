@@ -1,8 +1,6 @@
 // Direct solver: CHOLMOD supernodal Cholesky of K_ff (upper triangle, free dofs only), ordered by
 // METIS nested dissection on the node graph (AMD if METIS fails). The factor is kept, so steps
 // that only change loads or prescribed values cost one forward/back substitution.
-#include <unistd.h>
-
 #include <algorithm>
 #include <chrono>
 #include <cmath>
@@ -18,6 +16,7 @@
 #include "node_ordering.hpp"
 #include "parallel.hpp"
 #include "restricted_substitution.hpp"
+#include "styk/core/machine_memory.hpp"
 
 namespace styk::solver_detail {
 namespace {
@@ -26,12 +25,6 @@ std::string format(const char* pattern, double a, double b = 0.0, double c = 0.0
   char buffer[320];
   std::snprintf(buffer, sizeof buffer, pattern, a, b, c);
   return buffer;
-}
-
-double physical_memory_bytes() {
-  const long pages = sysconf(_SC_PHYS_PAGES);
-  const long page_size = sysconf(_SC_PAGE_SIZE);
-  return pages > 0 && page_size > 0 ? static_cast<double>(pages) * page_size : 0.0;
 }
 
 class CholmodSolver final : public LinearSolver {

@@ -21,6 +21,8 @@
 #include "styk/elements/builtin.hpp"
 #include "styk/inp/reader.hpp"
 #include "styk/inp/writer.hpp"
+#include "support/ccx_runner.hpp"
+#include "support/element_registries.hpp"
 
 namespace styk::testing {
 namespace {
@@ -91,8 +93,7 @@ std::pair<std::array<double, 3>, std::array<double, 3>> solve_both(const Deck& d
   const std::string dir = scratch_dir("ccx_beam_" + job);
   {
     std::ofstream(dir + "/given.inp") << deck_text(d);
-    ElementRegistry registry;
-    register_builtin_elements(registry);
+    ElementRegistry registry = test::builtin_registry();
     const Model model = read_inp(dir + "/given.inp", registry);
     std::ofstream written(dir + "/" + job + ".inp");
     write_inp(model, written);
@@ -100,8 +101,8 @@ std::pair<std::array<double, 3>, std::array<double, 3>> solve_both(const Deck& d
   const CommandResult ours =
       run_command(styk_executable() + " solve -q " + job + ".inp -o styk", dir);
   EXPECT_EQ(ours.exit_code, 0) << ours.err;
-  const CommandResult peer = run_command("OMP_NUM_THREADS=1 ccx -i " + job, dir);
-  EXPECT_EQ(peer.exit_code, 0) << "ccx failed on the deck Styk wrote\n" << peer.out << peer.err;
+  const test::CcxRun peer = test::run_ccx(dir, job);
+  EXPECT_EQ(peer.exit_code, 0) << "ccx failed on the deck Styk wrote\n" << peer.log;
   const Displacements a = last_displacements(dir + "/styk/" + job + ".dat");
   const Displacements b = last_displacements(dir + "/" + job + ".dat");
   const long tip = d.type[2] == '2' ? 2 * d.elements + 1 : d.elements + 1;

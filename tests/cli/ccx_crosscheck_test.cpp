@@ -14,6 +14,7 @@
 #include "styk/io/dat_reader.hpp"
 #include "styk/mesher/box_mesh.hpp"
 #include "styk/mesher/cantilever.hpp"
+#include "support/ccx_runner.hpp"
 
 namespace styk::testing {
 namespace {
@@ -28,10 +29,10 @@ void cross_check(const Model& model, const std::string& job) {
   const CommandResult ours =
       run_command(styk_executable() + " solve -q " + job + ".inp -o styk", dir);
   ASSERT_EQ(ours.exit_code, 0) << ours.err;
-  const CommandResult peer = run_command("OMP_NUM_THREADS=1 ccx -i " + job, dir);
+  const test::CcxRun peer = test::run_ccx(dir, job);
   ASSERT_EQ(peer.exit_code, 0) << "ccx failed (is calculix-ccx installed? scripts/install-deps.sh "
                                   "--test installs it)\n"
-                               << peer.out << peer.err;
+                               << peer.log;
 
   std::ifstream ours_dat(dir + "/styk/" + job + ".dat");
   std::ifstream peer_dat(dir + "/" + job + ".dat");
@@ -78,8 +79,8 @@ TEST(CcxCrossCheck, TransformedNodePrintsLocalComponentsMarkedL) {
   }
   const CommandResult ours = run_command(styk_executable() + " solve -q tr.inp -o styk", dir);
   ASSERT_EQ(ours.exit_code, 0) << ours.err;
-  const CommandResult peer = run_command("OMP_NUM_THREADS=1 ccx -i tr", dir);
-  ASSERT_EQ(peer.exit_code, 0) << peer.out << peer.err;
+  const test::CcxRun peer = test::run_ccx(dir, "tr");
+  ASSERT_EQ(peer.exit_code, 0) << peer.log;
   std::ifstream ours_dat(dir + "/styk/tr.dat"), peer_dat(dir + "/tr.dat");
   const std::vector<DatBlock> a = parse_dat_blocks(ours_dat), b = parse_dat_blocks(peer_dat);
   ASSERT_EQ(a.size(), 1u);

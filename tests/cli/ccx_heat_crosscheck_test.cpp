@@ -18,6 +18,8 @@
 #include "styk/elements/builtin.hpp"
 #include "styk/inp/writer.hpp"
 #include "styk/mesher/builders.hpp"
+#include "support/ccx_runner.hpp"
+#include "support/element_registries.hpp"
 
 namespace styk::testing {
 namespace {
@@ -72,9 +74,8 @@ void cross_check(const Model& model, const std::string& job) {
   const CommandResult ours =
       run_command(styk_executable() + " solve -q " + job + ".inp -o styk", dir);
   ASSERT_EQ(ours.exit_code, 0) << ours.err;
-  const CommandResult peer = run_command("OMP_NUM_THREADS=1 ccx -i " + job, dir);
-  ASSERT_EQ(peer.exit_code, 0) << "ccx failed (is calculix-ccx installed?)\n"
-                               << peer.out << peer.err;
+  const test::CcxRun peer = test::run_ccx(dir, job);
+  ASSERT_EQ(peer.exit_code, 0) << "ccx failed (is calculix-ccx installed?)\n" << peer.log;
   const auto t_ours = last_block(dir + "/styk/" + job + ".dat", "temperatures");
   const auto t_peer = last_block(dir + "/" + job + ".dat", "temperatures");
   ASSERT_EQ(t_ours.size(), static_cast<std::size_t>(model.node_count()));
@@ -95,16 +96,14 @@ void cross_check(const Model& model, const std::string& job) {
 }
 
 TEST(CcxHeatCrossCheck, CylinderWallC3D20) {
-  ElementRegistry registry;
-  register_builtin_elements(registry);
+  ElementRegistry registry = test::builtin_registry();
   const mesher::BuildResult r =
       mesher::run_builder("cylinder-wall", {{"element", "C3D20"}, {"ntheta", "24"}}, registry);
   cross_check(r.model, "wall_c3d20");
 }
 
 TEST(CcxHeatCrossCheck, OrthotropicC3D8WithFluxes) {
-  ElementRegistry registry;
-  register_builtin_elements(registry);
+  ElementRegistry registry = test::builtin_registry();
   mesher::BuildResult r = mesher::run_builder(
       "cylinder-wall", {{"element", "C3D8"}, {"nr", "3"}, {"ntheta", "24"}, {"nz", "2"}}, registry);
   Model& model = r.model;

@@ -21,6 +21,8 @@
 #include "styk/elements/builtin.hpp"
 #include "styk/inp/reader.hpp"
 #include "styk/inp/writer.hpp"
+#include "support/ccx_runner.hpp"
+#include "support/element_registries.hpp"
 
 namespace styk::testing {
 namespace {
@@ -150,8 +152,7 @@ std::pair<std::array<double, 3>, std::array<double, 3>> solve_deck_both(const st
   const std::string dir = scratch_dir("ccx_shell_" + job);
   {
     std::ofstream(dir + "/given.inp") << deck;
-    ElementRegistry registry;
-    register_builtin_elements(registry);
+    ElementRegistry registry = test::builtin_registry();
     const Model model = read_inp(dir + "/given.inp", registry);
     std::ofstream written(dir + "/" + job + ".inp");
     write_inp(model, written);
@@ -159,8 +160,8 @@ std::pair<std::array<double, 3>, std::array<double, 3>> solve_deck_both(const st
   const CommandResult ours =
       run_command(styk_executable() + " solve -q " + job + ".inp -o styk", dir);
   EXPECT_EQ(ours.exit_code, 0) << ours.err;
-  const CommandResult peer = run_command("OMP_NUM_THREADS=1 ccx -i " + job, dir);
-  EXPECT_EQ(peer.exit_code, 0) << "ccx failed on the deck Styk wrote\n" << peer.out << peer.err;
+  const test::CcxRun peer = test::run_ccx(dir, job);
+  EXPECT_EQ(peer.exit_code, 0) << "ccx failed on the deck Styk wrote\n" << peer.log;
   return {displacement(dir + "/styk/" + job + ".dat", node),
           displacement(dir + "/" + job + ".dat", node)};
 }

@@ -8,6 +8,8 @@
 #include <sstream>
 #include <stdexcept>
 
+#include "support/test_scratch.hpp"
+
 namespace styk::testing {
 
 std::string read_file(const std::string& path) {
@@ -35,10 +37,7 @@ CommandResult run_command(const std::string& command, const std::string& workdir
 std::string styk_executable() { return std::string(STYK_BINARY_DIR) + "/cli/styk"; }
 
 std::string scratch_dir(const std::string& name) {
-  const std::filesystem::path dir = std::filesystem::path(STYK_BINARY_DIR) / "test-scratch" / name;
-  std::filesystem::remove_all(dir);
-  std::filesystem::create_directories(dir);
-  return dir.string();
+  return test::fresh_scratch_dir(std::filesystem::path("test-scratch") / name).string();
 }
 
 }  // namespace styk::testing

@@ -15,6 +15,7 @@
 
 #include "cli_runner.hpp"
 #include "styk/io/dat_reader.hpp"
+#include "support/ccx_runner.hpp"
 
 namespace styk::testing {
 namespace {
@@ -110,8 +111,8 @@ TEST_P(DeckSet, SolvesAndMatchesItsReference) {
     return;
   }
   ASSERT_EQ(c.reference, "ccx");
-  const CommandResult peer = run_command("OMP_NUM_THREADS=1 ccx -i " + job, dir);
-  ASSERT_EQ(peer.exit_code, 0) << peer.out << peer.err;
+  const test::CcxRun peer = test::run_ccx(dir, job);
+  ASSERT_EQ(peer.exit_code, 0) << peer.log;
   const std::vector<DatBlock> a = compared_blocks(dir + "/styk/" + job + ".dat", c);
   const std::vector<DatBlock> b = compared_blocks(dir + "/" + job + ".dat", c);
   ASSERT_FALSE(b.empty()) << "ccx printed no compared block";

@@ -16,21 +16,13 @@
 #include "styk/core/element_registry.hpp"
 #include "styk/elements/builtin.hpp"
 #include "styk/gmsh/gmsh_import.hpp"
+#include "support/element_registries.hpp"
 
 namespace styk {
 namespace {
 
 using testing::run_command;
 using testing::scratch_dir;
-
-const ElementRegistry& registry() {
-  static const ElementRegistry r = [] {
-    ElementRegistry built;
-    register_builtin_elements(built);
-    return built;
-  }();
-  return r;
-}
 
 struct Case {
   const char* name;
@@ -59,8 +51,8 @@ std::string geo(const Case& c) {
 
 double check_element(const Model& model, int e, const std::string& linear_type) {
   const Element& element = model.elements[e];
-  const TElement& type = *registry().find(element.type);
-  const TElement& linear = *registry().find(linear_type);
+  const TElement& type = *test::shared_builtin_registry().find(element.type);
+  const TElement& linear = *test::shared_builtin_registry().find(linear_type);
   const int n = type.node_count();
   Eigen::MatrixXd x(n, 3);
   for (int a = 0; a < n; ++a)

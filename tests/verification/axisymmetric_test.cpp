@@ -27,18 +27,11 @@
 #include "styk/inp/writer.hpp"
 #include "styk/io/dat_reader.hpp"
 #include "styk/solver/analysis.hpp"
+#include "support/ccx_runner.hpp"
+#include "support/element_registries.hpp"
 
 namespace styk {
 namespace {
-
-const ElementRegistry& registry() {
-  static const ElementRegistry r = [] {
-    ElementRegistry out;
-    register_builtin_elements(out);
-    return out;
-  }();
-  return r;
-}
 
 std::filesystem::path scratch(const std::string& name) {
   const std::filesystem::path dir =
@@ -49,9 +42,8 @@ std::filesystem::path scratch(const std::string& name) {
 
 // CalculiX on the deck (in its directory): the last displacement block of job.dat, by node id.
 std::map<Id, Vec3> ccx_displacements(const std::filesystem::path& dir) {
-  const std::string command =
-      "cd '" + dir.string() + "' && rm -f job.dat && OMP_NUM_THREADS=1 ccx -i job > ccx.log 2>&1";
-  if (std::system(command.c_str()) != 0) throw std::runtime_error("ccx failed in " + dir.string());
+  if (test::run_ccx(dir, "job").exit_code != 0)
+    throw std::runtime_error("ccx failed in " + dir.string());
   std::ifstream dat(dir / "job.dat");
   const std::vector<DatDisplacements> blocks = parse_dat_displacements(dat);
   if (blocks.empty()) throw std::runtime_error("no displacements in job.dat");
@@ -112,9 +104,9 @@ TEST(AxisymmetricLame, ThickCylinderMatchesTheFormula) {
   for (const Case& c : cases) {
     const std::filesystem::path dir = scratch(std::string("lame_") + c.type);
     { std::ofstream(dir / "job.inp") << lame_deck(c.type, c.nu); }
-    const Model model = read_inp((dir / "job.inp").string(), registry());
-    const Results results =
-        run_static_analysis(model, registry(), SolveOptions{}, nullptr, nullptr);
+    const Model model = read_inp((dir / "job.inp").string(), test::shared_builtin_registry());
+    const Results results = run_static_analysis(model, test::shared_builtin_registry(),
+                                                SolveOptions{}, nullptr, nullptr);
     const double u = mean_ur(inner_displacements(model, results));
     const double error = u / lame_u1(c.nu) - 1.0;
     std::printf("%s nu = %g: u(R1) = %.7e, Lame %.7e, error %+.4f %%\n", c.type, c.nu, u,
@@ -135,9 +127,9 @@ TEST(AxisymmetricLame, CalculixOnTheSameDeck) {
   for (const char* type : {"CAX8", "CAX8R", "CAX4"}) {
     const std::filesystem::path dir = scratch(std::string("lame_ccx_") + type);
     { std::ofstream(dir / "job.inp") << lame_deck(type, 0.3); }
-    const Model model = read_inp((dir / "job.inp").string(), registry());
-    const Results results =
-        run_static_analysis(model, registry(), SolveOptions{}, nullptr, nullptr);
+    const Model model = read_inp((dir / "job.inp").string(), test::shared_builtin_registry());
+    const Results results = run_static_analysis(model, test::shared_builtin_registry(),
+                                                SolveOptions{}, nullptr, nullptr);
     const std::map<Id, Vec3> ours = inner_displacements(model, results);
     const std::map<Id, Vec3> theirs = ccx_displacements(dir);
     double worst = 0.0;
@@ -193,9 +185,10 @@ TEST(AxisymmetricShrinkFit, ContactPressureOfTheHeatedShaft) {
        << "*STEP\n*STATIC\n*TEMPERATURE\nSHAFTN, 100.\n*END STEP\n";
   const std::filesystem::path dir = scratch("shrink_fit");
   { std::ofstream(dir / "job.inp") << deck.str(); }
-  const Model model = read_inp((dir / "job.inp").string(), registry());
+  const Model model = read_inp((dir / "job.inp").string(), test::shared_builtin_registry());
   EXPECT_EQ(model.node_count(), 378);
-  const Results results = run_static_analysis(model, registry(), SolveOptions{}, nullptr, nullptr);
+  const Results results =
+      run_static_analysis(model, test::shared_builtin_registry(), SolveOptions{}, nullptr, nullptr);
   const IncrementResult& r = results.increments.back();
   ASSERT_FALSE(r.contact.empty());
   std::map<double, double> by_height;
@@ -226,16 +219,18 @@ TEST(AxisymmetricShrinkFit, ContactPressureOfTheHeatedShaft) {
 TEST(AxisymmetricLame, WrittenDeckReadsBackToTheSameSolution) {
   const std::filesystem::path dir = scratch("lame_round_trip");
   { std::ofstream(dir / "job.inp") << lame_deck("CAX8R", 0.3); }
-  const Model model = read_inp((dir / "job.inp").string(), registry());
+  const Model model = read_inp((dir / "job.inp").string(), test::shared_builtin_registry());
   {
     std::ofstream out(dir / "written.inp");
     write_inp(model, out);
   }
-  const Model again = read_inp((dir / "written.inp").string(), registry());
+  const Model again = read_inp((dir / "written.inp").string(), test::shared_builtin_registry());
   ASSERT_EQ(again.element_count(), model.element_count());
   EXPECT_EQ(again.elements[0].type, "CAX8R");
-  const Results a = run_static_analysis(model, registry(), SolveOptions{}, nullptr, nullptr);
-  const Results b = run_static_analysis(again, registry(), SolveOptions{}, nullptr, nullptr);
+  const Results a =
+      run_static_analysis(model, test::shared_builtin_registry(), SolveOptions{}, nullptr, nullptr);
+  const Results b =
+      run_static_analysis(again, test::shared_builtin_registry(), SolveOptions{}, nullptr, nullptr);
   const std::map<Id, Vec3> ua = inner_displacements(model, a), ub = inner_displacements(again, b);
   for (const auto& [id, u] : ua) EXPECT_NEAR(u[0], ub.at(id)[0], 1e-10 * std::abs(u[0])) << id;
 }

@@ -1,7 +1,7 @@
 // Programmatic hexahedral models for the recovery tests (SPEC §2.4 single elements, §3.1.8 patch
 // test, unit tests of the stress averaging): elements of any registered type placed on the
-// trilinear map of eight corner points, nodes shared by position, plus the registry with the
-// build-tree plug-ins (C3D14, C3D21, C3D28). Header-only; needs styk_element_setup.
+// trilinear map of eight corner points, nodes shared by position. The registry with the
+// build-tree plug-ins (C3D14, C3D21, C3D28) comes from tests/support. Header-only.
 #pragma once
 
 #include <array>
@@ -13,34 +13,9 @@
 
 #include "styk/core/element.hpp"
 #include "styk/core/element_registry.hpp"
-#include "styk/core/plugin_loader.hpp"
-#include "styk/elements/builtin.hpp"
-#include "styk/elements/element_setup.hpp"
+#include "support/element_registries.hpp"
 
 namespace styk::test {
-
-// Built-in elements and the build-tree plug-ins; the libraries outlive the registry.
-struct FullRegistry {
-  PluginLibraries libraries;
-  ElementRegistry registry;
-  std::vector<PluginDiagnostic> diagnostics;  // empty when every plug-in loaded
-};
-
-inline std::unique_ptr<FullRegistry> registry_with_plugins() {
-  auto out = std::make_unique<FullRegistry>();
-  // The build's plug-ins, and the template plug-in of docs/plugins.md (built into examples/).
-  out->diagnostics =
-      setup_element_registry(out->registry, out->libraries,
-                             {build_plugin_directory(), build_plugin_directory() + "/examples"});
-  return out;
-}
-
-// One registry with the plug-ins for the whole test program, for the model builders that
-// convert meshes (mesher::convert_elements reads the target types' descriptions from it).
-inline const ElementRegistry& shared_registry() {
-  static const std::unique_ptr<FullRegistry> full = registry_with_plugins();
-  return full->registry;
-}
 
 // Corners in Abaqus order: 1-4 counter-clockwise seen from the top (nodes 5-8), 5-8 above them.
 using HexCorners = std::array<Vec3, 8>;

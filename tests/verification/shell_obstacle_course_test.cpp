@@ -28,17 +28,12 @@
 #include <gtest/gtest.h>
 
 #include "shell_decks.hpp"
+#include "support/element_registries.hpp"
 
 namespace styk {
 namespace {
 
 constexpr double kPi = 3.14159265358979323846;
-
-ElementRegistry builtin() {
-  ElementRegistry registry;
-  register_builtin_elements(registry);
-  return registry;
-}
 
 // The quarter roof: x = 25 s (x = 0 mid-span), angle 40 r degrees from the crown.
 test::ShellGrid scordelis_lo(const std::string& type, int n) {
@@ -219,7 +214,7 @@ struct Case {
 // before it averaged); the fully integrated 3x3 elements lock on coarse meshes (4 x 4: 0.2456,
 // -19 %).
 TEST(ShellObstacleCourse, ScordelisLoRoof) {
-  const ElementRegistry registry = builtin();
+  const ElementRegistry registry = test::builtin_registry();
   const double reference = 0.3024;
   const Case cases[] = {{"S4", 16, 0.29911, 0.012},
                         {"S8R", 8, 0.30207, 0.0015},
@@ -239,7 +234,7 @@ TEST(ShellObstacleCourse, ScordelisLoRoof) {
 // angle (1.25 degrees). Measured: averaged 0.29911, given 0.299158 (+0.016 %), both -1.1 % of
 // 0.3024.
 TEST(ShellObstacleCourse, ScordelisLoRoofWithGivenNormals) {
-  const ElementRegistry registry = builtin();
+  const ElementRegistry registry = test::builtin_registry();
   const double reference = 0.3024;
   const double averaged = scordelis_lo_deflection("S4", 16, registry);
   const double given = scordelis_lo_deflection("S4", 16, registry, true);
@@ -286,7 +281,7 @@ TEST(ShellObstacleCourse, ScordelisLoRoofWithNormalsOnTheNodeLines) {
 // Pinched cylinder (octant, 16 x 16): S8R 1.8305e-5 (+0.3 %), S9R 1.8671e-5 (+2.3 %), S4 (MITC4)
 // 1.6949e-5 (-7.1 %, its known slow convergence under a point load).
 TEST(ShellObstacleCourse, PinchedCylinderWithDiaphragms) {
-  const ElementRegistry registry = builtin();
+  const ElementRegistry registry = test::builtin_registry();
   const double reference = 1.8248e-5;
   const Case cases[] = {
       {"S8R", 16, 1.8305e-5, 0.004}, {"S9R", 16, 1.8671e-5, 0.024}, {"S4", 16, 1.6949e-5, 0.072}};
@@ -304,7 +299,7 @@ TEST(ShellObstacleCourse, PinchedCylinderWithDiaphragms) {
 // (-0.3 %); the fully integrated quadratic elements lock in membrane on this doubly curved shell
 // (S9 16 x 16: 0.0789, -16 %; 4 x 4: 0.0021).
 TEST(ShellObstacleCourse, PinchedHemisphereWithHole) {
-  const ElementRegistry registry = builtin();
+  const ElementRegistry registry = test::builtin_registry();
   const double reference = 0.094;
   const Case cases[] = {{"S4", 16, 0.093073, 0.011},
                         {"S8R", 16, 0.09371, 0.004},
@@ -334,7 +329,7 @@ struct TwistedCase {
 };
 
 TEST(ShellObstacleCourse, TwistedBeam) {
-  const ElementRegistry registry = builtin();
+  const ElementRegistry registry = test::builtin_registry();
   const double in_reference = 5.424e-3, out_reference = 1.754e-3;
   const TwistedCase cases[] = {{"S4", 1, 5.3786e-3, 1.6142e-3, 0.009, 0.081},
                                {"S4", 2, 5.4019e-3, 1.7088e-3, 0.005, 0.027},
@@ -368,7 +363,7 @@ TEST(ShellObstacleCourse, TwistedBeam) {
 // -1.7 %); the fully integrated quadratic shells lock (S8 0.086 and 0.085 of the references, S9
 // 0.091 and 0.090; below 0.1).
 TEST(ShellObstacleCourse, ThinTwistedBeam) {
-  const ElementRegistry registry = builtin();
+  const ElementRegistry registry = test::builtin_registry();
   const double in_reference = 5.256e-3, out_reference = 1.294e-3;
   const TwistedCase cases[] = {{"S4", 1, 5.0690e-3, 1.2613e-3, 0.037, 0.026},
                                {"S4", 2, 5.2099e-3, 1.2845e-3, 0.009, 0.008},
@@ -393,7 +388,7 @@ TEST(ShellObstacleCourse, ThinTwistedBeam) {
 }
 
 TEST(ShellObstacleCourse, ThinTwistedBeamLocksFullyIntegrated) {
-  const ElementRegistry registry = builtin();
+  const ElementRegistry registry = test::builtin_registry();
   const double in_reference = 5.256e-3, out_reference = 1.294e-3;
   const struct {
     const char* type;
@@ -418,7 +413,7 @@ TEST(ShellObstacleCourse, ThinTwistedBeamLocksFullyIntegrated) {
 // thin S8R element (1.1 x 1.1, t = 0.0032) clamped at one corner node, whose two spurious modes
 // (docs/elements.md) no support restrains.
 TEST(ShellObstacleCourse, ThinTwistedBeamWithoutSupportIsRefusedAsSingular) {
-  const ElementRegistry registry = builtin();
+  const ElementRegistry registry = test::builtin_registry();
   const auto refusal = [&](test::ShellGrid g, const char* name,
                            const std::function<std::vector<int>(int, int, int, int)>& fixed) {
     g.fixed = fixed;

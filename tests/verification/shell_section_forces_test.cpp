@@ -20,13 +20,13 @@
 #include <Eigen/Core>
 
 #include "shell_decks.hpp"
+#include "support/element_registries.hpp"
 
 namespace styk {
 namespace {
 
 TEST(ShellSectionForces, CantileverStripTransverseShearEqualsTheEdgeShear) {
-  ElementRegistry registry;
-  register_builtin_elements(registry);
+  ElementRegistry registry = test::builtin_registry();
   const double P = 2.0, b = 0.2, Q = P / b;
   for (const char* type : {"S4", "S8R", "S9R", "STRI3"}) {
     const test::ShellGrid g = test::cantilever_strip(type, P);

@@ -17,17 +17,12 @@
 #include "styk/io/dat_writer.hpp"
 #include "styk/io/results_file.hpp"
 #include "styk/io/vtu_export.hpp"
+#include "support/element_registries.hpp"
 
 namespace styk {
 namespace {
 
 constexpr double kP = 2.0, kQ = kP / 0.2;
-
-ElementRegistry builtin() {
-  ElementRegistry registry;
-  register_builtin_elements(registry);
-  return registry;
-}
 
 struct Solved {
   Model model;
@@ -44,7 +39,7 @@ Solved solve_strip(const std::string& type, const ElementRegistry& registry) {
 }
 
 TEST(ShellShearOutput, SfqHoldsTheEdgeShearAtEveryStation) {
-  const ElementRegistry registry = builtin();
+  const ElementRegistry registry = test::builtin_registry();
   for (const char* type : {"S4", "S8R", "S9R", "STRI3"}) {
     const Solved s = solve_strip(type, registry);
     const IncrementResult& inc = s.results.increments.back();
@@ -63,7 +58,7 @@ TEST(ShellShearOutput, SfqHoldsTheEdgeShearAtEveryStation) {
 }
 
 TEST(ShellShearOutput, HdfDatAndVtuCarrySfq) {
-  const ElementRegistry registry = builtin();
+  const ElementRegistry registry = test::builtin_registry();
   const std::filesystem::path dir = test::test_scratch_dir("tests/shell_shear_output");
   const Solved s = solve_strip("S8R", registry);
   const IncrementResult& inc = s.results.increments.back();

@@ -30,6 +30,7 @@
 #include "styk/elements/builtin.hpp"
 #include "styk/inp/reader.hpp"
 #include "styk/solver/analysis.hpp"
+#include "support/element_registries.hpp"
 
 namespace styk {
 namespace {
@@ -96,8 +97,7 @@ double bore_displacement(double nu) {
   const std::filesystem::path path =
       std::filesystem::temp_directory_path() / ("styk_spec_3_1_7_cpe8_" + number(nu) + ".inp");
   std::ofstream(path) << cylinder_deck(nu);
-  ElementRegistry registry;
-  register_builtin_elements(registry);
+  ElementRegistry registry = test::builtin_registry();
   const Model model = read_inp(path.string(), registry);
   SolveOptions options;
   options.threads = 2;

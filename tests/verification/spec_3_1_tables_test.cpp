@@ -17,6 +17,7 @@
 #include "styk/inp/writer.hpp"
 #include "styk/io/dat_reader.hpp"
 #include "styk/studies/verify/report.hpp"
+#include "support/ccx_runner.hpp"
 
 namespace styk::verify {
 namespace {
@@ -52,12 +53,8 @@ class Spec3_1 : public ::testing::Test {
       std::ofstream deck(dir / "job.inp");
       write_inp(model, deck);
     }
-    const std::string command =
-        "cd '" + dir.string() + "' && rm -f job.dat && OMP_NUM_THREADS=1 ccx -i job > ccx.log 2>&1";
-    if (std::system(command.c_str()) != 0)
-      throw std::runtime_error("ccx failed in " + dir.string() +
-                               " (is CalculiX installed? scripts/install-deps.sh --test installs "
-                               "calculix-ccx)");
+    if (test::run_ccx(dir, "job").exit_code != 0)
+      throw std::runtime_error("ccx failed in " + dir.string() + " (" + test::kCcxMissing + "?)");
     std::ifstream dat(dir / "job.dat");
     const std::vector<DatDisplacements> blocks = parse_dat_displacements(dat);
     if (blocks.empty())

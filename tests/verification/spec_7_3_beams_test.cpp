@@ -24,17 +24,12 @@
 #include <gtest/gtest.h>
 
 #include "beam_decks.hpp"
+#include "support/element_registries.hpp"
 
 namespace styk {
 namespace {
 
 constexpr double kThin = 3.1622776601683794e-3;  // sqrt(1e-5)
-
-ElementRegistry builtin() {
-  ElementRegistry registry;
-  register_builtin_elements(registry);
-  return registry;
-}
 
 // |actual - printed| <= half a unit in the printed value's last digit; `printed` as the thesis
 // prints it, e.g. "0.762" or "0.128E-3".
@@ -63,7 +58,7 @@ double timoshenko_tip(double h) {
 
 // SPEC §7.3 Tab 7.1a, all 20 cells.
 TEST(Spec73Tab71a, LinearTimoshenkoCantileverMatchesEveryPrintedDigit) {
-  const ElementRegistry registry = builtin();
+  const ElementRegistry registry = test::builtin_registry();
   const std::vector<Column> columns = {
       {1.0,
        "REDUCED",
@@ -110,7 +105,7 @@ TEST(Spec73Tab71a, LinearTimoshenkoCantileverMatchesEveryPrintedDigit) {
 //   full:    w = w_b (1 - 1 / (4 n^2)) / (1 + k G A l^2 / (12 E I)) + P L / (k G A),
 // i.e. full integration stiffens the bending by exactly the factor the locking warning quotes.
 TEST(Spec73Tab71a, ReducedAndFullElementsFollowTheirClosedForms) {
-  const ElementRegistry registry = builtin();
+  const ElementRegistry registry = test::builtin_registry();
   const double E = 1000.0, G = 375.0, L = 4.0, I = 1.0 / 12.0, kGA = 5.0 / 6.0 * G;
   const double w_b = L * L * L / (3.0 * E * I);
   for (const int n : {1, 3, 8}) {
@@ -135,7 +130,7 @@ TEST(Spec73Tab71a, ReducedAndFullElementsFollowTheirClosedForms) {
 // B32 locks mildly: its constant curvature is free, only the curvature's variation within an
 // element is stiffened, so the error falls as 1 / n^2: 1.42 % at 4 elements, 0.038 % at 16.
 TEST(Spec73ThinCantilever, EulerBernoulliAndTimoshenkoClosedForms) {
-  const ElementRegistry registry = builtin();
+  const ElementRegistry registry = test::builtin_registry();
   const double E = 2.1e5, nu = 0.3, G = E / (2 * (1 + nu)), L = 10.0, a = 0.1, b = 0.2;
   const double I = a * b * b * b / 12.0, A = a * b, kGA = 5.0 / 6.0 * G * A;
   const double w_eb = L * L * L / (3.0 * E * I), w_t = w_eb + L / kGA;
@@ -171,7 +166,7 @@ TEST(Spec73ThinCantilever, EulerBernoulliAndTimoshenkoClosedForms) {
 // reproduced to round-off by 4 B31 and by 2 B32 elements with the default (reduced) rule and the
 // consistent nodal loads; the support reacts with -q L and the moment -q L^2 / 2.
 TEST(Spec73ThinCantilever, LineLoadIsExactAtTheTip) {
-  const ElementRegistry registry = builtin();
+  const ElementRegistry registry = test::builtin_registry();
   const double E = 2.1e5, G = E / 2.6, L = 10.0, I = 0.1 * 0.008 / 12.0, A = 0.02, q = 0.5;
   const double exact = q * L * L * L * L / (8.0 * E * I) + q * L * L / (2.0 * 5.0 / 6.0 * G * A);
   for (const char* type : {"B31", "B32"}) {
@@ -201,7 +196,7 @@ TEST(Spec73ThinCantilever, LineLoadIsExactAtTheTip) {
 // slenderness compensation (softer shear) would land above 0.1079; no plain Timoshenko
 // beam of the stated section reproduces them, so their run's settings are not recoverable.
 TEST(Spec311StraightBeam, B21ColumnOfTest1b) {
-  const ElementRegistry registry = builtin();
+  const ElementRegistry registry = test::builtin_registry();
   const double E = 1e7, G = E / 2.6, L = 6.0, I = 0.1 * 0.008 / 12.0, A = 0.02;
   const double bending = L * L * L / (3.0 * E * I), shear = L / (5.0 / 6.0 * G * A);
   EXPECT_NEAR(bending, 0.108, 1e-12);
@@ -240,7 +235,7 @@ TEST(Spec311StraightBeam, B21ColumnOfTest1b) {
 // Statics: the base reacts with RF = (-1000, 0, 5000) and RM = (0, -1.55e7, 2e6); the arm carries
 // the shear SF2 = -5000 at every station; 144 free dofs (24 nodes x 6).
 TEST(BeamFrameSample, ReactionsBalanceTheLoads) {
-  const ElementRegistry registry = builtin();
+  const ElementRegistry registry = test::builtin_registry();
   const Model model = read_inp(std::string(STYK_SOURCE_DIR) + "/samples/beam-frame.inp", registry);
   AnalysisReport report;
   const Results results = run_static_analysis(model, registry, SolveOptions{}, nullptr, &report);

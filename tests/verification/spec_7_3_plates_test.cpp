@@ -18,6 +18,7 @@
 #include <gtest/gtest.h>
 
 #include "shell_decks.hpp"
+#include "support/element_registries.hpp"
 
 namespace styk {
 namespace {
@@ -25,12 +26,6 @@ namespace {
 constexpr double kPi = 3.14159265358979323846;
 constexpr double kE = 10.92e5, kNu = 0.3, kQ = 10.0;
 const double kD1 = kE / (12.0 * (1.0 - kNu * kNu));
-
-ElementRegistry builtin() {
-  ElementRegistry registry;
-  register_builtin_elements(registry);
-  return registry;
-}
 
 // Centre deflection of the hard simply supported square (side 1) in the table's units:
 // Kirchhoff (shear = false) or Mindlin (k = 5/6).
@@ -118,7 +113,7 @@ const char* const kTypes71b[4] = {"S8R", "S8", "S9R", "S9"};
 // (the series gives 25.11, the shear term alone 5.2 times the Kirchhoff value), so there the
 // thesis and Styk differ by a factor 5.4, a definition the thesis does not state.
 TEST(Spec73Plates, Tab71bSerendipityLocksLagrangeStays) {
-  const ElementRegistry registry = builtin();
+  const ElementRegistry registry = test::builtin_registry();
   double previous_s8 = 1.0;
   for (const Row& row : kTab71b) {
     const double mindlin = series_centre(row.t, true);
@@ -150,7 +145,7 @@ TEST(Spec73Plates, Tab71bSerendipityLocksLagrangeStays) {
 // 4-node Kirchhoff column has no Styk element; the 4-node Mindlin S4 (MITC4) series is shown in
 // its place (from below). Each value asserted to 5e-4 (table units / 1e9).
 TEST(Spec73Plates, Tab72MeshSeries) {
-  const ElementRegistry registry = builtin();
+  const ElementRegistry registry = test::builtin_registry();
   const int quarter[6] = {1, 2, 4, 8, 16, 32};
   const double s9r[6] = {4.21877, 4.07049, 4.06285, 4.06240, 4.06238, 4.06237};
   const double s4[6] = {3.18880, 3.96901, 4.04144, 4.05723, 4.06109, 4.06205};
@@ -179,7 +174,7 @@ TEST(Spec73Plates, Tab72MeshSeries) {
 // approaching the h^2 rate 4; the last ratio asserted within 3 ... 4.5); the element has no
 // shear strain, so its t^3 w is the same at every thickness (16x16, t = 1 ... 0.001, to 1e-9).
 TEST(Spec73Plates, Tab72KirchhoffTriangleSeries) {
-  const ElementRegistry registry = builtin();
+  const ElementRegistry registry = test::builtin_registry();
   const int quarter[6] = {1, 2, 4, 8, 16, 32};
   const double stri3[6] = {4.16146, 4.05587, 4.06485, 4.06367, 4.06277, 4.06247};
   const double kirchhoff = series_centre(0.001, false) * 1e-9;
@@ -218,7 +213,7 @@ TEST(Spec73Plates, Tab72KirchhoffTriangleSeries) {
 // 5e-4; the error falls as h^2 (ratios 3.44, 3.87, 3.91 measured; 3.5 ... 4.5 asserted from 8x8
 // on) and 32x32 is within 0.5 %.
 TEST(Spec73Plates, ClampedSquareKirchhoffTriangles) {
-  const ElementRegistry registry = builtin();
+  const ElementRegistry registry = test::builtin_registry();
   const double reference = 0.00126532;
   const double measured[4] = {1.547384e-3, 1.347411e-3, 1.286532e-3, 1.270678e-3};
   double previous_error = 0.0;
@@ -288,8 +283,7 @@ double thick_plate_centre(const std::string& type, int n, const ElementRegistry&
 }
 
 TEST(Spec315ThickPlate, S8RColumn) {
-  ElementRegistry registry;
-  register_builtin_elements(registry);
+  ElementRegistry registry = test::builtin_registry();
   const double w6 = thick_plate_centre("S8R", 6, registry);
   const double w10 = thick_plate_centre("S8R", 10, registry);
   std::printf(

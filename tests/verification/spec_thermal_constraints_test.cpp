@@ -29,6 +29,8 @@
 #include "styk/mesher/block_mesh.hpp"
 #include "styk/mesher/geometry_maps.hpp"
 #include "styk/solver/analysis.hpp"
+#include "support/ccx_runner.hpp"
+#include "support/element_registries.hpp"
 
 namespace styk {
 namespace {
@@ -117,8 +119,7 @@ Model sector(double nu, Symmetry symmetry) {
 }
 
 IncrementResult solve(const Model& model) {
-  ElementRegistry registry;
-  register_builtin_elements(registry);
+  ElementRegistry registry = test::builtin_registry();
   return run_static_analysis(model, registry, {}, nullptr, nullptr).increments.at(0);
 }
 
@@ -233,10 +234,8 @@ void cross_check_with_ccx(const Model& model, const std::string& job) {
     std::ofstream deck(dir / (job + ".inp"));
     write_inp(model, deck);
   }
-  const std::string command = "cd '" + dir.string() + "' && rm -f " + job +
-                              ".dat && OMP_NUM_THREADS=1 ccx -i " + job + " > ccx.log 2>&1";
-  ASSERT_EQ(std::system(command.c_str()), 0)
-      << "ccx failed in " << dir << " (is calculix-ccx installed?)";
+  ASSERT_EQ(test::run_ccx(dir, job).exit_code, 0)
+      << "ccx failed in " << dir << " (" << test::kCcxMissing << "?)";
   std::ifstream dat(dir / (job + ".dat"));
   const std::map<Id, CcxDisplacement> theirs = last_displacement_block(dat);
 

@@ -6,12 +6,12 @@
 #include "styk/core/element_registry.hpp"
 #include "styk/elements/builtin.hpp"
 #include "styk/solver/analysis.hpp"
+#include "support/element_registries.hpp"
 
 namespace styk::verification {
 
 Results solve(const Model& model) {
-  ElementRegistry registry;
-  register_builtin_elements(registry);
+  ElementRegistry registry = test::builtin_registry();
   SolveOptions options;
   return run_static_analysis(model, registry, options, nullptr, nullptr);
 }

@@ -58,7 +58,7 @@ void read_msh2(MshTokens& tokens, RawMesh& mesh) {
       read_nodes(tokens, mesh);
     else if (section == "$Elements")
       read_elements(tokens, mesh);
-    else if (section.rfind("$", 0) == 0 && section.rfind("$End", 0) != 0)
+    else if (section.rfind('$', 0) == 0 && section.rfind("$End", 0) != 0)
       skip_section(tokens, section);
     else
       tokens.fail("expected a section ($Nodes, $Elements, ...), found '" + section + "'");

@@ -128,7 +128,7 @@ void read_msh4(MshTokens& tokens, RawMesh& mesh) {
       tokens.fail(
           "a partitioned mesh ($PartitionedEntities) is not read: save the mesh whole "
           "(Mesh.PartitionSplitMeshFiles = 0, or without partitioning)");
-    else if (section.rfind("$", 0) == 0 && section.rfind("$End", 0) != 0)
+    else if (section.rfind('$', 0) == 0 && section.rfind("$End", 0) != 0)
       skip_section(tokens, section);
     else
       tokens.fail("expected a section ($Entities, $Nodes, $Elements, ...), found '" + section +

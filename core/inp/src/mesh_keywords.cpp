@@ -1,5 +1,6 @@
 // *HEADING, *NODE, *ELEMENT, *NSET, *ELSET.
 #include <algorithm>
+#include <vector>
 
 #include "deck_reader.hpp"
 #include "numbers.hpp"
@@ -17,6 +18,26 @@ void for_each_generated(Id first, Id last, Id step, Visit&& visit) {
     visit(id);
     if (last - id < step) break;
   }
+}
+
+// The indices of the model's entities (count of them, id_of(index) their ids, index_of(id) the
+// lookup) whose ids lie in the GENERATE range. A range longer than the model ("1, 2147483647") is
+// matched against the model's ids instead of walked id by id, so no range takes longer than the
+// model is large.
+template <class IdOf, class IndexOf>
+std::vector<int> generated_indices(int count, IdOf&& id_of, IndexOf&& index_of, Id first, Id last,
+                                   Id step) {
+  std::vector<int> out;
+  if ((last - first) / step >= static_cast<Id>(count)) {
+    for (int i = 0; i < count; ++i)
+      if (const Id id = id_of(i); id >= first && id <= last && (id - first) % step == 0)
+        out.push_back(i);
+    return out;
+  }
+  for_each_generated(first, last, step, [&](Id id) {
+    if (const int index = index_of(id); index >= 0) out.push_back(index);
+  });
+  return out;
 }
 
 std::string describe_range(Id first, Id last, Id step) {
@@ -160,11 +181,11 @@ void DeckReader::on_nset(const KeywordLine& kw) {
                                           std::to_string(last) + ": last is smaller than first");
       // CalculiX lets a range pass over ids that are not nodes; they are skipped. A range that
       // names no node at all is an error.
-      const std::size_t before = members.size();
-      for_each_generated(first, last, step, [&](Id id) {
-        if (const int index = model_.node_index(id); index >= 0) members.push_back(index);
-      });
-      if (members.size() == before)
+      const std::vector<int> generated = generated_indices(
+          model_.node_count(), [&](int n) { return model_.node_ids[n]; },
+          [&](Id id) { return model_.node_index(id); }, first, last, step);
+      members.insert(members.end(), generated.begin(), generated.end());
+      if (generated.empty())
         throw InputError(line->where, "NSET=" + name + ", GENERATE: no node has an id in " +
                                           describe_range(first, last, step));
       continue;
@@ -194,11 +215,11 @@ void DeckReader::on_elset(const KeywordLine& kw) {
       if (last < first)
         throw InputError(line->where, "GENERATE range " + std::to_string(first) + ", " +
                                           std::to_string(last) + ": last is smaller than first");
-      const std::size_t before = members.size();
-      for_each_generated(first, last, step, [&](Id id) {
-        if (const int index = model_.element_index(id); index >= 0) members.push_back(index);
-      });
-      if (members.size() == before)
+      const std::vector<int> generated = generated_indices(
+          model_.element_count(), [&](int e) { return model_.elements[e].id; },
+          [&](Id id) { return model_.element_index(id); }, first, last, step);
+      members.insert(members.end(), generated.begin(), generated.end());
+      if (generated.empty())
         throw InputError(line->where, "ELSET=" + name + ", GENERATE: no element has an id in " +
                                           describe_range(first, last, step));
       continue;

@@ -112,6 +112,12 @@ Id id_field(const DataLine& line, std::size_t index, const std::string& what) {
   if (value < 1)
     throw InputError(line.where, field_label(index, what) + ": ids must be positive, read " +
                                      std::to_string(value));
+  if (value > kLargestId)
+    throw InputError(line.where, field_label(index, what) + ": " + std::to_string(value) +
+                                     " is larger than the largest id, " +
+                                     std::to_string(kLargestId) +
+                                     " (CalculiX's 32-bit ids; the .dat and .frd id columns "
+                                     "hold 10 digits)");
   return value;
 }
 

@@ -18,7 +18,11 @@ int displacement_dof(const DataLine& line, std::size_t index, const std::string&
 // A *BOUNDARY dof: 1..6 (displacement, rotation), 11 (temperature) or 9 (electric potential);
 // whether it fits the step is checked when the deck is complete.
 int boundary_dof(const DataLine& line, std::size_t index, const std::string& what);
-// A user id: an integer >= 1.
+// The largest id a deck may give a node or element: CalculiX's 32-bit ids, which also fill the
+// 10-digit id columns of the .dat and .frd files exactly (docs/input.md "Ids").
+inline constexpr Id kLargestId = 2147483647;
+
+// A user id: an integer from 1 to kLargestId.
 Id id_field(const DataLine& line, std::size_t index, const std::string& what);
 
 // Conversions of parameter values; `what` is e.g. "INC= of *STEP".

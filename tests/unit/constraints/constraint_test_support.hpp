@@ -15,6 +15,7 @@
 #include "hex_model_builder.hpp"
 #include "styk/inp/reader.hpp"
 #include "styk/solver/analysis.hpp"
+#include "support/element_registries.hpp"
 
 namespace styk::test {
 
@@ -85,8 +86,7 @@ inline Model parse_deck(const std::string& name, const std::string& deck) {
   const std::filesystem::path dir = test::test_scratch_dir("tests/constraints_decks");
   const std::filesystem::path path = dir / name;
   std::ofstream(path) << deck;
-  ElementRegistry registry;
-  register_builtin_elements(registry);
+  ElementRegistry registry = test::builtin_registry();
   return read_inp(path.string(), registry);
 }
 

@@ -11,6 +11,7 @@
 #include <gtest/gtest.h>
 
 #include "constraint_test_support.hpp"
+#include "support/element_registries.hpp"
 
 namespace styk {
 namespace {
@@ -170,8 +171,7 @@ TEST(Equation, DeckErrorsCarryTheEquationLine) {
       "*MATERIAL, NAME=STEEL\n*ELASTIC\n1000., 0.3\n*SOLID SECTION, ELSET=EALL, MATERIAL=STEEL\n"
       "*BOUNDARY\n1, 1, 3\n4, 1, 3\n5, 1, 3\n8, 1, 3\n";  // 20 lines
   const std::string step = "*STEP\n*STATIC\n*BOUNDARY\n2, 1, 1, 0.01\n*END STEP\n";
-  ElementRegistry registry;
-  register_builtin_elements(registry);
+  ElementRegistry registry = test::builtin_registry();
   {
     const Model model =
         test::parse_deck("eq_prescribed.inp", head + "*EQUATION\n2\n2, 1, 1., 3, 1, -1.\n" + step);

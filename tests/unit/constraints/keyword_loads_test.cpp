@@ -5,6 +5,7 @@
 #include <Eigen/Dense>
 
 #include "keyword_test_support.hpp"
+#include "support/element_registries.hpp"
 
 namespace styk {
 namespace {
@@ -58,8 +59,7 @@ TEST(KeywordLoads, GravityOnAColumn) {
   const test::Solved s = solve_text("gravity_column.inp", deck);
   const IncrementResult& inc = s.results.increments[0];
   const double rho_g = 7.85e-9 * 9810.0;
-  ElementRegistry registry;
-  register_builtin_elements(registry);
+  ElementRegistry registry = test::builtin_registry();
   double worst = 0.0;
   for (int e = 0; e < s.model.element_count(); ++e) {
     // Integration point heights from the rule (3 x 3 x 3 Gauss on an element of height 1).

@@ -14,6 +14,7 @@
 #include "styk/elements/builtin.hpp"
 #include "styk/inp/reader.hpp"
 #include "styk/solver/analysis.hpp"
+#include "support/element_registries.hpp"
 
 namespace styk::test {
 
@@ -26,8 +27,7 @@ inline Solved solve_text(const std::string& name, const std::string& deck) {
   const std::filesystem::path dir = test::test_scratch_dir("tests/keyword_decks");
   const std::filesystem::path path = dir / name;
   std::ofstream(path) << deck;
-  ElementRegistry registry;
-  register_builtin_elements(registry);
+  ElementRegistry registry = test::builtin_registry();
   Solved out;
   out.model = read_inp(path.string(), registry);
   out.results = run_static_analysis(out.model, registry, SolveOptions{}, nullptr, nullptr);

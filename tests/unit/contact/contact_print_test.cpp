@@ -19,6 +19,7 @@
 #include <gtest/gtest.h>
 
 #include "cli_runner.hpp"
+#include "support/ccx_runner.hpp"
 
 namespace styk::testing {
 namespace {
@@ -146,16 +147,14 @@ std::vector<std::string> block(const std::vector<std::string>& lines, const std:
 // negative for penetration) — docs/results.md lists the differences. ccx's penalty pressure is
 // 1.498651 against the exact 1.5: compared within 2e-3.
 TEST(ContactPrint, StressBlockHasTheLayoutOfCalculix) {
-  ASSERT_EQ(std::system("command -v ccx > /dev/null 2>&1"), 0)
-      << "ccx (CalculiX) is not on PATH: run scripts/install-deps.sh --test";
+  ASSERT_TRUE(test::ccx_on_path()) << test::kCcxMissing;
   const std::string dir = scratch_dir("contact_print_ccx");
   std::string deck = read_file(kDeck);
   const std::string request = "CSTR, CDIS, CSTATUS\n";
   ASSERT_NE(deck.find(request), std::string::npos);
   deck.replace(deck.find(request), request.size(), "CSTR, CDIS\n");
   { std::ofstream(dir + "/pair.inp") << deck; }
-  ASSERT_EQ(run_command("ccx -i pair > ccx.log 2>&1", dir).exit_code, 0)
-      << "ccx failed, see " << dir << "/ccx.log";
+  ASSERT_EQ(test::run_ccx(dir, "pair").exit_code, 0) << "ccx failed, see " << dir << "/pair.log";
   const std::vector<std::string> ccx = lines_of(read_file(dir + "/pair.dat"));
   const CommandResult run = run_command(styk_executable() + " solve '" + kDeck + "' -o out", dir);
   ASSERT_EQ(run.exit_code, 0) << run.err;

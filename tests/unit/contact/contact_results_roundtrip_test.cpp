@@ -30,6 +30,7 @@
 #include "styk/inp/reader.hpp"
 #include "styk/io/results_file.hpp"
 #include "styk/solver/analysis.hpp"
+#include "support/element_registries.hpp"
 
 namespace styk::testing {
 namespace {
@@ -41,8 +42,7 @@ const std::string kDeck =
 class ContactResultsRoundTrip : public ::testing::Test {
  protected:
   static void SetUpTestSuite() {
-    ElementRegistry registry;
-    register_builtin_elements(registry);
+    ElementRegistry registry = test::builtin_registry();
     model_ = std::make_unique<Model>(read_inp(kDeck, registry));
     results_ = std::make_unique<Results>(
         run_static_analysis(*model_, registry, SolveOptions{}, nullptr, nullptr));

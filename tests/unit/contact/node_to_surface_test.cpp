@@ -15,6 +15,7 @@
 #include "styk/core/element_registry.hpp"
 #include "styk/core/model.hpp"
 #include "styk/elements/builtin.hpp"
+#include "support/element_registries.hpp"
 #include "surface_geometry.hpp"
 
 namespace styk::contact {
@@ -143,8 +144,7 @@ INSTANTIATE_TEST_SUITE_P(QuadraticFaces, NodeToSurfaceGeometry,
 // outside [-1, 1]^2 by exactly how far it lies beyond, in face coordinates. Unit cube, face S2
 // (z = 1, p = 2x - 1, q = 2y - 1): (1.5, 0.5, 1.2) -> p = 2, q = 0, outside() = 1.
 TEST(NodeToSurfaceFlat, PointBeyondTheFaceReportsHowFarOutside) {
-  ElementRegistry registry;
-  register_builtin_elements(registry);
+  ElementRegistry registry = test::builtin_registry();
   const PlacedFace f = placed(registry, "C3D8", 1, [](const Vec3& xi) {
     return Eigen::Vector3d(0.5 * (xi[0] + 1), 0.5 * (xi[1] + 1), 0.5 * (xi[2] + 1));
   });
@@ -192,8 +192,7 @@ Model shifted_pair() {
 }
 
 TEST(NodeToSurfacePairing, NonMatchingFacesGetShapeFunctionWeightsAndOutsideNodesAreReported) {
-  ElementRegistry registry;
-  register_builtin_elements(registry);
+  ElementRegistry registry = test::builtin_registry();
   const Model model = shifted_pair();
   std::vector<std::string> notes;
   const std::vector<ContactConstraint> constraints =
@@ -230,8 +229,7 @@ TEST(NodeToSurfacePairing, NonMatchingFacesGetShapeFunctionWeightsAndOutsideNode
 
 // Every slave node beyond the master: nothing is constrained, and the note counts all four.
 TEST(NodeToSurfacePairing, SlaveSurfaceBesideTheMasterConstrainsNothing) {
-  ElementRegistry registry;
-  register_builtin_elements(registry);
+  ElementRegistry registry = test::builtin_registry();
   Model model = shifted_pair();
   for (int n = 8; n < 16; ++n) model.coords[n][0] += 5.0;  // the slave cube moved away in x
   std::vector<std::string> notes;

@@ -14,22 +14,16 @@
 #include "element_fixtures.hpp"
 #include "styk/core/element_registry.hpp"
 #include "styk/elements/builtin.hpp"
+#include "support/element_registries.hpp"
 
 namespace styk {
 namespace {
 
 constexpr double kPi = 3.14159265358979323846;
 
-const ElementRegistry& registry() {
-  static const ElementRegistry r = [] {
-    ElementRegistry out;
-    register_builtin_elements(out);
-    return out;
-  }();
-  return r;
+const TElement& element(const std::string& type) {
+  return *test::shared_builtin_registry().find(type);
 }
-
-const TElement& element(const std::string& type) { return *registry().find(type); }
 
 // The section r in [2, 4], z in [0, 1] (x = r, y = z), nodes moved in-plane by up to
 // `amplitude` (seeded).

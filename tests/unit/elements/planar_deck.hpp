@@ -16,14 +16,9 @@
 #include "styk/elements/builtin.hpp"
 #include "styk/inp/reader.hpp"
 #include "styk/solver/analysis.hpp"
+#include "support/element_registries.hpp"
 
 namespace styk::test {
-
-inline ElementRegistry builtin_elements() {
-  ElementRegistry registry;
-  register_builtin_elements(registry);
-  return registry;
-}
 
 // Writes `text` to a fresh file in the temporary directory and returns its path.
 inline std::string write_deck(const std::string& name, const std::string& text) {
@@ -98,7 +93,7 @@ inline std::string plate_section(double young, double poisson, const std::string
 }
 
 inline Results solve_deck(const std::string& name, const std::string& text, Model* out = nullptr) {
-  const ElementRegistry registry = builtin_elements();
+  const ElementRegistry registry = builtin_registry();
   Model model = read_inp(write_deck(name, text), registry);
   SolveOptions options;
   options.threads = 2;

@@ -7,17 +7,12 @@
 
 #include "styk/core/shell_normals.hpp"
 #include "styk/elements/builtin.hpp"
+#include "support/element_registries.hpp"
 
 namespace styk {
 namespace {
 
 constexpr double kPi = 3.14159265358979323846;
-
-ElementRegistry builtin() {
-  ElementRegistry registry;
-  register_builtin_elements(registry);
-  return registry;
-}
 
 struct Mesh {
   Model model;
@@ -61,7 +56,7 @@ Eigen::Vector3d at(const ShellNormals& normals, const Model& m, int e, int a) {
 }
 
 TEST(ShellNormals, FacetedCylinderGetsRadialNormalsInsideAndFacetNormalsAtItsEdges) {
-  const ElementRegistry registry = builtin();
+  const ElementRegistry registry = test::builtin_registry();
   const Mesh mesh = faceted_cylinder(registry, 6);  // 15-degree facets: within 20, averaged
   const ShellNormals normals = resolve_shell_normals(mesh.model, mesh.formulation);
   ASSERT_TRUE(normals.any());
@@ -85,7 +80,7 @@ TEST(ShellNormals, FacetedCylinderGetsRadialNormalsInsideAndFacetNormalsAtItsEdg
 }
 
 TEST(ShellNormals, FacetsFurtherApartThanTwentyDegreesAreFolds) {
-  const ElementRegistry registry = builtin();
+  const ElementRegistry registry = test::builtin_registry();
   const Mesh mesh = faceted_cylinder(registry, 2);  // 45-degree facets
   const ShellNormals normals = resolve_shell_normals(mesh.model, mesh.formulation);
   EXPECT_EQ(normals.fold_nodes, (std::vector<Id>{3, 4}));  // the shared edge
@@ -97,7 +92,7 @@ TEST(ShellNormals, FacetsFurtherApartThanTwentyDegreesAreFolds) {
 }
 
 TEST(ShellNormals, GivenNormalsReplaceReverseAndWarn) {
-  const ElementRegistry registry = builtin();
+  const ElementRegistry registry = test::builtin_registry();
   Mesh mesh = faceted_cylinder(registry, 2);  // facet normals at 22.5 and 67.5 degrees
   const auto direction = [](double degrees) {
     return Vec3{std::cos(degrees * kPi / 180.0), std::sin(degrees * kPi / 180.0), 0.0};
@@ -122,7 +117,7 @@ TEST(ShellNormals, GivenNormalsReplaceReverseAndWarn) {
 TEST(ShellNormals, QuadraticShellsOnACylinderAverageToTheRadius) {
   // Two S8R elements over 2 x 30 degrees: each element's own normal at the shared nodes comes from
   // its parabolic arc (off the radius by ~0.1 degree); the average is radial by symmetry.
-  const ElementRegistry registry = builtin();
+  const ElementRegistry registry = test::builtin_registry();
   Mesh mesh;
   const auto point = [&](Id id, double degrees, double z) {
     return add_node(mesh.model, id, std::cos(degrees * kPi / 180.0),
@@ -145,7 +140,7 @@ TEST(ShellNormals, QuadraticShellsOnACylinderAverageToTheRadius) {
 }
 
 TEST(ShellNormals, ModelsWithoutCurvedShellsResolveNothing) {
-  const ElementRegistry registry = builtin();
+  const ElementRegistry registry = test::builtin_registry();
   Mesh mesh;
   for (int k = 0; k < 3; ++k) add_node(mesh.model, k + 1, k, 0.0, 0.0);
   add_element(mesh, registry, "B31", 1, {0, 1});

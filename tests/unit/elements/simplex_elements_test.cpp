@@ -16,20 +16,14 @@
 #include "styk/core/element_registry.hpp"
 #include "styk/core/face_param.hpp"
 #include "styk/elements/builtin.hpp"
+#include "support/element_registries.hpp"
 
 namespace styk {
 namespace {
 
-const ElementRegistry& registry() {
-  static const ElementRegistry r = [] {
-    ElementRegistry out;
-    register_builtin_elements(out);
-    return out;
-  }();
-  return r;
+const TElement& element(const std::string& type) {
+  return *test::shared_builtin_registry().find(type);
 }
-
-const TElement& element(const std::string& type) { return *registry().find(type); }
 
 // The reference element with every node moved by up to `amplitude` (mid-edge nodes too: curved
 // edges for the quadratic types).

@@ -14,6 +14,7 @@
 #include "styk/core/element_registry.hpp"
 #include "styk/elements/builtin.hpp"
 #include "styk/gmsh/gmsh_import.hpp"
+#include "support/element_registries.hpp"
 
 namespace styk {
 namespace {
@@ -22,19 +23,10 @@ std::string fixture(const std::string& name) {
   return std::string(STYK_SOURCE_DIR) + "/tests/inputs/gmsh/" + name;
 }
 
-const ElementRegistry& registry() {
-  static const ElementRegistry r = [] {
-    ElementRegistry built;
-    register_builtin_elements(built);
-    return built;
-  }();
-  return r;
-}
-
 // The element's volume by its own full rule; fails the test on a Jacobian that is not positive.
 double element_volume(const Model& model, int e) {
   const Element& element = model.elements[e];
-  const TElement& type = *registry().find(element.type);
+  const TElement& type = *test::shared_builtin_registry().find(element.type);
   const int n = type.node_count();
   Eigen::MatrixXd x(n, 3);
   for (int a = 0; a < n; ++a)
@@ -56,8 +48,8 @@ double element_volume(const Model& model, int e) {
 // natural point: a node from the wrong edge or face lands elsewhere.
 void expect_nodes_at_natural_points(const Model& model, int e, const std::string& linear_type) {
   const Element& element = model.elements[e];
-  const TElement& type = *registry().find(element.type);
-  const TElement& linear = *registry().find(linear_type);
+  const TElement& type = *test::shared_builtin_registry().find(element.type);
+  const TElement& linear = *test::shared_builtin_registry().find(linear_type);
   const int corners = linear.node_count();
   Eigen::VectorXd N(corners);
   Eigen::MatrixXd dN(corners, 3);

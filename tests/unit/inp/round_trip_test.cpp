@@ -10,6 +10,7 @@
 #include "fake_elements.hpp"
 #include "styk/inp/reader.hpp"
 #include "styk/inp/writer.hpp"
+#include "support/ccx_runner.hpp"
 
 namespace styk {
 namespace {
@@ -230,8 +231,7 @@ TEST(RoundTripAll, NoWrittenNumberIsLongerThanCalculixReads) {
 
 // ccx must accept what write_inp produces from a standard-element deck.
 TEST(RoundTripCcx, CalculixRunsTheWrittenDeck) {
-  ASSERT_EQ(std::system("command -v ccx > /dev/null 2>&1"), 0)
-      << "ccx (CalculiX) is not installed: run scripts/install-deps.sh --test";
+  ASSERT_TRUE(test::ccx_on_path()) << test::kCcxMissing;
   const ElementRegistry registry = fake_registry();
   Model original = read_inp(input_path("good/block_c3d20.inp"), registry);
   // A pressure whose exact form has 22 characters ("1.2345678901234567e-05"): ccx refuses the
@@ -240,13 +240,9 @@ TEST(RoundTripCcx, CalculixRunsTheWrittenDeck) {
   original.steps[0].dloads[0].magnitude = 1.2345678901234567e-05;
   const std::string path = write_deck("ccx_run/written_c3d20.inp", written(original));
   const std::string dir = (test::scratch_dir() / "ccx_run").string();
-  std::remove((dir + "/written_c3d20.dat").c_str());
-  const int status =
-      std::system(("cd '" + dir + "' && ccx -i written_c3d20 > ccx.log 2>&1").c_str());
-  ASSERT_EQ(status, 0) << "see " << dir << "/ccx.log";
-  std::ifstream log(dir + "/ccx.log");
-  const std::string text((std::istreambuf_iterator<char>(log)), std::istreambuf_iterator<char>());
-  EXPECT_EQ(text.find("*ERROR"), std::string::npos) << text;
+  const test::CcxRun run = test::run_ccx(dir, "written_c3d20");
+  ASSERT_EQ(run.exit_code, 0) << run.log;
+  EXPECT_EQ(run.log.find("*ERROR"), std::string::npos) << run.log;
   std::ifstream dat(dir + "/written_c3d20.dat");
   const std::string results((std::istreambuf_iterator<char>(dat)),
                             std::istreambuf_iterator<char>());

@@ -9,6 +9,7 @@
 #include "io_test_support.hpp"
 #include "styk/io/dat_reader.hpp"
 #include "styk/io/dat_writer.hpp"
+#include "support/ccx_runner.hpp"
 
 namespace styk {
 namespace {
@@ -17,17 +18,15 @@ namespace {
 std::string run_ccx_on_unit_cube(const std::string& dir_name) {
   const std::string dir = io_test::fresh_dir(dir_name);
   { std::ofstream(dir + "/cube.inp") << io_test::unit_cube_deck(); }
-  const std::string command = "cd '" + dir + "' && ccx -i cube > ccx.log 2>&1";
-  if (std::system(command.c_str()) != 0 || !io_test::file_exists(dir + "/cube.dat")) {
-    ADD_FAILURE() << "ccx failed, see " << dir << "/ccx.log";
+  if (test::run_ccx(dir, "cube").exit_code != 0 || !io_test::file_exists(dir + "/cube.dat")) {
+    ADD_FAILURE() << "ccx failed, see " << dir << "/cube.log";
     return {};
   }
   return io_test::read_text(dir + "/cube.dat");
 }
 
 TEST(CcxDat, ReaderGetsCcxDisplacementsOfUniaxialTension) {
-  ASSERT_TRUE(io_test::ccx_on_path())
-      << "ccx (CalculiX) is not on PATH: run scripts/install-deps.sh --test";
+  ASSERT_TRUE(test::ccx_on_path()) << test::kCcxMissing;
   std::istringstream report(run_ccx_on_unit_cube("ccx_reader"));
   const std::vector<DatDisplacements> u = parse_dat_displacements(report);
   ASSERT_EQ(u.size(), 2u);
@@ -57,8 +56,7 @@ OutputRequest request(OutputRequest::Kind kind, const std::string& set,
 // The cube model with the deck's output requests, and results holding exactly the numbers ccx
 // printed: written back out, they must give ccx's report again, character for character.
 TEST(CcxDat, WriteDatReproducesTheCcxReport) {
-  ASSERT_TRUE(io_test::ccx_on_path())
-      << "ccx (CalculiX) is not on PATH: run scripts/install-deps.sh --test";
+  ASSERT_TRUE(test::ccx_on_path()) << test::kCcxMissing;
   const std::string ccx_report = run_ccx_on_unit_cube("ccx_writer");
   ASSERT_FALSE(ccx_report.empty());
 

@@ -5,14 +5,12 @@
 #include <fstream>
 #include <sstream>
 
+#include "support/test_scratch.hpp"
+
 namespace styk::io_test {
 
 std::string fresh_dir(const std::string& name) {
-  const std::filesystem::path dir =
-      std::filesystem::path(STYK_BINARY_DIR) / "tests" / "unit" / "io" / "scratch" / name;
-  std::filesystem::remove_all(dir);
-  std::filesystem::create_directories(dir);
-  return dir.string();
+  return test::fresh_scratch_dir(std::filesystem::path("tests/unit/io/scratch") / name).string();
 }
 
 std::string read_text(const std::string& path) {
@@ -23,8 +21,6 @@ std::string read_text(const std::string& path) {
 }
 
 bool file_exists(const std::string& path) { return std::filesystem::exists(path); }
-
-bool ccx_on_path() { return std::system("command -v ccx > /dev/null 2>&1") == 0; }
 
 Model unit_cube() {
   Model model;

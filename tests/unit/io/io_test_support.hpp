@@ -11,7 +11,6 @@ namespace styk::io_test {
 std::string fresh_dir(const std::string& name);
 std::string read_text(const std::string& path);
 bool file_exists(const std::string& path);
-bool ccx_on_path();
 
 // Unit cube, one C3D8 (id 1), nodes 1-8 in Abaqus order; node sets NALL, FIX (z = 0) and TOP
 // (z = 1), element set EALL. Steps and output requests are left to the test.

@@ -14,6 +14,7 @@
 #include "io_test_support.hpp"
 #include "styk/elements/builtin.hpp"
 #include "styk/io/vtu_export.hpp"
+#include "support/element_registries.hpp"
 
 namespace styk {
 namespace {
@@ -157,8 +158,7 @@ class Pyramid5 : public TElement {
 
 const ElementRegistry& test_registry() {
   static const ElementRegistry registry = [] {
-    ElementRegistry r;
-    register_builtin_elements(r);
+    ElementRegistry r = test::builtin_registry();
     r.add(std::make_unique<Bar3>(), "test plug-in");
     r.add(std::make_unique<Pyramid5>(), "test plug-in");
     return r;

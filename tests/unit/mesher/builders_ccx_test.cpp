@@ -11,14 +11,13 @@
 #include "mesher_checks.hpp"
 #include "styk/inp/writer.hpp"
 #include "styk/mesher/builders.hpp"
+#include "support/ccx_runner.hpp"
 
 namespace styk {
 namespace {
 
-bool have_ccx() { return std::system("command -v ccx > /dev/null 2>&1") == 0; }
-
 TEST(BuildersInCalculix, StandardElementDecksRun) {
-  ASSERT_TRUE(have_ccx()) << "ccx (CalculiX) not found: run scripts/install-deps.sh --test";
+  ASSERT_TRUE(test::ccx_on_path()) << test::kCcxMissing;
   const test::Elements elements;
   const auto scratch = std::filesystem::path(::testing::TempDir()) / "styk_mesher_ccx";
   std::filesystem::create_directories(scratch);
@@ -36,14 +35,10 @@ TEST(BuildersInCalculix, StandardElementDecksRun) {
         std::ofstream out(scratch / (job + ".inp"));
         write_inp(r.model, out);
       }
-      const std::string command =
-          "cd '" + scratch.string() + "' && ccx -i '" + job + "' > '" + job + ".log' 2>&1";
-      EXPECT_EQ(std::system(command.c_str()), 0);
-      std::ifstream log(scratch / (job + ".log"));
-      std::stringstream text;
-      text << log.rdbuf();
-      EXPECT_EQ(text.str().find("*ERROR"), std::string::npos) << text.str().substr(0, 2000);
-      EXPECT_NE(text.str().find("Job finished"), std::string::npos) << text.str().substr(0, 2000);
+      const test::CcxRun run = test::run_ccx(scratch, job);
+      EXPECT_EQ(run.exit_code, 0);
+      EXPECT_EQ(run.log.find("*ERROR"), std::string::npos) << run.log.substr(0, 2000);
+      EXPECT_NE(run.log.find("Job finished"), std::string::npos) << run.log.substr(0, 2000);
     }
   }
   std::filesystem::remove_all(scratch);

@@ -21,11 +21,10 @@
 #include "mesher_checks.hpp"
 #include "styk/inp/writer.hpp"
 #include "styk/mesher/builders.hpp"
+#include "support/ccx_runner.hpp"
 
 namespace styk {
 namespace {
-
-bool have_ccx() { return std::system("command -v ccx > /dev/null 2>&1") == 0; }
 
 struct CcxCase {
   std::string builder;
@@ -34,7 +33,7 @@ struct CcxCase {
 };
 
 TEST(ContactBuildersInCalculix, StandardElementDecksLoad) {
-  ASSERT_TRUE(have_ccx()) << "ccx (CalculiX) not found: run scripts/install-deps.sh --test";
+  ASSERT_TRUE(test::ccx_on_path()) << test::kCcxMissing;
   const test::Elements elements;
   const std::map<std::string, std::string> tiny_fit = {{"around", "2"},
                                                        {"shaft-rings", "1"},
@@ -75,13 +74,9 @@ TEST(ContactBuildersInCalculix, StandardElementDecksLoad) {
         std::ofstream out(scratch / (job + ".inp"));
         write_inp(r.model, out);
       }
-      const std::string command = "cd '" + scratch.string() + "' && timeout 300 ccx -i '" + job +
-                                  "' > '" + job + ".log' 2>&1";
-      const int status = std::system(command.c_str());
-      std::ifstream log(scratch / (job + ".log"));
-      std::stringstream text;
-      text << log.rdbuf();
-      const std::string s = text.str();
+      const test::CcxRun run = test::run_ccx(scratch, job, 300);
+      const int status = run.exit_code;
+      const std::string& s = run.log;
       EXPECT_EQ(s.find("*ERROR reading"), std::string::npos) << s.substr(0, 3000);
       EXPECT_EQ(s.find("*ERROR in calinput"), std::string::npos) << s.substr(0, 3000);
       EXPECT_NE(s.find("increment 1 attempt 1"), std::string::npos) << s.substr(0, 3000);

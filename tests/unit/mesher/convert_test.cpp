@@ -12,6 +12,7 @@
 #include "styk/mesher/block_mesh.hpp"
 #include "styk/mesher/convert.hpp"
 #include "styk/mesher/hex_topology.hpp"
+#include "support/element_registries.hpp"
 
 namespace styk::mesher {
 namespace {
@@ -213,8 +214,7 @@ class Brick27FromC3D20 : public TElement {
 };
 
 TEST(Convert, APluginTypeConvertsFromItsOwnDescription) {
-  ElementRegistry local;
-  register_builtin_elements(local);
+  ElementRegistry local = test::builtin_registry();
   local.add(std::make_unique<Brick27FromC3D20>(*local.find("C3D27")), "test plug-in");
   EXPECT_EQ(conversions_from(local, "C3D20"),
             (std::vector<std::string>{"C3D20R", "C3D27", "TEST27"}));

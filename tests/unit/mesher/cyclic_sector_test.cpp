@@ -30,6 +30,7 @@
 #include "styk/mesher/builders.hpp"
 #include "styk/mesher/merge.hpp"
 #include "styk/solver/analysis.hpp"
+#include "support/ccx_runner.hpp"
 
 namespace styk {
 namespace {
@@ -323,8 +324,7 @@ TEST(CyclicSector, BuilderSectorsAtDefaultDensity) {
 // the semantics docs/input.md states; a different reading would differ at the order of the
 // displacements).
 TEST(CyclicSector, CalculixSolvesTheSectorDeckAlike) {
-  ASSERT_EQ(std::system("command -v ccx > /dev/null 2>&1"), 0)
-      << "ccx (CalculiX) not found: run scripts/install-deps.sh --test";
+  ASSERT_TRUE(test::ccx_on_path()) << test::kCcxMissing;
   const test::Elements elements;
   Solved quarter = solve_shaft(shaft_mesh(), true, elements.registry);
   NodeSet all;
@@ -342,8 +342,7 @@ TEST(CyclicSector, CalculixSolvesTheSectorDeckAlike) {
     std::ofstream out(scratch / "sector.inp");
     write_inp(quarter.model, out);
   }
-  const std::string command = "cd '" + scratch.string() + "' && ccx -i sector > sector.log 2>&1";
-  ASSERT_EQ(std::system(command.c_str()), 0);
+  ASSERT_EQ(test::run_ccx(scratch, "sector").exit_code, 0);
   std::ifstream dat(scratch / "sector.dat");
   const std::vector<DatDisplacements> ccx = parse_dat_displacements(dat);
   ASSERT_EQ(ccx.size(), 1u);

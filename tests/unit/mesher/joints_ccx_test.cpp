@@ -21,6 +21,7 @@
 #include "mesher_checks.hpp"
 #include "styk/inp/writer.hpp"
 #include "styk/mesher/builders.hpp"
+#include "support/ccx_runner.hpp"
 
 namespace styk {
 namespace {
@@ -47,8 +48,7 @@ class JointsInCalculix : public ::testing::TestWithParam<CcxJoint> {};
 
 TEST_P(JointsInCalculix, StandardElementDeckLoads) {
   const CcxJoint& j = GetParam();
-  ASSERT_EQ(std::system("command -v ccx > /dev/null 2>&1"), 0)
-      << "ccx (CalculiX) not found: run scripts/install-deps.sh --test";
+  ASSERT_TRUE(test::ccx_on_path()) << test::kCcxMissing;
   const test::Elements elements;
   auto args = coarse(j.builder);
   args["element"] = j.family;
@@ -62,13 +62,9 @@ TEST_P(JointsInCalculix, StandardElementDeckLoads) {
     std::ofstream out(scratch / (job + ".inp"));
     write_inp(r.model, out);
   }
-  const std::string command =
-      "cd '" + scratch.string() + "' && timeout 15 ccx -i '" + job + "' > '" + job + ".log' 2>&1";
-  const int status = std::system(command.c_str());
-  std::ifstream log(scratch / (job + ".log"));
-  std::stringstream text;
-  text << log.rdbuf();
-  const std::string s = text.str();
+  const test::CcxRun run = test::run_ccx(scratch, job, 15);
+  const int status = run.exit_code;
+  const std::string& s = run.log;
   EXPECT_EQ(s.find("*ERROR reading"), std::string::npos) << s.substr(0, 3000);
   EXPECT_EQ(s.find("*ERROR in"), std::string::npos) << s.substr(0, 3000);
   EXPECT_NE(s.find("increment 1 attempt 1"), std::string::npos) << s.substr(0, 3000);

@@ -6,18 +6,7 @@
 #include <stdexcept>
 #include <vector>
 
-#include "styk/elements/element_setup.hpp"
-
 namespace styk::test {
-
-Elements::Elements() {
-  const auto problems = setup_element_registry(registry, libraries, {build_plugin_directory()});
-  for (const char* name : {"C3D14", "C3D21", "C3D28"})
-    if (!registry.find(name))
-      throw std::runtime_error(std::string("plug-in element ") + name + " not found in " +
-                               STYK_PLUGIN_BUILD_DIR +
-                               (problems.empty() ? "" : ": " + problems[0].message));
-}
 
 double volume(const Model& model, const ElementRegistry& registry) {
   double v = 0.0;

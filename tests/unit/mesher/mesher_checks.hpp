@@ -8,14 +8,16 @@
 #include "styk/core/element_registry.hpp"
 #include "styk/core/model.hpp"
 #include "styk/core/plugin_loader.hpp"
+#include "styk/elements/element_setup.hpp"
+#include "support/element_registries.hpp"
 
 namespace styk::test {
 
-// Built-in elements + the plug-ins of the build tree; the libraries outlive the registry.
-struct Elements {
-  Elements();
-  PluginLibraries libraries;
-  ElementRegistry registry;
+// Built-in elements + the contact hexahedra of the build tree's plug-in directory (not the
+// template plug-in: the builders' type lists stay those of a plain build). Throws when a
+// plug-in is missing.
+struct Elements : FullRegistry {
+  Elements() : FullRegistry({build_plugin_directory()}) { require({"C3D14", "C3D21", "C3D28"}); }
 };
 
 // Sum of det J x weight over every element (full rule); every det J must be positive

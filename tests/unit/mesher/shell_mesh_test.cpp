@@ -13,20 +13,12 @@
 #include "styk/core/diagnostics.hpp"
 #include "styk/elements/builtin.hpp"
 #include "styk/mesher/shell_mesh.hpp"
+#include "support/element_registries.hpp"
 
 namespace styk::mesher {
 namespace {
 
 constexpr double kPi = 3.14159265358979323846;
-
-const ElementRegistry& registry() {
-  static const ElementRegistry r = [] {
-    ElementRegistry out;
-    register_builtin_elements(out);
-    return out;
-  }();
-  return r;
-}
 
 ShellMeshSpec spec(const std::string& type, int nu, int nv, const std::string& elset = "SHELL") {
   ShellMeshSpec s;
@@ -61,7 +53,7 @@ TEST(ShellMesh, PlateCountsNormalAndSides) {
     std::size_t nodes, per_element, side1;
   } cases[] = {{"S4", 12, 4, 4}, {"S8R", 29, 8, 7}, {"S9", 35, 9, 7}};
   for (const auto& c : cases) {
-    const Mesh mesh = shell_plate(3.0, 2.0, spec(c.type, 3, 2), registry());
+    const Mesh mesh = shell_plate(3.0, 2.0, spec(c.type, 3, 2), test::shared_builtin_registry());
     EXPECT_EQ(mesh.nodes.size(), c.nodes) << c.type;
     ASSERT_EQ(mesh.elements.size(), 6u);
     for (const MeshElement& e : mesh.elements) {
@@ -85,8 +77,8 @@ TEST(ShellMesh, PlateCountsNormalAndSides) {
 // nodes included, at R from the y axis (1e-12 R), the normal outward, y from 0 to L.
 TEST(ShellMesh, CylindricalPanelNodesOnTheSurfaceNormalOutward) {
   for (const char* type : {"S4", "S8R", "S9R"}) {
-    const Mesh mesh =
-        shell_cylindrical_panel(25.0, 50.0, 80.0, spec(type, 4, 4, "ROOF"), registry());
+    const Mesh mesh = shell_cylindrical_panel(25.0, 50.0, 80.0, spec(type, 4, 4, "ROOF"),
+                                              test::shared_builtin_registry());
     double lowest_cos = 1.0;
     for (const Vec3& x : mesh.nodes) {
       EXPECT_NEAR(std::hypot(x[0], x[2]), 25.0, 25e-12);
@@ -106,7 +98,8 @@ TEST(ShellMesh, CylindricalPanelNodesOnTheSurfaceNormalOutward) {
 // A full cylinder (360 degrees) shares its seam: 8 x 2 S4 have 8 x 3 nodes, every node used by
 // elements on both sides of the seam, no SIDE2 / SIDE4.
 TEST(ShellMesh, ClosedCylinderSharesItsSeam) {
-  const Mesh mesh = shell_cylindrical_panel(1.0, 2.0, 360.0, spec("S4", 8, 2), registry());
+  const Mesh mesh =
+      shell_cylindrical_panel(1.0, 2.0, 360.0, spec("S4", 8, 2), test::shared_builtin_registry());
   EXPECT_EQ(mesh.nodes.size(), 24u);
   EXPECT_EQ(mesh.node_sets.count("SHELL_SIDE2"), 0u);
   EXPECT_EQ(mesh.node_sets.count("SHELL_SIDE4"), 0u);
@@ -120,7 +113,8 @@ TEST(ShellMesh, ClosedCylinderSharesItsSeam) {
 // MacNeal-Harder's pinched hemisphere (R = 10, an 18 degree hole, a quarter): nodes at R, the
 // highest at R sin 72 deg, the normal outward; the closed hemisphere shares its seam.
 TEST(ShellMesh, HemisphereWithAHole) {
-  const Mesh quarter = shell_hemisphere(10.0, 18.0, 90.0, spec("S8R", 4, 4), registry());
+  const Mesh quarter =
+      shell_hemisphere(10.0, 18.0, 90.0, spec("S8R", 4, 4), test::shared_builtin_registry());
   double top = 0.0;
   for (const Vec3& x : quarter.nodes) {
     EXPECT_NEAR(std::sqrt(dot(x, x)), 10.0, 1e-11);
@@ -131,7 +125,8 @@ TEST(ShellMesh, HemisphereWithAHole) {
   EXPECT_NEAR(top, 10.0 * std::sin(72.0 * kPi / 180), 1e-11);
   for (const MeshElement& e : quarter.elements)
     EXPECT_GT(dot(corner_normal(quarter, e), corner_centre(quarter, e)), 0.0);
-  const Mesh closed = shell_hemisphere(10.0, 18.0, 360.0, spec("S4", 12, 3), registry());
+  const Mesh closed =
+      shell_hemisphere(10.0, 18.0, 360.0, spec("S4", 12, 3), test::shared_builtin_registry());
   EXPECT_EQ(closed.nodes.size(), std::size_t(12 * 4));
 }
 
@@ -147,23 +142,23 @@ TEST(ShellMesh, BadInputIsRefusedByName) {
     return std::string("(nothing thrown)");
   };
   EXPECT_NE(message([] {
-              shell_plate(1, 1, spec("C3D8", 2, 2), registry());
+              shell_plate(1, 1, spec("C3D8", 2, 2), test::shared_builtin_registry());
             }).find("C3D8 is no shell element type"),
             std::string::npos);
   EXPECT_NE(message([] {
-              shell_plate(1, 1, spec("S4", 0, 2), registry());
+              shell_plate(1, 1, spec("S4", 0, 2), test::shared_builtin_registry());
             }).find("divisions must be >= 1"),
             std::string::npos);
   EXPECT_NE(message([] {
-              shell_hemisphere(1, 0, 90, spec("S4", 2, 2), registry());
+              shell_hemisphere(1, 0, 90, spec("S4", 2, 2), test::shared_builtin_registry());
             }).find("the hole must lie in (0, 90) degrees"),
             std::string::npos);
   EXPECT_NE(message([] {
-              shell_cylindrical_panel(1, 1, 400, spec("S4", 2, 2), registry());
+              shell_cylindrical_panel(1, 1, 400, spec("S4", 2, 2), test::shared_builtin_registry());
             }).find("the angle must lie in (0, 360] degrees"),
             std::string::npos);
   EXPECT_NE(message([] {
-              shell_cylindrical_panel(1, 1, 360, spec("S4", 2, 2), registry());
+              shell_cylindrical_panel(1, 1, 360, spec("S4", 2, 2), test::shared_builtin_registry());
             }).find("a closed patch needs at least 3 divisions around it"),
             std::string::npos);
 }

@@ -8,6 +8,7 @@
 
 #include "hex_model_builder.hpp"
 #include "stress_averaging.hpp"
+#include "styk/elements/builtin.hpp"
 
 namespace styk::solver_detail {
 namespace {

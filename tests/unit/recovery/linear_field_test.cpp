@@ -14,6 +14,7 @@
 
 #include "hex_model_builder.hpp"
 #include "styk/solver/analysis.hpp"
+#include "support/element_registries.hpp"
 
 namespace styk {
 namespace {
@@ -57,8 +58,7 @@ void expect_bending_stress(const Tensor6& s, double z, const std::string& where)
 }
 
 TEST(LinearStressField, PureBendingC3D20ExtrapolatesExactlyToTheNodes) {
-  ElementRegistry registry;
-  register_builtin_elements(registry);
+  ElementRegistry registry = test::builtin_registry();
   const Model model = bending_beam(registry);
   SolveOptions options;
   options.threads = 2;

@@ -7,6 +7,7 @@
 #include <gtest/gtest.h>
 
 #include "hex_model_builder.hpp"
+#include "styk/elements/builtin.hpp"
 #include "styk/io/results_file.hpp"
 
 namespace styk {

@@ -8,14 +8,9 @@
 #include "cantilever_model.hpp"
 #include "styk/elements/builtin.hpp"
 #include "styk/solver/analysis.hpp"
+#include "support/element_registries.hpp"
 
 namespace styk::test {
-
-inline ElementRegistry builtin_registry() {
-  ElementRegistry registry;
-  register_builtin_elements(registry);
-  return registry;
-}
 
 // A block [0,lx] x [0,ly] x [0,lz] of nx x ny x nz elements of `type` (E = 210000, nu = 0.3),
 // without boundary conditions or steps.

@@ -17,6 +17,7 @@
 #include "prepared_model.hpp"
 #include "stiffness_matrix.hpp"
 #include "styk/elements/builtin.hpp"
+#include "support/element_registries.hpp"
 
 namespace styk {
 namespace {
@@ -26,8 +27,7 @@ using solver_detail::LinearSolver;
 TEST(CholmodSparseColumns, RestrictedSubstitutionsMatchTheFullSolve) {
   // C3D20 cantilever 12 x 3 x 3 (clamped at x = 0): 2044 nodes, a few hundred supernodes, so the
   // elimination-tree paths of a few dofs cover only part of the factor.
-  ElementRegistry registry;
-  register_builtin_elements(registry);
+  ElementRegistry registry = test::builtin_registry();
   testkit::CantileverSpec spec;
   spec.nx = 12;
   spec.ny = 3;
