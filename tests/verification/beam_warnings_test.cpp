@@ -11,6 +11,7 @@
 
 #include "beam_decks.hpp"
 #include "styk/elements/beam.hpp"
+#include "support/element_registries.hpp"
 
 namespace styk {
 namespace {
@@ -25,12 +26,6 @@ std::vector<std::string> warnings_of(const test::Cantilever& c, const ElementReg
   return report.warnings;
 }
 
-ElementRegistry builtin() {
-  ElementRegistry registry;
-  register_builtin_elements(registry);
-  return registry;
-}
-
 bool contains(const std::string& text, const std::string& part) {
   return text.find(part) != std::string::npos;
 }
@@ -39,7 +34,7 @@ bool contains(const std::string& text, const std::string& part) {
 // k G A l^2 / (12 E I) = (k G / E) (l / h)^2 = 0.3125 x 1e5 = 31250, which is the deflection
 // ratio of the table (0.32E-4 = 1 / 31251 x (1 - 1/64)).
 TEST(BeamWarnings, ThinFullyIntegratedBeamsWarnWithSlendernessAndRemedy) {
-  const ElementRegistry registry = builtin();
+  const ElementRegistry& registry = test::shared_builtin_registry();
   test::Cantilever c;
   c.type = "B21";
   c.elements = 4;
@@ -64,7 +59,7 @@ TEST(BeamWarnings, ThinFullyIntegratedBeamsWarnWithSlendernessAndRemedy) {
 // The 3D beams alike (issue 14 item 4): 4 full B31 elements of l / h = 316 warn as B21 does
 // (factor 3.12e+04, the remedy naming B32).
 TEST(BeamWarnings, ThinFullyIntegratedSpaceBeamsWarnToo) {
-  const ElementRegistry registry = builtin();
+  const ElementRegistry& registry = test::shared_builtin_registry();
   test::Cantilever c;
   c.type = "B31";
   c.elements = 4;
@@ -88,7 +83,7 @@ TEST(BeamWarnings, ThinFullyIntegratedSpaceBeamsWarnToo) {
 // one element long. With 4 elements the loss is 1 / 64 = 1.6 %, estimated (1/4)^2 / 3 = 2.1 %:
 // silent, as the default (reduced) rule is. Exact: w = P L^3 / (3 E I) + P L / (k G A).
 TEST(BeamWarnings, QuadraticFullBeamsAreWarnedOfWhereAnElementIsTheWholeMember) {
-  const ElementRegistry registry = builtin();
+  const ElementRegistry& registry = test::shared_builtin_registry();
   test::Cantilever c;
   c.type = "B32";
   c.elements = 1;
@@ -119,7 +114,7 @@ TEST(BeamWarnings, QuadraticFullBeamsAreWarnedOfWhereAnElementIsTheWholeMember) 
 // 0.981 and 0.928 of w_T: below the 10 % error of docs/stability.md, no warning), 4 by 31 %
 // (0.762 of w_T: warned; the threshold is a stiffening of 0.11, a deflection 10 % short).
 TEST(BeamWarnings, StockyFullBeamsPassTheThreshold) {
-  const ElementRegistry registry = builtin();
+  const ElementRegistry& registry = test::shared_builtin_registry();
   test::Cantilever c;
   c.type = "B21";
   c.integration = "FULL";
@@ -146,7 +141,7 @@ class OnePointB32 : public Beam {
 };
 
 TEST(BeamWarnings, SpuriousModesOfAnIntegrationRuleAreDetected) {
-  ElementRegistry registry = builtin();
+  ElementRegistry registry = test::builtin_registry();
   registry.add(std::make_unique<OnePointB32>(), "test");
   test::Cantilever c;
   c.type = "B32ONE";

@@ -250,7 +250,7 @@ TEST(ShellObstacleCourse, ScordelisLoRoofWithGivenNormals) {
 // *NORMAL lines: the node normals become *NORMAL entries of every shell at the node, so the roof
 // deflects exactly as with the *NORMAL lines (to round-off, 1e-12).
 TEST(ShellObstacleCourse, ScordelisLoRoofWithNormalsOnTheNodeLines) {
-  const ElementRegistry registry = builtin();
+  const ElementRegistry registry = test::builtin_registry();
   constexpr int n = 16;
   const test::ShellGrid g = scordelis_lo("S4", n);
   std::istringstream in(test::shell_grid_deck(g));

@@ -12,6 +12,7 @@
 #include <gtest/gtest.h>
 
 #include "shell_decks.hpp"
+#include "support/element_registries.hpp"
 
 namespace styk {
 namespace {
@@ -24,8 +25,7 @@ struct PlateRun {
 };
 
 PlateRun quarter_plate(const std::string& type, double t, int n = 2) {
-  ElementRegistry registry;
-  register_builtin_elements(registry);
+  const ElementRegistry& registry = test::shared_builtin_registry();
   test::ShellGrid g;
   g.type = type;
   g.nx = g.ny = n;
@@ -127,8 +127,7 @@ TEST(ShellWarnings, SupportedPlatesCarryNoSpuriousModes) {
 std::vector<std::string> mesh_warnings(
     const std::string& type, int nx, int ny,
     const std::function<std::vector<int>(int, int, int, int)>& fixed) {
-  ElementRegistry registry;
-  register_builtin_elements(registry);
+  const ElementRegistry& registry = test::shared_builtin_registry();
   test::ShellGrid g;
   g.type = type;
   g.nx = nx;
