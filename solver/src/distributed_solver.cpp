@@ -1,5 +1,7 @@
 #include "distributed_solver.hpp"
 
+#include "rank_partition.hpp"
+
 namespace styk::solver_detail {
 namespace {
 
@@ -55,14 +57,17 @@ class DistributedSolver final : public LinearSolver {
 
 }  // namespace
 
-RankShare share_of_rank(const Model& model, const PreparedModel& prepared, const MpiWorld& world) {
+RankShare share_of_rank(const Model& model, const PreparedModel& prepared, const NodeGraph& graph,
+                        const MpiWorld& world) {
   RankShare share;
-  share.rows = split_rows_by_nodes(prepared.dof_offset, world.rank, world.size);
+  share.rows = partition_rows_by_graph(graph, prepared.dof_offset, world.rank, world.size);
+  share.cut_node_pairs = cut_node_pairs(graph, prepared.dof_offset, share.rows);
   share.owns_element.assign(model.element_count(), 0);
   for (int e = 0; e < model.element_count(); ++e) {
     const int* nodes = model.element_nodes(e);
     const int a = prepared.active_of_node[nodes[0]];
-    share.owns_element[e] = a >= 0 && share.rows.owner(prepared.dof_offset[a]) == world.rank;
+    share.owns_element[e] =
+        a >= 0 && share.rows.owner(share.rows.row(prepared.dof_offset[a])) == world.rank;
   }
   return share;
 }

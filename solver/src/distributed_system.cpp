@@ -55,11 +55,14 @@ void preallocate(Mat A, const RankRows& rows, const CsrView& K) {
   const int begin = rows.begin(), end = rows.end();
   std::vector<PetscInt> d_nnz(end - begin), o_nnz(end - begin);
   for (int row = begin; row < end; ++row) {
+    const int dof = rows.dof(row);
     PetscInt inside = 0;
-    for (int p = K.row_ptr[row]; p < K.row_ptr[row + 1]; ++p)
-      if (K.col[p] >= begin && K.col[p] < end) ++inside;
+    for (int p = K.row_ptr[dof]; p < K.row_ptr[dof + 1]; ++p) {
+      const int column = rows.row(K.col[p]);
+      if (column >= begin && column < end) ++inside;
+    }
     d_nnz[row - begin] = inside;
-    o_nnz[row - begin] = (K.row_ptr[row + 1] - K.row_ptr[row]) - inside;
+    o_nnz[row - begin] = (K.row_ptr[dof + 1] - K.row_ptr[dof]) - inside;
   }
   petsc_check(MatMPIAIJSetPreallocation(A, 0, d_nnz.data(), 0, o_nnz.data()),
               "MatMPIAIJSetPreallocation");
@@ -111,7 +114,8 @@ void attach_rigid_body_modes(Mat A, const RankRows& rows, const std::vector<doub
   VecSetBlockSize(xyz, 3);
   PetscScalar* local = nullptr;
   VecGetArray(xyz, &local);
-  std::copy(coordinates.begin() + rows.begin(), coordinates.begin() + rows.end(), local);
+  for (int row = rows.begin(); row < rows.end(); ++row)
+    local[row - rows.begin()] = coordinates[rows.dof(row)];
   VecRestoreArray(xyz, &local);
   MatNullSpace modes = nullptr;
   PetscErrorCode code = MatNullSpaceCreateRigidBody(xyz, &modes);
@@ -160,10 +164,10 @@ DistributedSystem::DistributedSystem(const RankRows& rows, const CsrView& K,
         continue;
       }
       if (c == row) diagonal_sum += K.values[p];
-      columns.push_back(c);
+      columns.push_back(rows_.row(c));
       values.push_back(K.values[p]);
     }
-    const PetscInt global_row = row;
+    const PetscInt global_row = rows_.row(row);
     petsc_check(MatSetValues(A, 1, &global_row, static_cast<PetscInt>(columns.size()),
                              columns.data(), values.data(), ADD_VALUES),
                 "MatSetValues");
@@ -173,7 +177,7 @@ DistributedSystem::DistributedSystem(const RankRows& rows, const CsrView& K,
                   ? diagonal_sum / partition_.free_count()
                   : 1.0;
   for (int row = rows_.begin(); row < rows_.end(); ++row)
-    if (free_of[row] < 0) {
+    if (free_of[rows_.dof(row)] < 0) {
       const PetscInt global_row = row;
       petsc_check(MatSetValues(A, 1, &global_row, 1, &global_row, &diagonal_, ADD_VALUES),
                   "MatSetValues");
@@ -230,14 +234,15 @@ std::vector<double> DistributedSystem::solve(const std::vector<double>& f,
   // Each rank adds what it holds: the owner its rows of f and the prescribed rows' values, every
   // rank its part of -K_fp u_p.
   for (int row = rows_.begin(); row < rows_.end(); ++row) {
-    const PetscScalar value = free_of[row] >= 0 ? f[row] : diagonal_ * prescribed_value[row];
+    const int dof = rows_.dof(row);
+    const PetscScalar value = free_of[dof] >= 0 ? f[dof] : diagonal_ * prescribed_value[dof];
     const PetscInt index = row;
     petsc_check(VecSetValues(b, 1, &index, &value, ADD_VALUES), "VecSetValues");
   }
   for (const CouplingEntry& entry : coupling_) {
     const PetscScalar value = -entry.value * prescribed_value[entry.dof];
     if (value == 0.0) continue;
-    const PetscInt index = entry.free_row;
+    const PetscInt index = rows_.row(entry.free_row);
     petsc_check(VecSetValues(b, 1, &index, &value, ADD_VALUES), "VecSetValues");
   }
   petsc_check(VecAssemblyBegin(b), "VecAssemblyBegin");
@@ -289,7 +294,9 @@ std::vector<double> DistributedSystem::solve(const std::vector<double>& f,
               "VecScatterEnd");
   const PetscScalar* values = nullptr;
   petsc_check(VecGetArrayRead(petsc_->all, &values), "VecGetArrayRead");
-  std::vector<double> u(values, values + f.size());
+  std::vector<double> u(f.size());
+  for (std::size_t row = 0; row < f.size(); ++row)
+    u[rows_.dof(static_cast<int>(row))] = values[row];
   VecRestoreArrayRead(petsc_->all, &values);
   for (int dof : partition_.prescribed) u[dof] = prescribed_value[dof];
   return u;

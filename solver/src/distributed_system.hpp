@@ -1,7 +1,8 @@
 // A linear system solved across the ranks of the MPI world (PETSc MPIAIJ, CG + GAMG or MUMPS).
 // Every rank holds the model and the global sparsity pattern; each adds the rows its own elements
 // produced (its part of the assembled matrix) and PETSc sums the parts into the rows' owners.
-// The active dofs are split into contiguous row ranges at node boundaries. Prescribed dofs are
+// The rows are split among the ranks by a graph partition of the nodes (rank_partition.hpp), each
+// rank's nodes numbered consecutively in PETSc's rows. Prescribed dofs are
 // eliminated symmetrically (rows and columns zeroed, the diagonal set to the mean free diagonal),
 // as in the serial GAMG solver. No PETSc types in this header.
 #pragma once
@@ -15,14 +16,20 @@
 
 namespace styk::solver_detail {
 
-// Which rows (active dofs) each rank owns: rank r owns [first[r], first[r + 1]).
+// Which rows each rank owns: rank r owns the PETSc rows [first[r], first[r + 1]). PETSc row p
+// holds active dof dof_of_row[p] (a permutation that keeps each node's dofs consecutive, so the
+// ranks' rows follow a graph partition of the mesh); empty permutation: row p is dof p.
 struct RankRows {
   int rank = 0;
   int size = 1;
   std::vector<int> first;
+  std::vector<int> row_of_dof;  // empty: the identity
+  std::vector<int> dof_of_row;
   int begin() const { return first[rank]; }
   int end() const { return first[rank + 1]; }
-  int owner(int row) const;  // the rank owning `row`
+  int owner(int row) const;  // the rank owning PETSc row `row`
+  int row(int dof) const { return row_of_dof.empty() ? dof : row_of_dof[dof]; }
+  int dof(int row) const { return dof_of_row.empty() ? row : dof_of_row[row]; }
 };
 
 // Contiguous ranges of about equal numbers of dofs, cut only between nodes (`dof_offset`: node a

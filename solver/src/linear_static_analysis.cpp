@@ -107,11 +107,6 @@ Results run_linear_static_analysis(const Model& model, const ElementRegistry& re
   const ModelConstraints& constraints = mechanical.kinematic;
 
   // Extrapolation operators per element type, built once for every step (SPEC §5 averaging).
-  // A distributed run: this rank's rows and elements (every rank holds the whole model).
-  std::optional<RankShare> share;
-  if (options.distributed) share = share_of_rank(model, prepared, join_mpi_world());
-  const std::vector<char>* owned_elements = share ? &share->owns_element : nullptr;
-
   const StressAveraging averaging(model, prepared.formulation, prepared.rule_kind);
 
   std::unique_ptr<StiffnessMatrix> K;
@@ -123,6 +118,15 @@ Results run_linear_static_analysis(const Model& model, const ElementRegistry& re
                 std::to_string(K->nonzeros()) + " nonzeros, " +
                 std::to_string(K->colouring().colours()) + " element colours");
   }
+  // A distributed run: this rank's rows and elements (every rank holds the whole model).
+  std::optional<RankShare> share;
+  if (options.distributed) {
+    const PhaseRecorder::Scope phase(phases, "partition");
+    share = share_of_rank(model, prepared, K->graph(), join_mpi_world());
+    phases.info("partition: " + std::to_string(share->rows.size) + " ranks, " +
+                std::to_string(share->cut_node_pairs) + " node pairs couple two ranks");
+  }
+  const std::vector<char>* owned_elements = share ? &share->owns_element : nullptr;
   // The elements' material state of step k (materials, temperatures, initial stresses).
   auto states_of = [&](std::size_t k) {
     return ElementStates(model, prepared, k, temperatures[k].empty() ? nullptr : &temperatures[k]);

@@ -1,10 +1,20 @@
+#include <algorithm>
 #include <numeric>
 
 #include "distributed_system.hpp"
+#include "rank_partition.hpp"
 #include "scalar_linear_solve.hpp"
 
 namespace styk::solver_detail {
 namespace {
+
+// The node graph of a scalar field's matrix (one dof per node): its pattern.
+NodeGraph graph_of(const Eigen::SparseMatrix<double>& K) {
+  NodeGraph graph;
+  graph.ptr.assign(K.outerIndexPtr(), K.outerIndexPtr() + K.outerSize() + 1);
+  graph.adj.assign(K.innerIndexPtr(), K.innerIndexPtr() + K.nonZeros());
+  return graph;
+}
 
 class DistributedScalarSolve final : public ScalarLinearSolve {
  public:
@@ -17,11 +27,14 @@ class DistributedScalarSolve final : public ScalarLinearSolve {
     partition_ = partition_dofs(n, fixed);
     std::vector<int> one_per_node(n + 1);
     std::iota(one_per_node.begin(), one_per_node.end(), 0);
-    const RankRows rows = split_rows_by_nodes(one_per_node, world.rank, world.size);
+    const RankRows rows =
+        partition_rows_by_graph(graph_of(K), one_per_node, world.rank, world.size);
     // K is symmetric and compressed column-major: its columns are its rows.
     const CsrView view{K.outerIndexPtr(), K.innerIndexPtr(), K.valuePtr(), n};
-    std::vector<int> own(rows.end() - rows.begin());
-    std::iota(own.begin(), own.end(), rows.begin());
+    // Every rank assembled the whole conductance: each adds the rows it owns.
+    std::vector<int> own;
+    for (int row = rows.begin(); row < rows.end(); ++row) own.push_back(rows.dof(row));
+    std::sort(own.begin(), own.end());
     DistributedSettings settings;
     settings.direct = true;
     settings.residual_limit = 1e-8;  // as the serial solve
