@@ -54,55 +54,6 @@ class PetscKsp {
   KSP ksp_ = nullptr;
 };
 
-// y = K x on the assembled node-block CSR, split over threads by node rows. PETSc's SeqAIJ
-// product runs on one core; CG and the finest-level smoother spend most of the solve in this
-// product, so the finest operator is this shell over the same arrays (no copy) while GAMG builds
-// its hierarchy from the AIJ matrix.
-struct ParallelProduct {
-  const int* row_ptr = nullptr;
-  const int* col = nullptr;
-  const double* values = nullptr;
-  int nodes = 0;
-  int threads = 1;
-
-  void apply(const double* x, double* y) const {
-    parallel_for(nodes, threads, 2048, [&](int begin, int end, int) {
-      for (int a = begin; a < end; ++a) {
-        // The three rows of node a share one column list: read each index once.
-        const int first = row_ptr[3 * a];
-        const int width = row_ptr[3 * a + 1] - first;
-        const int* c = col + first;
-        const double* v0 = values + first;
-        const double* v1 = v0 + width;
-        const double* v2 = v1 + width;
-        double s0 = 0.0, s1 = 0.0, s2 = 0.0;
-        for (int k = 0; k < width; ++k) {
-          const double xk = x[c[k]];
-          s0 += v0[k] * xk;
-          s1 += v1[k] * xk;
-          s2 += v2[k] * xk;
-        }
-        y[3 * a] = s0;
-        y[3 * a + 1] = s1;
-        y[3 * a + 2] = s2;
-      }
-    });
-  }
-};
-
-PetscErrorCode parallel_product_mult(Mat shell, Vec x, Vec y) {
-  void* context = nullptr;
-  PetscErrorCode code = MatShellGetContext(shell, &context);
-  if (code != 0) return code;
-  const PetscScalar* xv = nullptr;
-  PetscScalar* yv = nullptr;
-  if ((code = VecGetArrayRead(x, &xv)) != 0) return code;
-  if ((code = VecGetArrayWrite(y, &yv)) != 0) return code;
-  static_cast<const ParallelProduct*>(context)->apply(xv, yv);
-  if ((code = VecRestoreArrayWrite(y, &yv)) != 0) return code;
-  return VecRestoreArrayRead(x, &xv);
-}
-
 class GamgSolver final : public LinearSolver {
  public:
   GamgSolver(const SolverContext& context, double tolerance)
@@ -129,19 +80,14 @@ class GamgSolver final : public LinearSolver {
                 "MatCreateSeqAIJWithArrays");
     petsc_check(MatSetBlockSize(A_.get(), 3), "MatSetBlockSize");
     attach_rigid_body_modes();
-    product_ = ParallelProduct{K.row_ptr().data(), K.col().data(), K.values().data(), K.rows() / 3,
-                               context_.threads};
-    petsc_check(MatCreateShell(PETSC_COMM_SELF, n, n, n, n, &product_, operator_.out()),
-                "MatCreateShell");
-    petsc_check(MatShellSetOperation(operator_.get(), MATOP_MULT,
-                                     reinterpret_cast<void (*)(void)>(&parallel_product_mult)),
-                "MatShellSetOperation");
-
     petsc_check(KSPCreate(PETSC_COMM_SELF, ksp_.out()), "KSPCreate");
     KSP ksp = ksp_.get();
     // Tuning from the environment goes through this prefix (PETSC_OPTIONS="-styk_pc_gamg_...").
     petsc_check(KSPSetOptionsPrefix(ksp, "styk_"), "KSPSetOptionsPrefix");
-    petsc_check(KSPSetOperators(ksp, operator_.get(), A_.get()), "KSPSetOperators");
+    // PETSc's own product (I-node kernel over the node rows) serves CG and the smoothers: it
+    // measured faster on one core than a threaded shell product over the same arrays on two
+    // (bench/README.md, "The serial CG + GAMG product").
+    petsc_check(KSPSetOperators(ksp, A_.get(), A_.get()), "KSPSetOperators");
     petsc_check(KSPSetType(ksp, KSPCG), "KSPSetType");
     // Stop on the true (unpreconditioned) relative residual, the quantity the tolerance names.
     petsc_check(KSPSetNormType(ksp, KSP_NORM_UNPRECONDITIONED), "KSPSetNormType");
@@ -199,7 +145,7 @@ class GamgSolver final : public LinearSolver {
                    static_cast<double>(its), residual / b_norm, static_cast<double>(reason)));
       // Check the true residual, not CG's recursively updated one.
       petsc_check(VecDuplicate(b.get(), r.out()), "VecDuplicate");
-      petsc_check(MatMult(operator_.get(), x.get(), r.get()), "MatMult");
+      petsc_check(MatMult(A_.get(), x.get(), r.get()), "MatMult");
       petsc_check(VecAXPY(r.get(), -1.0, b.get()), "VecAXPY");
       PetscReal r_norm = 0.0;
       petsc_check(VecNorm(r.get(), NORM_2, &r_norm), "VecNorm");
@@ -274,9 +220,7 @@ class GamgSolver final : public LinearSolver {
   SolverContext context_;
   double tolerance_;
   KspProgress progress_;
-  ParallelProduct product_;
-  PetscMat A_;         // wraps the StiffnessMatrix arrays; destroyed before them by contract
-  PetscMat operator_;  // shell over the same arrays, multithreaded product
+  PetscMat A_;  // wraps the StiffnessMatrix arrays; destroyed before them by contract
   PetscKsp ksp_;
   DofPartition partition_;
   std::vector<CouplingEntry> coupling_;
