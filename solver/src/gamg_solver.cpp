@@ -8,10 +8,13 @@
 #include <chrono>
 #include <cmath>
 #include <cstdio>
+#include <optional>
 #include <stdexcept>
 
 #include "ksp_progress.hpp"
+#include "linear_coarse_space.hpp"
 #include "linear_solver.hpp"
+#include "p_multigrid.hpp"
 #include "parallel.hpp"
 #include "petsc_runtime.hpp"
 
@@ -62,7 +65,10 @@ class GamgSolver final : public LinearSolver {
   }
 
   std::string description() const override {
-    return "PETSc CG + GAMG (smoothed aggregation, rigid-body near-null space)";
+    return p_multigrid_.coarse_rows() > 0
+               ? "PETSc CG + p-multigrid (quadratic to linear level) + GAMG (smoothed "
+                 "aggregation, rigid-body near-null space)"
+               : "PETSc CG + GAMG (smoothed aggregation, rigid-body near-null space)";
   }
 
   void prepare(StiffnessMatrix& K, const DofPartition& partition) override {
@@ -95,18 +101,20 @@ class GamgSolver final : public LinearSolver {
                 "KSPSetTolerances");
     PC pc = nullptr;
     petsc_check(KSPGetPC(ksp, &pc), "KSPGetPC");
-    petsc_check(PCSetType(pc, PCGAMG), "PCSetType");
-    petsc_check(PCGAMGSetType(pc, PCGAMGAGG), "PCGAMGSetType");
-    petsc_check(PCGAMGSetNSmooths(pc, 1), "PCGAMGSetNSmooths");
-    PetscReal threshold[] = {kThreshold};
-    petsc_check(PCGAMGSetThreshold(pc, threshold, 1), "PCGAMGSetThreshold");
+    // PETSC_OPTIONS="-styk_p_multigrid false" keeps plain GAMG on quadratic meshes (comparisons).
+    PetscBool p_multigrid = PETSC_TRUE;
+    petsc_check(PetscOptionsGetBool(nullptr, "styk_", "-p_multigrid", &p_multigrid, nullptr),
+                "PetscOptionsGetBool");
+    const std::optional<LinearCoarseSpace> coarse =
+        p_multigrid ? linear_coarse_space(context_.model, context_.prepared) : std::nullopt;
+    if (coarse)
+      p_multigrid_.configure(pc, A_.get(), *coarse, corner_coordinates(*coarse), kThreshold);
+    else
+      configure_gamg(pc);
     petsc_check(progress_.attach(ksp), "KSPMonitorSet");
     petsc_check(KSPSetFromOptions(ksp), "KSPSetFromOptions");
     petsc_check(KSPSetUp(ksp), "KSPSetUp (GAMG set-up)");
-    PetscInt levels = 0;
-    PCMGGetLevels(pc, &levels);
-    context_.phases.info(format("GAMG: %.0f dofs, %.0f levels", static_cast<double>(n),
-                                static_cast<double>(levels)));
+    report_hierarchy(pc, n, coarse.has_value());
   }
 
   std::vector<double> solve(const std::vector<double>& f,
@@ -197,6 +205,38 @@ class GamgSolver final : public LinearSolver {
     K.set_pristine(false);
   }
 
+  void configure_gamg(PC pc) {
+    petsc_check(PCSetType(pc, PCGAMG), "PCSetType");
+    petsc_check(PCGAMGSetType(pc, PCGAMGAGG), "PCGAMGSetType");
+    petsc_check(PCGAMGSetNSmooths(pc, 1), "PCGAMGSetNSmooths");
+    PetscReal threshold[] = {kThreshold};
+    petsc_check(PCGAMGSetThreshold(pc, threshold, 1), "PCGAMGSetThreshold");
+  }
+
+  void report_hierarchy(PC pc, PetscInt n, bool p_multigrid) const {
+    if (p_multigrid) {
+      context_.phases.info(
+          format("p-multigrid: %.0f dofs, linear coarse level of %.0f dofs, GAMG below it with "
+                 "%.0f levels",
+                 static_cast<double>(n), static_cast<double>(p_multigrid_.coarse_rows()),
+                 static_cast<double>(p_multigrid_.gamg_levels())));
+      return;
+    }
+    PetscInt levels = 0;
+    PCMGGetLevels(pc, &levels);
+    context_.phases.info(format("GAMG: %.0f dofs, %.0f levels", static_cast<double>(n),
+                                static_cast<double>(levels)));
+  }
+
+  std::vector<double> corner_coordinates(const LinearCoarseSpace& space) const {
+    std::vector<double> xyz;
+    xyz.reserve(3 * space.corner_node.size());
+    for (int a : space.corner_node)
+      for (int d = 0; d < 3; ++d)
+        xyz.push_back(context_.model.coords[context_.prepared.node_of_active[a]][d]);
+    return xyz;
+  }
+
   void attach_rigid_body_modes() {
     const Model& model = context_.model;
     const PreparedModel& prepared = context_.prepared;
@@ -220,7 +260,8 @@ class GamgSolver final : public LinearSolver {
   SolverContext context_;
   double tolerance_;
   KspProgress progress_;
-  PetscMat A_;  // wraps the StiffnessMatrix arrays; destroyed before them by contract
+  PetscMat A_;              // wraps the StiffnessMatrix arrays; destroyed before them by contract
+  PMultigrid p_multigrid_;  // the interpolation and coarse operator the KSP's PC refers to
   PetscKsp ksp_;
   DofPartition partition_;
   std::vector<CouplingEntry> coupling_;
