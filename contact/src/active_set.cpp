@@ -263,10 +263,42 @@ class IncrementIteration {
         judge(record, changed.empty() && zone_changes == 0, new_status, new_zone);
     outcome_.history.push_back(record);
     if (log_) log_(record);
+    if (!converged && no_exponential_equilibrium(record, next, new_status)) return Step::failed;
     changed_history_.push_back(changed);
     seen_.emplace_back(new_status, new_zone);
     advance(std::move(next), std::move(new_status), std::move(new_zone), zone_changes > 0);
     return converged ? Step::converged : Step::next;
+  }
+
+  // The EXPONENTIAL law carries at least A p0 / 100 on a closed node (its force at the clearance
+  // c0) and nothing beyond c0. A node the structure presses towards the master with less than
+  // that has no equilibrium: the spring pushes it beyond c0, where nothing holds it off. Such a
+  // node stays below the least force under the law's tangent there (spring_tangent), the iterate
+  // standing still with a residual; twice in a row with no status change is the signature (a node
+  // on its way to a root above the least force leaves the band in one step). CalculiX diverges on
+  // such a deck ("too many cutbacks"); the increment fails here naming the nodes.
+  bool no_exponential_equilibrium(const IterationRecord& record, const Iterate& next,
+                                  const std::vector<NodeStatus>& new_status) {
+    std::vector<int> below;
+    if (record.changes == 0 && damping_ == 1.0)
+      for (int j = 0; j < m_; ++j) {
+        const double least = constraints_[j].exponential_force0 / 100.0;
+        if (least > 0.0 && status_[j] != NodeStatus::Open && new_status[j] != NodeStatus::Open &&
+            at_.lambda[3 * j] <= least && next.lambda[3 * j] < least * (1.0 - 1e-9))
+          below.push_back(j);
+      }
+    exponential_stalls_ = below.empty() ? 0 : exponential_stalls_ + 1;
+    if (exponential_stalls_ < 2) return false;
+    outcome_.reason =
+        "the EXPONENTIAL pressure-overclosure law has no equilibrium: " +
+        std::to_string(below.size()) +
+        " slave node(s) are pressed towards the master with less than the law's least force "
+        "A p0 / 100 (its force at the clearance c0, beyond which it carries nothing); raise the "
+        "load or lower p0, or use LINEAR or HARD";
+    outcome_.offending = below;
+    outcome_.offending_role = "nodes below the least force";
+    outcome_.no_equilibrium = true;
+    return true;
   }
 
   // The linearised solve of the current statuses. A body held by slipping nodes alone: either
@@ -440,6 +472,7 @@ class IncrementIteration {
   bool from_elastic_trial_ = false;  // the increment started from the elastic trial
   bool front_receded_ = false;       // some node went from slip back to stick
   bool closed_touching_ = false;     // the touching nodes have been closed after a singular solve
+  int exponential_stalls_ = 0;       // iterations in a row with nodes below the least force
 };
 
 }  // namespace
