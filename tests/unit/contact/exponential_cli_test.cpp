@@ -58,6 +58,8 @@ TEST(ExponentialCli, BlocksRestAtTheLawsClearance) {
   EXPECT_NE(s.dat.find("       law penalty EXPONENTIAL c0= 1.000000E-03 p0= 1.000000E+01"),
             std::string::npos)
       << s.dat;
+  // The load fixes the pressure; the second iteration linearises the law at it (docs/contact.md).
+  EXPECT_NE(s.run.err.find("converged in 2 iterations"), std::string::npos) << s.run.err;
   EXPECT_NE(
       s.run.err.find(
           "contact pair UPPER_BOTTOM/LOWER_TOP: normal law penalty EXPONENTIAL c0=0.001 p0=10"),
@@ -96,7 +98,7 @@ TEST(ExponentialCli, BlocksPulledBeyondC0CarryNothing) {
 // the law and the nodes, exits non-zero and writes no results.
 TEST(ExponentialCli, LoadBelowTheLeastForceIsRefused) {
   const Variant v = solve_with_load("*CLOAD\nTOP, 3, -0.0125\n", "exponential_too_light");
-  EXPECT_NE(v.run.exit_code, 0);
+  EXPECT_EQ(v.run.exit_code, 2);  // not converged
   EXPECT_NE(v.run.err.find("the EXPONENTIAL pressure-overclosure law has no equilibrium"),
             std::string::npos)
       << v.run.err;
@@ -106,28 +108,35 @@ TEST(ExponentialCli, LoadBelowTheLeastForceIsRefused) {
   EXPECT_FALSE(std::ifstream(v.dir + "/out/blocks.styk.h5").good());
 }
 
+// CalculiX 2.20's .dat of `deck` (run in its own scratch directory).
+std::string ccx_dat(const std::string& deck, const std::string& scratch) {
+  const std::string dir = scratch_dir(scratch);
+  { std::ofstream(dir + "/pair.inp") << deck; }
+  EXPECT_EQ(run_command("ccx -i pair > ccx.log 2>&1", dir).exit_code, 0)
+      << "ccx failed, see " << dir << "/ccx.log";
+  return read_file(dir + "/pair.dat");
+}
+
 // CalculiX 2.20 on tests/inputs/contact/penalty_exponential_eccentric.inp: the upper block rests
 // on three rows of nonlinear springs, overclosed at x = 0 and open at x = 1 and 2. ccx stops its
-// Newton iteration at a force residual of 5e-3 of the mean force by default (measured: 1e-4 off
-// the hand pressure on the blocks deck); *CONTROLS, PARAMETERS=FIELD with 1e-9 is added to its
-// copy of the deck (Styk's iteration always ends at 1e-9). Its springs live on the deformed
-// geometry; with E = 1e8 (strains ~4e-8) the blocks agree to the printed digits: within 1e-6 of
-// the largest value of each block (measured 0 pressures, 0 overclosures, 4.7e-7 displacements).
+// Newton iteration at a force residual of 5e-3 of the mean force by default: as the deck stands,
+// within 2e-4 of the largest value of each block (measured 3.8e-5 pressures, 1.8e-4 clearances and
+// displacements). With *CONTROLS, PARAMETERS=FIELD 1e-9 added to its copy of the deck (Styk's
+// iteration always ends at 1e-9) the blocks agree to the printed digits: within 1e-6 (measured 0
+// pressures, 0 clearances, 4.7e-7 displacements). E = 1e8 (strains ~4e-8) keeps ccx's
+// deformed-geometry springs out of the comparison. Styk converges in 4 iterations.
 TEST(ExponentialCli, ExponentialPenaltyAgreesWithCalculix) {
   ASSERT_EQ(std::system("command -v ccx > /dev/null 2>&1"), 0)
       << "ccx (CalculiX) is not on PATH: run scripts/install-deps.sh --test";
-  const std::string dir = scratch_dir("exponential_ccx");
+  const Solved s = solve("penalty_exponential_eccentric", "penalty_exponential_eccentric");
+  ASSERT_EQ(s.run.exit_code, 0) << s.run.err;
+  EXPECT_NE(s.run.err.find("converged in 4 iterations"), std::string::npos) << s.run.err;
   std::string deck = read_file(kDecks + "penalty_exponential_eccentric.inp");
+  expect_same_contact_blocks(ccx_dat(deck, "exponential_ccx_default"), s.dat, 2e-4);
   const std::string step = "*STATIC\n";
   ASSERT_NE(deck.find(step), std::string::npos);
   deck.insert(deck.find(step), "*CONTROLS, PARAMETERS=FIELD\n1.e-9, 1.e-9\n");
-  { std::ofstream(dir + "/pair.inp") << deck; }
-  ASSERT_EQ(run_command("ccx -i pair > ccx.log 2>&1", dir).exit_code, 0)
-      << "ccx failed, see " << dir << "/ccx.log";
-  const std::string ccx = read_file(dir + "/pair.dat");
-  const Solved s = solve("penalty_exponential_eccentric", "penalty_exponential_eccentric");
-  ASSERT_EQ(s.run.exit_code, 0) << s.run.err;
-  expect_same_contact_blocks(ccx, s.dat, 1e-6);
+  expect_same_contact_blocks(ccx_dat(deck, "exponential_ccx_tight"), s.dat, 1e-6);
 }
 
 }  // namespace
