@@ -8,6 +8,7 @@
 #include <cmath>
 #include <cstdio>
 #include <functional>
+#include <limits>
 #include <set>
 
 #include "active_set_parts.hpp"
@@ -121,6 +122,8 @@ class IncrementIteration {
     if (state_.alpha.size() != k_) state_.alpha = Eigen::VectorXd::Zero(k_);
     if (state_.dalpha.size() != k_) state_.dalpha = Eigen::VectorXd::Zero(k_);
     setup_ = set_up(constraints_, system_, options_);
+    for (const ContactConstraint& c : constraints_)
+      nonlinear_springs_ = nonlinear_springs_ || c.exponential_force0 > 0.0;
   }
 
   IncrementOutcome run() {
@@ -178,6 +181,7 @@ class IncrementIteration {
     from_elastic_trial_ = elastic_trial;
     closed_touching_ = !trust_predictor;
     seen_.emplace_back(status_, zone_);
+    seen_residuals_.push_back(std::numeric_limits<double>::infinity());
   }
 
   std::vector<NodeStatus> predicted_statuses(bool trust_predictor, double extrapolation) const {
@@ -266,6 +270,7 @@ class IncrementIteration {
     if (!converged && no_exponential_equilibrium(record, next, new_status)) return Step::failed;
     changed_history_.push_back(changed);
     seen_.emplace_back(new_status, new_zone);
+    seen_residuals_.push_back(record.residual);
     advance(std::move(next), std::move(new_status), std::move(new_zone), zone_changes > 0);
     return converged ? Step::converged : Step::next;
   }
@@ -399,12 +404,27 @@ class IncrementIteration {
       damping_ = 1.0;
       return false;
     }
-    if (!settled && record.changes > 0 &&
-        std::find(seen_.begin(), seen_.end(), Seen{new_status, new_zone}) != seen_.end()) {
+    if (!settled && record.changes > 0 && revisits_without_progress(record, new_status, new_zone)) {
       record.cycle = true;
       damping_ = std::max(damping_ * options_.cycle_damping, options_.min_damping);
     }
     return settled;
+  }
+
+  // A status set seen before in the increment: with linear laws the same set gives the same
+  // iterate, so the iteration cycles. An EXPONENTIAL law's rows depend on the iterate as well: a
+  // node sent open by a Newton step from above its root (the tangent there is stiff) closes again
+  // at a new linearisation point, progress rather than a cycle; it counts as one only when the
+  // residual has not fallen since the set's last visit (the two-step deck of
+  // tests/unit/contact/exponential_cli_test.cpp: 29 iterations with damping, 8 without).
+  bool revisits_without_progress(const IterationRecord& record,
+                                 const std::vector<NodeStatus>& new_status,
+                                 const std::vector<char>& new_zone) const {
+    const auto seen = std::find(seen_.rbegin(), seen_.rend(), Seen{new_status, new_zone});
+    if (seen == seen_.rend()) return false;
+    if (!nonlinear_springs_) return true;
+    const std::size_t visit = seen_.size() - 1 - static_cast<std::size_t>(seen - seen_.rbegin());
+    return record.residual >= seen_residuals_[visit];
   }
 
   void advance(Iterate next, std::vector<NodeStatus> new_status, std::vector<char> new_zone,
@@ -461,11 +481,13 @@ class IncrementIteration {
   const std::function<void(const IterationRecord&)>& log_;
   const int m_, k_;
   Setup setup_;
-  Loads loads_;                     // with the fluid forces of zone_
-  Iterate at_;                      // the current iterate
-  std::vector<NodeStatus> status_;  // the statuses the next solve uses
-  std::vector<char> zone_;          // the fluid's penetrated zone (empty without fluid)
-  std::vector<Seen> seen_;          // status sets of this increment, for cycle detection
+  Loads loads_;                         // with the fluid forces of zone_
+  Iterate at_;                          // the current iterate
+  std::vector<NodeStatus> status_;      // the statuses the next solve uses
+  std::vector<char> zone_;              // the fluid's penetrated zone (empty without fluid)
+  std::vector<Seen> seen_;              // status sets of this increment, for cycle detection
+  std::vector<double> seen_residuals_;  // the residual each of them ended with (predictor: inf)
+  bool nonlinear_springs_ = false;      // some constraint has the EXPONENTIAL law
   std::vector<std::vector<int>> changed_history_;
   IncrementOutcome outcome_;
   double damping_ = 1.0;             // step length (< 1 after a cycle)
