@@ -165,9 +165,10 @@ TEST(ExponentialCli, SecondStepReversingTheTiltAgreesWithCalculix) {
   EXPECT_NE(ours.err.find("contact step 2 increment 1 (t = 1): converged in 8 iterations"),
             std::string::npos)
       << ours.err;
-  const std::string step = "*STATIC\n";
-  for (std::size_t at = deck.find(step); at != std::string::npos; at = deck.find(step, at + 60))
-    deck.insert(at, "*CONTROLS, PARAMETERS=FIELD\n1.e-9, 1.e-9\n");
+  const std::string step = "*STATIC\n", controls = "*CONTROLS, PARAMETERS=FIELD\n1.e-9, 1.e-9\n";
+  for (std::size_t at = deck.find(step); at != std::string::npos;
+       at = deck.find(step, at + controls.size() + step.size()))
+    deck.insert(at, controls);
   expect_same_contact_blocks(ccx_dat(deck, "exponential_two_steps_ccx"),
                              read_file(dir + "/out/two.dat"), 1e-6);
 }
