@@ -206,6 +206,11 @@ TEST(ExponentialLaw, ConstraintCarriesTheLawsParameters) {
   EXPECT_EQ(c.penalty_stiffness, 0.0);
   EXPECT_FALSE(c.bonded);
   EXPECT_EQ(normal_law_label(interaction.behavior), "penalty EXPONENTIAL c0=0.002 p0=8");
+  Surface nodes = faces;
+  nodes.kind = Surface::Kind::Nodes;
+  c.area = 0.0;
+  apply_penalty_law(interaction, nodes, "7", c);
+  EXPECT_EQ(c.exponential_force0, 8.0);  // a node surface's "pressure" is a force: A = 1
 }
 
 }  // namespace
