@@ -8,6 +8,7 @@
 #include <cmath>
 #include <cstdio>
 #include <functional>
+#include <limits>
 #include <set>
 
 #include "active_set_parts.hpp"
@@ -121,6 +122,8 @@ class IncrementIteration {
     if (state_.alpha.size() != k_) state_.alpha = Eigen::VectorXd::Zero(k_);
     if (state_.dalpha.size() != k_) state_.dalpha = Eigen::VectorXd::Zero(k_);
     setup_ = set_up(constraints_, system_, options_);
+    for (const ContactConstraint& c : constraints_)
+      nonlinear_springs_ = nonlinear_springs_ || c.exponential_force0 > 0.0;
   }
 
   IncrementOutcome run() {
@@ -178,6 +181,7 @@ class IncrementIteration {
     from_elastic_trial_ = elastic_trial;
     closed_touching_ = !trust_predictor;
     seen_.emplace_back(status_, zone_);
+    seen_residuals_.push_back(std::numeric_limits<double>::infinity());
   }
 
   std::vector<NodeStatus> predicted_statuses(bool trust_predictor, double extrapolation) const {
@@ -263,10 +267,43 @@ class IncrementIteration {
         judge(record, changed.empty() && zone_changes == 0, new_status, new_zone);
     outcome_.history.push_back(record);
     if (log_) log_(record);
+    if (!converged && no_exponential_equilibrium(record, next, new_status)) return Step::failed;
     changed_history_.push_back(changed);
     seen_.emplace_back(new_status, new_zone);
+    seen_residuals_.push_back(record.residual);
     advance(std::move(next), std::move(new_status), std::move(new_zone), zone_changes > 0);
     return converged ? Step::converged : Step::next;
+  }
+
+  // The EXPONENTIAL law carries at least A p0 / 100 on a closed node (its force at the clearance
+  // c0) and nothing beyond c0. A node the structure presses towards the master with less than
+  // that has no equilibrium: the spring pushes it beyond c0, where nothing holds it off. Such a
+  // node stays below the least force under the law's tangent there (spring_tangent), the iterate
+  // standing still with a residual; twice in a row with no status change is the signature (a node
+  // on its way to a root above the least force leaves the band in one step). CalculiX diverges on
+  // such a deck ("too many cutbacks"); the increment fails here naming the nodes.
+  bool no_exponential_equilibrium(const IterationRecord& record, const Iterate& next,
+                                  const std::vector<NodeStatus>& new_status) {
+    std::vector<int> below;
+    if (record.changes == 0 && damping_ == 1.0)
+      for (int j = 0; j < m_; ++j) {
+        const double least = constraints_[j].exponential_force0 / 100.0;
+        if (least > 0.0 && status_[j] != NodeStatus::Open && new_status[j] != NodeStatus::Open &&
+            at_.lambda[3 * j] <= least && next.lambda[3 * j] < least * (1.0 - 1e-9))
+          below.push_back(j);
+      }
+    exponential_stalls_ = below.empty() ? 0 : exponential_stalls_ + 1;
+    if (exponential_stalls_ < 2) return false;
+    outcome_.reason =
+        "the EXPONENTIAL pressure-overclosure law has no equilibrium: " +
+        std::to_string(below.size()) +
+        " slave node(s) are pressed towards the master with less than the law's least force "
+        "A p0 / 100 (its force at the clearance c0, beyond which it carries nothing); raise the "
+        "load or lower p0, or use LINEAR or HARD";
+    outcome_.offending = below;
+    outcome_.offending_role = "nodes below the least force";
+    outcome_.no_equilibrium = true;
+    return true;
   }
 
   // The linearised solve of the current statuses. A body held by slipping nodes alone: either
@@ -367,12 +404,27 @@ class IncrementIteration {
       damping_ = 1.0;
       return false;
     }
-    if (!settled && record.changes > 0 &&
-        std::find(seen_.begin(), seen_.end(), Seen{new_status, new_zone}) != seen_.end()) {
+    if (!settled && record.changes > 0 && revisits_without_progress(record, new_status, new_zone)) {
       record.cycle = true;
       damping_ = std::max(damping_ * options_.cycle_damping, options_.min_damping);
     }
     return settled;
+  }
+
+  // A status set seen before in the increment: with linear laws the same set gives the same
+  // iterate, so the iteration cycles. An EXPONENTIAL law's rows depend on the iterate as well: a
+  // node sent open by a Newton step from above its root (the tangent there is stiff) closes again
+  // at a new linearisation point, progress rather than a cycle; it counts as one only when the
+  // residual has not fallen since the set's last visit (the two-step deck of
+  // tests/unit/contact/exponential_cli_test.cpp: 29 iterations with damping, 8 without).
+  bool revisits_without_progress(const IterationRecord& record,
+                                 const std::vector<NodeStatus>& new_status,
+                                 const std::vector<char>& new_zone) const {
+    const auto seen = std::find(seen_.rbegin(), seen_.rend(), Seen{new_status, new_zone});
+    if (seen == seen_.rend()) return false;
+    if (!nonlinear_springs_) return true;
+    const std::size_t visit = seen_.size() - 1 - static_cast<std::size_t>(seen - seen_.rbegin());
+    return record.residual >= seen_residuals_[visit];
   }
 
   void advance(Iterate next, std::vector<NodeStatus> new_status, std::vector<char> new_zone,
@@ -429,17 +481,20 @@ class IncrementIteration {
   const std::function<void(const IterationRecord&)>& log_;
   const int m_, k_;
   Setup setup_;
-  Loads loads_;                     // with the fluid forces of zone_
-  Iterate at_;                      // the current iterate
-  std::vector<NodeStatus> status_;  // the statuses the next solve uses
-  std::vector<char> zone_;          // the fluid's penetrated zone (empty without fluid)
-  std::vector<Seen> seen_;          // status sets of this increment, for cycle detection
+  Loads loads_;                         // with the fluid forces of zone_
+  Iterate at_;                          // the current iterate
+  std::vector<NodeStatus> status_;      // the statuses the next solve uses
+  std::vector<char> zone_;              // the fluid's penetrated zone (empty without fluid)
+  std::vector<Seen> seen_;              // status sets of this increment, for cycle detection
+  std::vector<double> seen_residuals_;  // the residual each of them ended with (predictor: inf)
+  bool nonlinear_springs_ = false;      // some constraint has the EXPONENTIAL law
   std::vector<std::vector<int>> changed_history_;
   IncrementOutcome outcome_;
   double damping_ = 1.0;             // step length (< 1 after a cycle)
   bool from_elastic_trial_ = false;  // the increment started from the elastic trial
   bool front_receded_ = false;       // some node went from slip back to stick
   bool closed_touching_ = false;     // the touching nodes have been closed after a singular solve
+  int exponential_stalls_ = 0;       // iterations in a row with nodes below the least force
 };
 
 }  // namespace

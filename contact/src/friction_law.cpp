@@ -1,14 +1,18 @@
 #include "styk/contact/friction_law.hpp"
 
+#include <algorithm>
 #include <cmath>
 
 namespace styk::contact {
 namespace {
 
-// The overclosure beyond what the penalty spring carries: 0 on a closed node at a solution.
+// b = lambda_n + c_n (overclosure beyond what the penalty spring carries): the second term is 0
+// on a closed node at a solution.
 double normal_indicator(const LocalPoint& p) {
-  return p.lambda[0] + p.c_n * (p.d[0] - p.gap0 - p.compliance * p.lambda[0]);
+  return p.lambda[0] + p.c_n * (p.d[0] - p.gap0 - spring_overclosure(p, p.lambda[0]));
 }
+
+bool exponential(const LocalPoint& p) { return p.exponential_force0 > 0.0; }
 
 // Tangential part with the components that do not take part masked to zero.
 Eigen::Vector2d masked(const LocalPoint& p, const Eigen::Vector3d& v) {
@@ -22,6 +26,25 @@ Eigen::Vector2d trial_traction(const LocalPoint& p) {
 bool has_tangential(const LocalPoint& p) { return p.live[1] || p.live[2]; }
 
 }  // namespace
+
+double exponential_least_force(const LocalPoint& p) {
+  return exponential(p) ? p.exponential_force0 / 100.0 : 0.0;  // p0 drops to 1 % at c0
+}
+
+double spring_overclosure(const LocalPoint& p, double lambda_n) {
+  if (!exponential(p)) return p.compliance * lambda_n;
+  const double force = std::max(lambda_n, exponential_least_force(p));
+  return std::log(force / p.exponential_force0) / p.exponential_beta;
+}
+
+SpringTangent spring_tangent(const LocalPoint& p) {
+  if (!exponential(p)) return {p.compliance, 0.0};
+  const double at = std::max(p.lambda[0], exponential_least_force(p));
+  SpringTangent tangent;
+  tangent.compliance = 1.0 / (p.exponential_beta * at);
+  tangent.offset = spring_overclosure(p, at) - tangent.compliance * at;
+  return tangent;
+}
 
 const char* status_name(NodeStatus status) {
   switch (status) {
@@ -56,9 +79,11 @@ LocalRows linearise(const LocalPoint& p, NodeStatus status) {
     rows.D.setIdentity();
     return rows;
   }
-  rows.Q(0, 0) = 1.0;  // d_n - e lambda_n = gap0
-  rows.D(0, 0) = -p.compliance;
-  rows.r[0] = p.gap0;
+  // d_n - e lambda_n = gap0 + offset: the spring's overclosure linearised at the iterate.
+  const SpringTangent penalty = spring_tangent(p);
+  rows.Q(0, 0) = 1.0;
+  rows.D(0, 0) = -penalty.compliance;
+  rows.r[0] = p.gap0 + penalty.offset;
   if (p.bonded) {
     for (int k = 1; k < 3; ++k) {
       rows.Q(k, k) = 1.0;  // d_t - e lambda_t = 0: a spring from the initial position
@@ -80,12 +105,13 @@ LocalRows linearise(const LocalPoint& p, NodeStatus status) {
     const Eigen::Vector2d e = xi / length;
     const Eigen::Matrix2d P = Eigen::Matrix2d::Identity() - e * e.transpose();
     const Eigen::Vector2d dref = masked(p, p.d_ref);
-    // db = (1 - c_n e_pen) d lambda_n + c_n d d_n (e_pen: the penalty compliance).
-    rows.D.block<2, 1>(1, 0) = -(1.0 - p.c_n * p.compliance) * e;
+    // db = (1 - c_n e_pen) d lambda_n + c_n d d_n (e_pen: the penalty compliance at the
+    // iterate; b's constant part moves gap0 by the spring's offset).
+    rows.D.block<2, 1>(1, 0) = -(1.0 - p.c_n * penalty.compliance) * e;
     rows.D.block<2, 2>(1, 1) = Eigen::Matrix2d::Identity() - beta * P;
     rows.Q.block<2, 1>(1, 0) = -p.c_n * e;
     rows.Q.block<2, 2>(1, 1) = -beta * p.c_t * P;
-    rows.r.tail<2>() = -p.c_n * p.gap0 * e - beta * p.c_t * P * dref;
+    rows.r.tail<2>() = -p.c_n * (p.gap0 + penalty.offset) * e - beta * p.c_t * P * dref;
     if (p.proximal > 0.0) {
       const Eigen::Matrix2d spring = p.proximal * p.c_t * e * e.transpose();
       rows.Q.block<2, 2>(1, 1) -= spring;

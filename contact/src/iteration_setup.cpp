@@ -71,10 +71,11 @@ Setup set_up(const std::vector<ContactConstraint>& constraints, const LinearCont
     }
     drop_dependent_rows(system, k, max_diag, g_max, options.dependent_row_ratio, s.live[k]);
     // A penalty spring is in series with the structure: c_n is the inverse of both compliances
-    // (so c_n e < 1, and b keeps the sign of lambda_n on a closed node).
+    // (the spring's largest, so c_n e < 1 at every force, and b keeps the sign of lambda_n on a
+    // closed node).
     const double snn = system.S(3 * k, 3 * k);
-    s.c_n[k] =
-        1.0 / ((snn > 1e-12 * max_diag ? snn : max_diag) + constraints[k].penalty_compliance());
+    s.c_n[k] = 1.0 / ((snn > 1e-12 * max_diag ? snn : max_diag) +
+                      constraints[k].largest_spring_compliance());
     double stt = 0.0;
     int count = 0;
     for (int c = 1; c < 3; ++c)
@@ -103,6 +104,8 @@ LocalPoint point_of(const ContactConstraint& constraint, const Setup& setup, int
   p.live = setup.live[k];
   p.tied = constraint.law.kind == FrictionLaw::Kind::Tied;
   p.compliance = constraint.penalty_compliance();
+  p.exponential_force0 = constraint.exponential_force0;
+  p.exponential_beta = constraint.exponential_beta;
   p.bonded = constraint.bonded;
   p.frictional = constraint.law.has_tangential();
   return p;

@@ -1,6 +1,7 @@
 // Penalty laws of *SURFACE BEHAVIOR: which laws the solver takes and the spring of one node.
 #include "styk/contact/penalty_law.hpp"
 
+#include <cmath>
 #include <sstream>
 
 #include "styk/core/diagnostics.hpp"
@@ -9,11 +10,6 @@ namespace styk::contact {
 
 void check_penalty_law(const SurfaceInteraction& interaction) {
   const PressureOverclosure& behavior = interaction.behavior;
-  if (behavior.law == PressureOverclosure::Law::Exponential)
-    throw InputError(behavior.where,
-                     "surface interaction " + interaction.name +
-                         ": PRESSURE-OVERCLOSURE=EXPONENTIAL is read and written but Styk does "
-                         "not solve it; use LINEAR (penalty), TIED or HARD (exact)");
   if (behavior.law == PressureOverclosure::Law::Tied && interaction.friction)
     throw InputError(interaction.friction->where,
                      "surface interaction " + interaction.name +
@@ -35,6 +31,12 @@ void apply_penalty_law(const SurfaceInteraction& interaction, const Surface& sla
                "non-positive stiffness: give the slave a C3D21/C3D28 contact layer or linear "
                "elements, or use PRESSURE-OVERCLOSURE=HARD";
     throw InputError(behavior.where, message.str());
+  }
+  if (behavior.law == PressureOverclosure::Law::Exponential) {
+    // CalculiX: p = p0 exp(-beta clearance), beta such that p drops to 1 % of p0 at c0.
+    constraint.exponential_force0 = behavior.p0 * area;
+    constraint.exponential_beta = std::log(100.0) / behavior.c0.value_or(0.0);
+    return;
   }
   constraint.penalty_stiffness = behavior.slope * area;
   constraint.bonded = behavior.law == PressureOverclosure::Law::Tied;

@@ -349,19 +349,21 @@ class ContactAnalysis {
 
   // Phase on failure: a smaller increment, or NotConvergedError at the limits naming the step,
   // the time, the reason and the nodes whose status kept changing (the last loss of equilibrium
-  // found in the step, at a larger trial increment, names the limit load).
+  // found in the step, at a larger trial increment, names the limit load). A contact law without
+  // equilibrium at the increment's load stops the step at once: a smaller increment cannot help.
   void cut_back(const std::string& where, const contact::IncrementOutcome& outcome,
                 IncrementControl& control) {
     const std::string message =
         where + " did not converge: " +
         (outcome.loss.lost ? sliding_report(model_, prepared_, factor_.floating, outcome.loss)
                            : outcome.reason) +
-        (outcome.offending.empty()
-             ? std::string()
-             : "; nodes changing status: " + node_ids(model_, constraints_, outcome.offending));
+        (outcome.offending.empty() ? std::string()
+                                   : "; " + outcome.offending_role + ": " +
+                                         node_ids(model_, constraints_, outcome.offending));
     if (outcome.loss.lost)
       sliding_ = format("at t = %.6g ", control.end()) +
                  sliding_report(model_, prepared_, factor_.floating, outcome.loss);
+    if (outcome.no_equilibrium) throw NotConvergedError(message);
     if (!control.can_cut() && !outcome.loss.lost && !sliding_.empty())
       throw NotConvergedError(message + "; the limit load is reached: " + sliding_);
     if (!control.can_cut())

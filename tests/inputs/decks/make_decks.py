@@ -821,6 +821,39 @@ def _():
                  "*NODE PRINT, NSET=TOP\nU\n*EL PRINT, ELSET=EUP\nS\n"))
 
 
+
+@deck("p02_penalty_exponential_nonmatching")
+def _():
+    lower, upper = two_blocks((2, 2, 1), (3, 3, 1))
+    o = upper.origin
+    top = upper.nodes_where(lambda x: abs(x[2] - o[2] - 1.0) < 1e-9)
+    left = [n for n in top if upper.coords[n][0] < 1.0 - 1e-9]
+    right = [n for n in top if upper.coords[n][0] >= 1.0 - 1e-9]
+    # p01's blocks under the exponential law (c0 = 1e-5, p0 = 50): the upper block, held in z and
+    # its tilts by the contact alone, rests on springs open by 1.9e-6 to 2.2e-6, which its top's
+    # displacements show (the .dat reader of the deck set compares U and S). Loads of order 1
+    # with E ~1e9 (strains ~3e-8): ccx's springs live on the deformed geometry, and with forces of
+    # order 1e-4 (p01's loads) ccx accepts an increment 1e-3 off its own equilibrium.
+    return ("** Deck set p02 (CalculiX manual, *SURFACE BEHAVIOR, PRESSURE-OVERCLOSURE=EXPONENTIAL): "
+            "a fine block pressed unevenly onto a coarse one through exponential penalty contact "
+            "(node to surface, frictionless).\n" + lower.node_text("NALL") +
+            upper.node_text("NALL") + lower.element_text("ELOW") + upper.element_text("EUP") +
+            "*MATERIAL, NAME=STIFF\n*ELASTIC\n2.1e9, 0.3\n"
+            "*MATERIAL, NAME=STIFFALU\n*ELASTIC\n7.e8, 0.33\n"
+            "*SOLID SECTION, ELSET=ELOW, MATERIAL=STIFF\n"
+            "*SOLID SECTION, ELSET=EUP, MATERIAL=STIFFALU\n" +
+            surface("LOWERTOP", lower.faces("z1")) + surface("UPPERBOT", upper.faces("z0")) +
+            "*SURFACE INTERACTION, NAME=SPRING\n"
+            "*SURFACE BEHAVIOR, PRESSURE-OVERCLOSURE=EXPONENTIAL\n1.e-5, 50.\n"
+            "*CONTACT PAIR, INTERACTION=SPRING, TYPE=NODE TO SURFACE\nUPPERBOT, LOWERTOP\n" +
+            nset("BASE", lower.nodes_where(lambda x: abs(x[2]) < 1e-9)) +
+            nset("UPX0", upper.nodes_where(lambda x: abs(x[0]) < 1e-9)) +
+            nset("UPY0", upper.nodes_where(lambda x: abs(x[1]) < 1e-9)) +
+            "*BOUNDARY\nBASE, 1, 3\nUPX0, 1\nUPY0, 2\n" + nset("TOPL", left) +
+            nset("TOPR", right) + nset("TOP", top) +
+            step("*CLOAD\nTOPL, 3, -4.\nTOPR, 3, -1.\n",
+                 "*NODE PRINT, NSET=TOP\nU\n*EL PRINT, ELSET=EUP\nS\n"))
+
 # ----------------------------------------------------------------------------------------------
 
 

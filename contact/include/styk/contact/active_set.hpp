@@ -139,7 +139,11 @@ struct IncrementOutcome {
   std::vector<IterationRecord> history;
   std::string reason;          // why it stopped unconverged
   std::vector<int> offending;  // constraints that changed status in the last iterations
-  EquilibriumLoss loss;        // set when the increment failed because equilibrium is lost
+  std::string offending_role = "nodes changing status";  // what `offending` lists
+  // The contact law has no equilibrium at this load (the EXPONENTIAL law's nodes below its least
+  // force): a smaller increment cannot help, the step stops here.
+  bool no_equilibrium = false;
+  EquilibriumLoss loss;  // set when the increment failed because equilibrium is lost
 };
 
 // Runs the iteration from `state` (the last converged increment). On convergence `state` holds

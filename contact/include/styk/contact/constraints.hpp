@@ -57,9 +57,19 @@ struct ContactConstraint {
   // opens, acts in all three directions; law is then FrictionLaw::Kind::Tied).
   double penalty_stiffness = 0.0;
   bool bonded = false;
+  // The EXPONENTIAL law's spring: the force A p0 at zero clearance (0: another law) and the decay
+  // beta = ln(100) / c0; the node carries A p0 exp(-beta clearance) while closer than c0.
+  double exponential_force0 = 0.0;
+  double exponential_beta = 0.0;
   // The spring's compliance 1 / (K A) (length per force), 0 for exact contact.
   double penalty_compliance() const {
     return penalty_stiffness > 0.0 ? 1.0 / penalty_stiffness : 0.0;
+  }
+  // The largest compliance the spring has: 1 / (K A), or the exponential law's at its least force
+  // A p0 / 100, 1 / (beta A p0 / 100).
+  double largest_spring_compliance() const {
+    if (exponential_force0 > 0.0) return 100.0 / (exponential_beta * exponential_force0);
+    return penalty_compliance();
   }
 
   // Row c (0 = normal, 1, 2 = tangential) of the generalised constraint operator: the direction

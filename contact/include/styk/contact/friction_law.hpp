@@ -8,10 +8,12 @@
 //   open  (b <= 0):            lambda = 0
 //   stick (b > 0, |xi| <= b):  d_n = gap0, d_t = d_t_ref          (tied: always stick)
 //   slip  (b > 0, |xi| > b):   d_n = gap0, F_t = lambda_t - b xi / |xi| = 0
-// A penalty law (penalty_law.hpp) puts a spring of compliance e = 1 / (K A) in series: the
-// closed conditions become d_n - gap0 = e lambda_n (the overclosure that carries lambda_n) and
-// b = lambda_n + c_n (d_n - gap0 - e lambda_n); with e = 0 they are the exact ones. A bonded
-// (TIED) node is closed for good, with springs in all three directions: d = gap0 n + e lambda.
+// A penalty law (penalty_law.hpp) puts a spring in series: the closed conditions become
+// d_n - gap0 = H(lambda_n) (the overclosure that carries lambda_n) and
+// b = lambda_n + c_n (d_n - gap0 - H(lambda_n)); with H = 0 they are the exact ones. LINEAR:
+// H = e lambda_n, e = 1 / (K A). EXPONENTIAL: H = (1/beta) ln(lambda_n / (A p0)), no less than -c0
+// (spring_overclosure). A bonded (TIED) node is closed for good, with springs in all three
+// directions: d = gap0 n + e lambda.
 // c_n, c_t > 0 are complementarity parameters (force per length; any positive values give the same
 // solution, they only steer the iteration). b > eps counts as closed (eps >= 0 absorbs round-off).
 #pragma once
@@ -37,6 +39,10 @@ struct LocalPoint {
   std::array<bool, 3> live{true, false, false};  // components taking part
   bool tied = false;                             // no slip
   double compliance = 0.0;  // penalty spring 1 / (K A), length per force (0: exact contact)
+  // EXPONENTIAL penalty law: the force A p0 at zero clearance (0: not exponential) and the decay
+  // beta = ln(100) / c0 (per length).
+  double exponential_force0 = 0.0;
+  double exponential_beta = 0.0;
   bool bonded = false;      // TIED penalty law: never opens, springs in all directions
   bool frictional = false;  // the law has friction (a closed node whose tangential components
                             // are all held by supports then sticks; frictionless ones slide)
@@ -50,6 +56,26 @@ struct LocalPoint {
 };
 
 NodeStatus classify(const LocalPoint& point);
+
+// The overclosure d_n - gap0 that the normal force lambda_n of a closed node needs, H(lambda_n):
+// 0 for exact contact, e lambda_n for a linear spring, (1/beta) ln(lambda_n / (A p0)) for the
+// exponential law. Below the exponential law's least force A p0 / 100 (at the clearance c0) it is
+// -c0: such a node rests at the clearance (the law has no equilibrium there; the iteration
+// reports it, active_set.cpp).
+double spring_overclosure(const LocalPoint& point, double lambda_n);
+
+// H linearised at the iterate's lambda_n: H ~ offset + compliance lambda_n. Linear and exact laws:
+// their own e and 0. Exponential: the tangent at max(lambda_n, A p0 / 100), compliance
+// 1 / (beta lambda_n). H is concave, so Newton steps approach a root >= A p0 / 100 from below
+// monotonically once below it.
+struct SpringTangent {
+  double compliance = 0.0;
+  double offset = 0.0;
+};
+SpringTangent spring_tangent(const LocalPoint& point);
+
+// The exponential law's least force A p0 / 100 (0 for the other laws).
+double exponential_least_force(const LocalPoint& point);
 
 // The linearised equations Q d_new + D lambda_new = r (3 rows: normal, t1, t2) of the node for
 // `status` at `point`. Rows of components that are not live are lambda_c = 0.

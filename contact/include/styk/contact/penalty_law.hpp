@@ -3,8 +3,10 @@
 // the slave node and its master point, lambda_n = K A (d_n - gap0) (LINEAR: compression only;
 // TIED: both signs and also tangentially, lambda_t = K A d_t, never opening). K is the law's slope
 // (pressure per length) and A the node's contact area (SPEC §2.5), so the pressure is K times the
-// overclosure. The springs enter the active-set iteration as their compliance 1 / (K A) in series
-// with the structure's (friction_law.hpp).
+// overclosure. EXPONENTIAL (CalculiX's law): lambda_n = A p0 exp(-beta g), g = gap0 - d_n the
+// clearance, beta = ln(100) / c0, while g <= c0; nothing beyond. The springs enter the active-set
+// iteration as their compliance in series with the structure's, the exponential one linearised
+// at the iterate (friction_law.hpp).
 #pragma once
 
 #include <string>
@@ -14,11 +16,12 @@
 
 namespace styk::contact {
 
-// Throws InputError (at the *SURFACE BEHAVIOR line) for a law or combination the solver does not
-// handle: EXPONENTIAL, and TIED together with *FRICTION.
+// Throws InputError (at the *SURFACE BEHAVIOR line) for a combination the solver does not handle:
+// TIED together with *FRICTION.
 void check_penalty_law(const SurfaceInteraction& interaction);
 
-// Sets penalty_stiffness / bonded of a constraint of a pair with `interaction`. A node surface
+// Sets penalty_stiffness / bonded (LINEAR, TIED) or exponential_force0 / exponential_beta
+// (EXPONENTIAL) of a constraint of a pair with `interaction`. A node surface
 // (TYPE=NODE) has no area: its "pressure" is a force (the Abaqus and CalculiX convention), A = 1.
 // A face slave node with a non-positive area (the corner of a C3D20 face) would be a spring of
 // negative stiffness: InputError naming the node.
