@@ -182,7 +182,9 @@ Model shifted_pair() {
   Surface bottom{"SLAVE_BOTTOM", Surface::Kind::ElementFaces, {{slave, 1}}, {}, {}};
   model.surfaces[top.name] = top;
   model.surfaces[bottom.name] = bottom;
-  model.surface_interactions["SMOOTH"] = SurfaceInteraction{"SMOOTH", std::nullopt, {}};
+  SurfaceInteraction smooth;  // frictionless, exact (hard) contact
+  smooth.name = "SMOOTH";
+  model.surface_interactions["SMOOTH"] = smooth;
   ContactPair pair;
   pair.slave = bottom.name;
   pair.master = top.name;

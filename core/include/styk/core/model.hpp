@@ -398,8 +398,7 @@ struct SurfaceInteraction {          // *SURFACE INTERACTION, NAME=
   std::string name;                  // upper-case
   std::optional<Friction> friction;  // none: frictionless
   SourceLoc where;
-  PressureOverclosure behavior;  // *SURFACE BEHAVIOR (default: hard, exact); last, so that
-                                 // aggregate initialisation {name, friction, where} stays valid
+  PressureOverclosure behavior;  // *SURFACE BEHAVIOR (default: hard, exact)
 };
 
 struct ContactPair {  // one data line of *CONTACT PAIR
