@@ -24,6 +24,13 @@ class DistributedSolver final : public LinearSolver {
     settings.block_size = prepared.has_rotations() ? 1 : 3;
     settings.where = SourceLoc{context_.model.source, 0};
     if (!direct_) {
+      settings.coarse =
+          p_multigrid_requested() ? linear_coarse_space(context_.model, prepared) : std::nullopt;
+      if (settings.coarse)
+        for (int a : settings.coarse->corner_node)
+          for (int d = 0; d < 3; ++d)
+            settings.corner_coordinates.push_back(
+                context_.model.coords[prepared.node_of_active[a]][d]);
       settings.coordinates.resize(prepared.active_dofs());
       for (int a = 0; a < prepared.active_nodes(); ++a)
         for (int d = 0; d < 3; ++d)

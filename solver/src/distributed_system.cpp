@@ -9,6 +9,7 @@
 #include <stdexcept>
 
 #include "ksp_progress.hpp"
+#include "p_multigrid.hpp"
 #include "petsc_runtime.hpp"
 
 namespace styk::solver_detail {
@@ -36,6 +37,7 @@ struct DistributedSystem::Petsc {
   Vec r = nullptr;
   Vec all = nullptr;  // the whole solution, on every rank
   VecScatter to_all = nullptr;
+  PMultigrid p_multigrid;  // referred to by the KSP's PC: destroyed after it
   ~Petsc() {
     VecScatterDestroy(&to_all);
     VecDestroy(&all);
@@ -69,7 +71,8 @@ void preallocate(Mat A, const RankRows& rows, const CsrView& K) {
   petsc_check(MatSeqAIJSetPreallocation(A, 0, d_nnz.data()), "MatSeqAIJSetPreallocation");
 }
 
-void configure_solver(KSP ksp, const DistributedSettings& settings) {
+void configure_solver(KSP ksp, Mat A, const RankRows& rows, const DistributedSettings& settings,
+                      PMultigrid& p_multigrid) {
   // Tuning from the environment goes through this prefix (PETSC_OPTIONS="-styk_mpi_...").
   petsc_check(KSPSetOptionsPrefix(ksp, "styk_mpi_"), "KSPSetOptionsPrefix");
   PC pc = nullptr;
@@ -83,6 +86,11 @@ void configure_solver(KSP ksp, const DistributedSettings& settings) {
     petsc_check(KSPSetNormType(ksp, KSP_NORM_UNPRECONDITIONED), "KSPSetNormType");
     petsc_check(KSPSetTolerances(ksp, settings.tolerance, 0.0, PETSC_DEFAULT, 5000),
                 "KSPSetTolerances");
+    if (settings.coarse) {
+      p_multigrid.configure(pc, A, *settings.coarse, settings.corner_coordinates, 0.01, &rows);
+      petsc_check(KSPSetFromOptions(ksp), "KSPSetFromOptions");
+      return;
+    }
     petsc_check(PCSetType(pc, PCGAMG), "PCSetType");
     petsc_check(PCGAMGSetType(pc, PCGAMGAGG), "PCGAMGSetType");
     petsc_check(PCGAMGSetNSmooths(pc, 1), "PCGAMGSetNSmooths");
@@ -195,7 +203,7 @@ DistributedSystem::DistributedSystem(const RankRows& rows, const CsrView& K,
   petsc_check(KSPCreate(PETSC_COMM_WORLD, &petsc_->ksp), "KSPCreate");
   petsc_check(KSPSetOperators(petsc_->ksp, A, A), "KSPSetOperators");
   if (!settings_.direct) petsc_check(petsc_->progress.attach(petsc_->ksp), "KSPMonitorSet");
-  configure_solver(petsc_->ksp, settings_);
+  configure_solver(petsc_->ksp, A, rows_, settings_, petsc_->p_multigrid);
   const auto setup_start = std::chrono::steady_clock::now();
   const PetscErrorCode setup = KSPSetUp(petsc_->ksp);
   if (setup != 0)
@@ -210,7 +218,9 @@ DistributedSystem::DistributedSystem(const RankRows& rows, const CsrView& K,
   petsc_check(VecDuplicate(petsc_->b, &petsc_->r), "VecDuplicate");
   petsc_check(VecScatterCreateToAll(petsc_->x, &petsc_->to_all, &petsc_->all),
               "VecScatterCreateToAll");
-  const std::string solver = settings_.direct ? "MUMPS" : "GAMG";
+  const std::string solver = settings_.direct   ? "MUMPS"
+                             : settings_.coarse ? "p-multigrid + GAMG"
+                                                : "GAMG";
   phases_.info(format("distributed: %.0f rows on %.0f ranks, this rank's part assembled in %.2f s",
                       static_cast<double>(K.rows), static_cast<double>(rows_.size),
                       assemble_seconds) +
@@ -219,11 +229,20 @@ DistributedSystem::DistributedSystem(const RankRows& rows, const CsrView& K,
 
 DistributedSystem::~DistributedSystem() = default;
 
+bool p_multigrid_requested() {
+  PetscRuntime::ensure();
+  PetscBool wanted = PETSC_TRUE;
+  petsc_check(PetscOptionsGetBool(nullptr, "styk_", "-p_multigrid", &wanted, nullptr),
+              "PetscOptionsGetBool");
+  return wanted == PETSC_TRUE;
+}
+
 std::string DistributedSystem::description() const {
   const std::string ranks = " on " + std::to_string(rows_.size) + " MPI ranks";
-  return settings_.direct
-             ? "MUMPS distributed Cholesky (PETSc)" + ranks
-             : "PETSc CG + GAMG (smoothed aggregation, rigid-body near-null space)" + ranks;
+  if (settings_.direct) return "MUMPS distributed Cholesky (PETSc)" + ranks;
+  return std::string(settings_.coarse ? "PETSc CG + p-multigrid (quadratic to linear level) + "
+                                      : "PETSc CG + ") +
+         "GAMG (smoothed aggregation, rigid-body near-null space)" + ranks;
 }
 
 std::vector<double> DistributedSystem::solve(const std::vector<double>& f,

@@ -8,9 +8,11 @@
 #pragma once
 
 #include <memory>
+#include <optional>
 #include <string>
 #include <vector>
 
+#include "linear_coarse_space.hpp"
 #include "linear_solver.hpp"
 #include "phase_recorder.hpp"
 
@@ -52,6 +54,10 @@ struct DistributedSettings {
   int block_size = 1;            // dofs per node when every node has the same number
   // 3 per active node for the rigid-body near-null space of GAMG (block size 3); empty: none.
   std::vector<double> coordinates;
+  // Quadratic solids: the p-multigrid's linear level under CG (p_multigrid.hpp), with 3
+  // coordinates per coarse node; none: plain GAMG.
+  std::optional<LinearCoarseSpace> coarse;
+  std::vector<double> corner_coordinates;
   std::string what = "stiffness";  // names the matrix in messages
   SourceLoc where;                 // the deck, for a singular matrix
 };
@@ -84,6 +90,10 @@ class DistributedSystem {
   double diagonal_ = 1.0;
   int iterations_ = 0;
 };
+
+// False when PETSC_OPTIONS has "-styk_p_multigrid false" (plain GAMG on quadratic meshes, for
+// comparisons) or the build has no PETSc.
+bool p_multigrid_requested();
 
 // The rows of `K` with a nonzero value (this rank's part after assembling its own elements).
 std::vector<int> rows_with_values(const CsrView& K);

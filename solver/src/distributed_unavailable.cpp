@@ -23,4 +23,6 @@ std::vector<double> DistributedSystem::solve(const std::vector<double>&,
 
 std::string DistributedSystem::description() const { return "unavailable"; }
 
+bool p_multigrid_requested() { return false; }
+
 }  // namespace styk::solver_detail

@@ -11,6 +11,7 @@
 #include <optional>
 #include <stdexcept>
 
+#include "distributed_system.hpp"
 #include "ksp_progress.hpp"
 #include "linear_coarse_space.hpp"
 #include "linear_solver.hpp"
@@ -101,12 +102,9 @@ class GamgSolver final : public LinearSolver {
                 "KSPSetTolerances");
     PC pc = nullptr;
     petsc_check(KSPGetPC(ksp, &pc), "KSPGetPC");
-    // PETSC_OPTIONS="-styk_p_multigrid false" keeps plain GAMG on quadratic meshes (comparisons).
-    PetscBool p_multigrid = PETSC_TRUE;
-    petsc_check(PetscOptionsGetBool(nullptr, "styk_", "-p_multigrid", &p_multigrid, nullptr),
-                "PetscOptionsGetBool");
     const std::optional<LinearCoarseSpace> coarse =
-        p_multigrid ? linear_coarse_space(context_.model, context_.prepared) : std::nullopt;
+        p_multigrid_requested() ? linear_coarse_space(context_.model, context_.prepared)
+                                : std::nullopt;
     if (coarse)
       p_multigrid_.configure(pc, A_.get(), *coarse, corner_coordinates(*coarse), kThreshold);
     else

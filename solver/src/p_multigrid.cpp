@@ -1,5 +1,7 @@
 #include "p_multigrid.hpp"
 
+#include <algorithm>
+#include <utility>
 #include <vector>
 
 #include "petsc_runtime.hpp"
@@ -7,20 +9,61 @@
 namespace styk::solver_detail {
 namespace {
 
-// P = P_node (x) I_3: dof 3a + c takes w_j times coarse dof 3 j + c.
-Mat interpolation(const LinearCoarseSpace& space, PetscInt fine_rows) {
-  const PetscInt coarse_rows = 3 * static_cast<PetscInt>(space.coarse_nodes);
-  std::vector<PetscInt> per_row(fine_rows);
-  for (PetscInt row = 0; row < fine_rows; ++row)
-    per_row[row] = space.ptr[row / 3 + 1] - space.ptr[row / 3];
+// Where the coarse dofs live: coarse node j belongs to the rank owning its corner node's rows,
+// and each rank's coarse nodes are numbered consecutively in the order of those rows (one process:
+// the order of the space).
+struct CoarseLayout {
+  std::vector<PetscInt> first_row;  // coarse node -> its first coarse row (3 per node)
+  std::vector<int> owned;           // this rank's coarse nodes, in row order
+  PetscInt begin = 0, end = 0;      // this rank's coarse rows
+};
+
+CoarseLayout coarse_layout(const LinearCoarseSpace& space, const RankRows& rows) {
+  const int nodes = space.coarse_nodes;
+  std::vector<std::vector<std::pair<int, int>>> by_rank(rows.size);  // (fine row, coarse node)
+  for (int j = 0; j < nodes; ++j) {
+    const int fine_row = rows.row(3 * space.corner_node[j]);
+    by_rank[rows.owner(fine_row)].push_back({fine_row, j});
+  }
+  CoarseLayout layout;
+  layout.first_row.assign(nodes, 0);
+  PetscInt next = 0;
+  for (int r = 0; r < rows.size; ++r) {
+    std::sort(by_rank[r].begin(), by_rank[r].end());
+    if (r == rows.rank) layout.begin = next;
+    for (const auto& [fine_row, j] : by_rank[r]) {
+      layout.first_row[j] = next;
+      next += 3;
+      if (r == rows.rank) layout.owned.push_back(j);
+    }
+    if (r == rows.rank) layout.end = next;
+  }
+  return layout;
+}
+
+// P = P_node (x) I_3 over this rank's fine rows: dof 3a + c takes w_j times coarse row
+// first_row[j] + c.
+Mat interpolation(const LinearCoarseSpace& space, const RankRows& rows, const CoarseLayout& layout,
+                  MPI_Comm comm) {
+  const PetscInt local = rows.end() - rows.begin();
+  std::vector<PetscInt> inside(local, 0), outside(local, 0);
+  for (PetscInt p = 0; p < local; ++p) {
+    const int a = rows.dof(static_cast<int>(rows.begin() + p)) / 3;
+    for (int k = space.ptr[a]; k < space.ptr[a + 1]; ++k) {
+      const PetscInt column = layout.first_row[space.node[k]];
+      (column >= layout.begin && column < layout.end ? inside : outside)[p] += 1;
+    }
+  }
   Mat P = nullptr;
-  petsc_check(MatCreateSeqAIJ(PETSC_COMM_SELF, fine_rows, coarse_rows, 0, per_row.data(), &P),
-              "MatCreateSeqAIJ");
-  for (PetscInt row = 0; row < fine_rows; ++row) {
-    const int a = static_cast<int>(row / 3), c = static_cast<int>(row % 3);
-    for (int p = space.ptr[a]; p < space.ptr[a + 1]; ++p) {
-      const PetscInt column = 3 * static_cast<PetscInt>(space.node[p]) + c;
-      const PetscScalar w = space.weight[p];
+  petsc_check(MatCreateAIJ(comm, local, layout.end - layout.begin, PETSC_DETERMINE, PETSC_DETERMINE,
+                           0, inside.data(), 0, outside.data(), &P),
+              "MatCreateAIJ");
+  for (PetscInt row = rows.begin(); row < rows.end(); ++row) {
+    const int dof = rows.dof(static_cast<int>(row));
+    const int a = dof / 3, c = dof % 3;
+    for (int k = space.ptr[a]; k < space.ptr[a + 1]; ++k) {
+      const PetscInt column = layout.first_row[space.node[k]] + c;
+      const PetscScalar w = space.weight[k];
       petsc_check(MatSetValues(P, 1, &row, 1, &column, &w, INSERT_VALUES), "MatSetValues");
     }
   }
@@ -30,14 +73,17 @@ Mat interpolation(const LinearCoarseSpace& space, PetscInt fine_rows) {
   return P;
 }
 
-void attach_rigid_body_modes(Mat coarse, const std::vector<double>& xyz) {
+// The rigid-body modes of the corner nodes this rank owns, for GAMG on the coarse level.
+void attach_rigid_body_modes(Mat coarse, const std::vector<double>& xyz, const CoarseLayout& layout,
+                             MPI_Comm comm) {
   Vec coordinates = nullptr;
-  petsc_check(VecCreateSeq(PETSC_COMM_SELF, static_cast<PetscInt>(xyz.size()), &coordinates),
-              "VecCreateSeq");
+  petsc_check(VecCreateMPI(comm, layout.end - layout.begin, PETSC_DETERMINE, &coordinates),
+              "VecCreateMPI");
   VecSetBlockSize(coordinates, 3);
   PetscScalar* values = nullptr;
   VecGetArray(coordinates, &values);
-  std::copy(xyz.begin(), xyz.end(), values);
+  for (std::size_t i = 0; i < layout.owned.size(); ++i)
+    for (int d = 0; d < 3; ++d) values[3 * i + d] = xyz[3 * layout.owned[i] + d];
   VecRestoreArray(coordinates, &values);
   MatNullSpace modes = nullptr;
   PetscErrorCode code = MatNullSpaceCreateRigidBody(coordinates, &modes);
@@ -55,13 +101,21 @@ PMultigrid::~PMultigrid() {
 }
 
 void PMultigrid::configure(PC pc, Mat A, const LinearCoarseSpace& space,
-                           const std::vector<double>& corner_xyz, PetscReal threshold) {
-  PetscInt fine_rows = 0;
-  petsc_check(MatGetSize(A, &fine_rows, nullptr), "MatGetSize");
-  P_ = interpolation(space, fine_rows);
+                           const std::vector<double>& corner_xyz, PetscReal threshold,
+                           const RankRows* rows) {
+  RankRows one_process;
+  if (rows == nullptr) {
+    PetscInt fine_rows = 0;
+    petsc_check(MatGetSize(A, &fine_rows, nullptr), "MatGetSize");
+    one_process.first = {0, static_cast<int>(fine_rows)};
+    rows = &one_process;
+  }
+  const MPI_Comm comm = rows->size > 1 ? PETSC_COMM_WORLD : PETSC_COMM_SELF;
+  const CoarseLayout layout = coarse_layout(space, *rows);
+  P_ = interpolation(space, *rows, layout, comm);
   petsc_check(MatPtAP(A, P_, MAT_INITIAL_MATRIX, PETSC_DEFAULT, &coarse_), "MatPtAP");
   petsc_check(MatSetBlockSize(coarse_, 3), "MatSetBlockSize");
-  attach_rigid_body_modes(coarse_, corner_xyz);
+  attach_rigid_body_modes(coarse_, corner_xyz, layout, comm);
   coarse_rows_ = 3 * static_cast<PetscInt>(space.coarse_nodes);
 
   petsc_check(PCSetType(pc, PCMG), "PCSetType");

@@ -7,6 +7,9 @@
 
 #include <petscksp.h>
 
+#include <vector>
+
+#include "distributed_system.hpp"
 #include "linear_coarse_space.hpp"
 
 namespace styk::solver_detail {
@@ -19,10 +22,13 @@ class PMultigrid {
   PMultigrid(const PMultigrid&) = delete;
   PMultigrid& operator=(const PMultigrid&) = delete;
 
-  // Makes `pc` (of a KSP whose operator is A, block size 3) the two-level p-multigrid.
-  // `corner_xyz`: 3 coordinates per coarse node. GAMG's threshold as the plain solver's.
+  // Makes `pc` (of a KSP whose operator is A, block size 3, 3 dofs per active node) the two-level
+  // p-multigrid. `corner_xyz`: 3 coordinates per coarse node of `space`. `rows`: the ranks' PETSc
+  // rows of A (distributed runs; each coarse node then belongs to the rank owning its corner's
+  // rows); nullptr: one process, row = dof. GAMG's threshold as the plain solver's.
   void configure(PC pc, Mat A, const LinearCoarseSpace& space,
-                 const std::vector<double>& corner_xyz, PetscReal threshold);
+                 const std::vector<double>& corner_xyz, PetscReal threshold,
+                 const RankRows* rows = nullptr);
   PetscInt coarse_rows() const { return coarse_rows_; }
   // The GAMG levels below the linear level (after the KSP's set-up).
   PetscInt gamg_levels() const;
