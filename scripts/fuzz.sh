@@ -3,6 +3,7 @@
 # into build-fuzz/ (STYK_FUZZ=ON: the readers and the harnesses only), seeds one corpus per harness
 # from samples/ and tests/inputs/, and runs each harness for SECONDS (default 60).
 #   scripts/fuzz.sh [SECONDS] [HARNESS...]     harnesses: inp_reader dat_reader results_reader
+#                                              msh_reader
 # With STYK_FUZZ_RUNS=N each harness runs N inputs from a fixed random seed instead (the test
 # command's short, repeatable run: scripts/run-tests.sh). STYK_FUZZ_RESEAL=1 makes the results
 # harness seal each mutated file again, so mutations reach HDF5 behind the seal (docs/fuzzing.md).
@@ -14,7 +15,7 @@ cd "$(dirname "$0")/.."
 seconds=${1:-60}
 shift || true
 harnesses=("$@")
-if (( ${#harnesses[@]} == 0 )); then harnesses=(inp_reader dat_reader results_reader); fi
+if (( ${#harnesses[@]} == 0 )); then harnesses=(inp_reader dat_reader results_reader msh_reader); fi
 build=${STYK_FUZZ_BUILD_DIR:-build-fuzz}
 
 scripts/install-deps.sh --fuzz
@@ -34,6 +35,7 @@ seed() {  # harness, find pattern, largest size
 }
 seed inp_reader '*.inp' 64k
 seed dat_reader '*.dat' 64k
+seed msh_reader '*.msh' 64k
 # Results files: sealed ones only (docs/fuzzing.md). An unsealed seed (written before the seal) is
 # parsed by HDF5 itself, and its mutations reach memory errors inside HDF5 that Styk cannot
 # prevent; a sealed seed's mutations are refused by the seal before HDF5 reads a byte (unless
@@ -41,7 +43,7 @@ seed dat_reader '*.dat' 64k
 mkdir -p "$build/corpus/results_reader"
 find samples tests/inputs -type f -name '*.styk.h5' -size -128k -print0 |   # smallest ~75 KB
   while IFS= read -r -d '' f; do
-    [[ "$(head -c 18 "$f")" == "styk-results-seal " ]] || continue
+    [[ "$(head -c 18 "$f" | tr -d '\0')" == "styk-results-seal " ]] || continue
     cp -n "$f" "$build/corpus/results_reader/$(echo "$f" | tr '/' '_')"
   done
 for f in samples/spec-2.1-cantilever-c3d8-6x1.inp samples/cantilever-c3d20.inp; do

@@ -12,4 +12,5 @@ ctest --test-dir "${STYK_BUILD_DIR:-build}" --output-on-failure -j "${STYK_JOBS:
 # (fixed seed and number of inputs) of every harness; the results-file harness is seeded with
 # sealed files only, so its mutations stay within what Styk controls (the seal is verified before
 # HDF5 reads a byte).
-STYK_FUZZ_RUNS="${STYK_FUZZ_RUNS:-4000}" scripts/fuzz.sh 0 inp_reader dat_reader results_reader
+STYK_FUZZ_RUNS="${STYK_FUZZ_RUNS:-4000}" scripts/fuzz.sh 0 inp_reader dat_reader results_reader \
+  msh_reader
