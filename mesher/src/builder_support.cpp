@@ -87,23 +87,6 @@ std::vector<int> nodes_where(const Mesh& mesh, const std::function<bool(const Ve
   return out;
 }
 
-Model finish_model(const Mesh& mesh, const std::string& heading, double young, double poisson) {
-  Model model = to_model(mesh);
-  model.heading = heading;
-  Material material;
-  material.name = "MAT";
-  material.young = young;
-  material.poisson = poisson;
-  model.materials.push_back(material);
-  Section section;
-  section.elset = "EALL";
-  section.material = "MAT";
-  section.material_index = 0;
-  model.sections.push_back(section);
-  for (Element& e : model.elements) e.section = 0;
-  return model;
-}
-
 NodalAreas equivalent_nodal_areas(const Model& model, const ElementRegistry& registry,
                                   const std::vector<FaceRef>& faces) {
   NodalAreas out;
@@ -201,3 +184,24 @@ OutputRequest print_request(OutputRequest::Kind kind, const std::string& set,
 }
 
 }  // namespace styk::mesher::detail
+
+namespace styk::mesher {
+
+Model finish_model(const Mesh& mesh, const std::string& heading, double young, double poisson) {
+  Model model = to_model(mesh);
+  model.heading = heading;
+  Material material;
+  material.name = "MAT";
+  material.young = young;
+  material.poisson = poisson;
+  model.materials.push_back(material);
+  Section section;
+  section.elset = "EALL";
+  section.material = "MAT";
+  section.material_index = 0;
+  model.sections.push_back(section);
+  for (Element& e : model.elements) e.section = 0;
+  return model;
+}
+
+}  // namespace styk::mesher

@@ -41,9 +41,6 @@ BlockMap box_map(const Vec3& origin, const Vec3& size);
 
 std::vector<int> nodes_where(const Mesh& mesh, const std::function<bool(const Vec3&)>& inside);
 
-// Model of the mesh with material MAT (E, nu) on element set EALL.
-Model finish_model(const Mesh& mesh, const std::string& heading, double young, double poisson);
-
 // Equivalent nodal areas A_i of the faces' nodes (TElement::nodal_areas, summed per node; C3D20
 // corners are negative) and their total, summed in face order.
 struct NodalAreas {

@@ -11,6 +11,7 @@
 #include "ksp_progress.hpp"
 #include "p_multigrid.hpp"
 #include "petsc_runtime.hpp"
+#include "rigid_body_modes.hpp"
 
 namespace styk::solver_detail {
 namespace {
@@ -100,6 +101,14 @@ void configure_solver(KSP ksp, Mat A, const RankRows& rows, const DistributedSet
   petsc_check(KSPSetFromOptions(ksp), "KSPSetFromOptions");
 }
 
+// The coordinates of this rank's rows, in row order (3 per node: a node's rows are consecutive).
+std::vector<double> owned_coordinates(const RankRows& rows, const std::vector<double>& by_dof) {
+  std::vector<double> out;
+  out.reserve(rows.end() - rows.begin());
+  for (int row = rows.begin(); row < rows.end(); ++row) out.push_back(by_dof[rows.dof(row)]);
+  return out;
+}
+
 // One line per rank on rank 0's progress: its rows, the rows its elements gave and how long adding
 // them took (how evenly the work is split).
 void report_rank_shares(const RankRows& rows, int contributed, double seconds,
@@ -113,24 +122,6 @@ void report_rank_shares(const RankRows& rows, int contributed, double seconds,
     phases.info(
         format("rank %.0f: owns %.0f rows, ", r, all[3 * r], 0.0) +
         format("its elements gave %.0f rows, added in %.2f s", all[3 * r + 1], all[3 * r + 2]));
-}
-
-void attach_rigid_body_modes(Mat A, const RankRows& rows, const std::vector<double>& coordinates) {
-  Vec xyz = nullptr;
-  petsc_check(VecCreateMPI(PETSC_COMM_WORLD, rows.end() - rows.begin(), PETSC_DETERMINE, &xyz),
-              "VecCreateMPI");
-  VecSetBlockSize(xyz, 3);
-  PetscScalar* local = nullptr;
-  VecGetArray(xyz, &local);
-  for (int row = rows.begin(); row < rows.end(); ++row)
-    local[row - rows.begin()] = coordinates[rows.dof(row)];
-  VecRestoreArray(xyz, &local);
-  MatNullSpace modes = nullptr;
-  PetscErrorCode code = MatNullSpaceCreateRigidBody(xyz, &modes);
-  if (code == 0) code = MatSetNearNullSpace(A, modes);
-  MatNullSpaceDestroy(&modes);
-  VecDestroy(&xyz);
-  petsc_check(code, "MatNullSpaceCreateRigidBody");
 }
 
 }  // namespace
@@ -197,7 +188,7 @@ DistributedSystem::DistributedSystem(const RankRows& rows, const CsrView& K,
   petsc_check(MatSetOption(A, MAT_SYMMETRIC, PETSC_TRUE), "MatSetOption");
   petsc_check(MatSetOption(A, MAT_SPD, PETSC_TRUE), "MatSetOption");
   if (!settings_.direct && settings_.block_size == 3 && !settings_.coordinates.empty())
-    attach_rigid_body_modes(A, rows_, settings_.coordinates);
+    attach_rigid_body_modes(A, PETSC_COMM_WORLD, owned_coordinates(rows_, settings_.coordinates));
   const double assemble_seconds = seconds_since(start);
 
   petsc_check(KSPCreate(PETSC_COMM_WORLD, &petsc_->ksp), "KSPCreate");

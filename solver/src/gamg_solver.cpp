@@ -18,6 +18,7 @@
 #include "p_multigrid.hpp"
 #include "parallel.hpp"
 #include "petsc_runtime.hpp"
+#include "rigid_body_modes.hpp"
 
 namespace styk::solver_detail {
 namespace {
@@ -86,7 +87,12 @@ class GamgSolver final : public LinearSolver {
                                           K.values().data(), A_.out()),
                 "MatCreateSeqAIJWithArrays");
     petsc_check(MatSetBlockSize(A_.get(), 3), "MatSetBlockSize");
-    attach_rigid_body_modes();
+    std::vector<double> xyz;
+    xyz.reserve(n);
+    for (int a = 0; a < context_.prepared.active_nodes(); ++a)
+      for (int d = 0; d < 3; ++d)
+        xyz.push_back(context_.model.coords[context_.prepared.node_of_active[a]][d]);
+    attach_rigid_body_modes(A_.get(), PETSC_COMM_SELF, xyz);
     petsc_check(KSPCreate(PETSC_COMM_SELF, ksp_.out()), "KSPCreate");
     KSP ksp = ksp_.get();
     // Tuning from the environment goes through this prefix (PETSC_OPTIONS="-styk_pc_gamg_...").
@@ -233,26 +239,6 @@ class GamgSolver final : public LinearSolver {
       for (int d = 0; d < 3; ++d)
         xyz.push_back(context_.model.coords[context_.prepared.node_of_active[a]][d]);
     return xyz;
-  }
-
-  void attach_rigid_body_modes() {
-    const Model& model = context_.model;
-    const PreparedModel& prepared = context_.prepared;
-    PetscVec coordinates;
-    petsc_check(VecCreateSeq(PETSC_COMM_SELF, prepared.active_dofs(), coordinates.out()),
-                "VecCreateSeq");
-    petsc_check(VecSetBlockSize(coordinates.get(), 3), "VecSetBlockSize");
-    PetscScalar* xyz = nullptr;
-    petsc_check(VecGetArray(coordinates.get(), &xyz), "VecGetArray");
-    for (int a = 0; a < prepared.active_nodes(); ++a)
-      for (int d = 0; d < 3; ++d) xyz[3 * a + d] = model.coords[prepared.node_of_active[a]][d];
-    petsc_check(VecRestoreArray(coordinates.get(), &xyz), "VecRestoreArray");
-    MatNullSpace modes = nullptr;
-    petsc_check(MatNullSpaceCreateRigidBody(coordinates.get(), &modes),
-                "MatNullSpaceCreateRigidBody");
-    const PetscErrorCode code = MatSetNearNullSpace(A_.get(), modes);
-    MatNullSpaceDestroy(&modes);
-    petsc_check(code, "MatSetNearNullSpace");
   }
 
   SolverContext context_;

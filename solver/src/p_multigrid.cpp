@@ -5,6 +5,7 @@
 #include <vector>
 
 #include "petsc_runtime.hpp"
+#include "rigid_body_modes.hpp"
 
 namespace styk::solver_detail {
 namespace {
@@ -73,24 +74,14 @@ Mat interpolation(const LinearCoarseSpace& space, const RankRows& rows, const Co
   return P;
 }
 
-// The rigid-body modes of the corner nodes this rank owns, for GAMG on the coarse level.
-void attach_rigid_body_modes(Mat coarse, const std::vector<double>& xyz, const CoarseLayout& layout,
-                             MPI_Comm comm) {
-  Vec coordinates = nullptr;
-  petsc_check(VecCreateMPI(comm, layout.end - layout.begin, PETSC_DETERMINE, &coordinates),
-              "VecCreateMPI");
-  VecSetBlockSize(coordinates, 3);
-  PetscScalar* values = nullptr;
-  VecGetArray(coordinates, &values);
-  for (std::size_t i = 0; i < layout.owned.size(); ++i)
-    for (int d = 0; d < 3; ++d) values[3 * i + d] = xyz[3 * layout.owned[i] + d];
-  VecRestoreArray(coordinates, &values);
-  MatNullSpace modes = nullptr;
-  PetscErrorCode code = MatNullSpaceCreateRigidBody(coordinates, &modes);
-  if (code == 0) code = MatSetNearNullSpace(coarse, modes);
-  MatNullSpaceDestroy(&modes);
-  VecDestroy(&coordinates);
-  petsc_check(code, "MatNullSpaceCreateRigidBody");
+// The coordinates of the corner nodes this rank owns, in coarse row order.
+std::vector<double> owned_corner_coordinates(const std::vector<double>& xyz,
+                                             const CoarseLayout& layout) {
+  std::vector<double> out;
+  out.reserve(3 * layout.owned.size());
+  for (int j : layout.owned)
+    for (int d = 0; d < 3; ++d) out.push_back(xyz[3 * j + d]);
+  return out;
 }
 
 }  // namespace
@@ -115,7 +106,7 @@ void PMultigrid::configure(PC pc, Mat A, const LinearCoarseSpace& space,
   P_ = interpolation(space, *rows, layout, comm);
   petsc_check(MatPtAP(A, P_, MAT_INITIAL_MATRIX, PETSC_DEFAULT, &coarse_), "MatPtAP");
   petsc_check(MatSetBlockSize(coarse_, 3), "MatSetBlockSize");
-  attach_rigid_body_modes(coarse_, corner_xyz, layout, comm);
+  attach_rigid_body_modes(coarse_, comm, owned_corner_coordinates(corner_xyz, layout));
   coarse_rows_ = 3 * static_cast<PetscInt>(space.coarse_nodes);
 
   petsc_check(PCSetType(pc, PCMG), "PCSetType");

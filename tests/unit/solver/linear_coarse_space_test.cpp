@@ -70,18 +70,7 @@ TEST(LinearCoarseSpace, InterpolatesLinearFieldsExactlyOnQuadraticTetrahedra) {
                      },
                      {"C3D20", {3, 2, 2}, {1, 1, 1}, "EALL"});
   mesher::split_to_tetrahedra(mesh, registry, "C3D10");
-  Model model = mesher::to_model(mesh);
-  Material steel;
-  steel.name = "STEEL";
-  steel.young = 210000.0;
-  steel.poisson = 0.3;
-  model.materials.push_back(steel);
-  Section section;
-  section.elset = "EALL";
-  section.material = "STEEL";
-  section.material_index = 0;
-  model.sections.push_back(section);
-  for (Element& e : model.elements) e.section = 0;
+  const Model model = mesher::finish_model(mesh, "tetrahedra", 210000.0, 0.3);
   EXPECT_LT(interpolation_error(model, registry), 1e-13);
 }
 

@@ -85,4 +85,8 @@ struct Mesh {
 // conditions and steps are the caller's.
 Model to_model(const Mesh& mesh, const std::string& source = "styk mesher");
 
+// to_model() with one isotropic material MAT (E, nu) given to every element by a section on EALL,
+// the heading `heading`: a solvable model of a single-material mesh.
+Model finish_model(const Mesh& mesh, const std::string& heading, double young, double poisson);
+
 }  // namespace styk::mesher
