@@ -9,6 +9,7 @@
 
 #include <gtest/gtest.h>
 
+#include "slip_rows_check.hpp"
 #include "styk/contact/active_set.hpp"
 #include "styk/contact/friction_law.hpp"
 #include "styk/contact/penalty_law.hpp"
@@ -163,22 +164,7 @@ TEST(ExponentialLaw, RowsAreTheLawsTangent) {
   EXPECT_EQ(rows.Q(0, 0), 1.0);
   EXPECT_NEAR(rows.D(0, 0), -1.0 / (kBeta * 2.0), 1e-18);
   EXPECT_NEAR(rows.r[0], 0.3 + overclosure_of(2.0) - 1.0 / kBeta, 1e-15);
-  const double h = 1e-7;
-  for (int j = 0; j < 3; ++j) {
-    LocalPoint plus = p, minus = p;
-    plus.lambda[j] += h;
-    minus.lambda[j] -= h;
-    const Eigen::Vector2d dl = (slip_function(plus) - slip_function(minus)) / (2 * h);
-    plus = p;
-    minus = p;
-    plus.d[j] += h;
-    minus.d[j] -= h;
-    const Eigen::Vector2d dd = (slip_function(plus) - slip_function(minus)) / (2 * h);
-    for (int i = 0; i < 2; ++i) {
-      EXPECT_NEAR(rows.D(1 + i, j), dl[i], 1e-6 * (1 + std::abs(dl[i]))) << i << "," << j;
-      EXPECT_NEAR(rows.Q(1 + i, j), dd[i], 1e-6 * (1 + std::abs(dd[i]))) << i << "," << j;
-    }
-  }
+  test::expect_slip_rows_match_finite_differences(p, rows, 1e-7, 1e-6);
   // Below the least force the tangent is the one at A p0 / 100 (overclosure -c0 there).
   p.lambda[0] = 0.01;
   const SpringTangent low = spring_tangent(p);

@@ -5,6 +5,8 @@
 
 #include <gtest/gtest.h>
 
+#include "slip_rows_check.hpp"
+
 namespace styk::contact {
 namespace {
 
@@ -44,22 +46,7 @@ TEST(FrictionLaw, SlipTangentMatchesFiniteDifferences) {
   const LocalPoint p = slipping_point();
   ASSERT_EQ(classify(p), NodeStatus::Slip);
   const LocalRows rows = linearise(p, NodeStatus::Slip);
-  const double h = 1e-6;
-  for (int j = 0; j < 3; ++j) {
-    LocalPoint plus = p, minus = p;
-    plus.lambda[j] += h;
-    minus.lambda[j] -= h;
-    const Eigen::Vector2d dl = (slip_function(plus) - slip_function(minus)) / (2 * h);
-    plus = p;
-    minus = p;
-    plus.d[j] += h;
-    minus.d[j] -= h;
-    const Eigen::Vector2d dd = (slip_function(plus) - slip_function(minus)) / (2 * h);
-    for (int i = 0; i < 2; ++i) {
-      EXPECT_NEAR(rows.D(1 + i, j), dl[i], 1e-7 * (1 + std::abs(dl[i]))) << i << "," << j;
-      EXPECT_NEAR(rows.Q(1 + i, j), dd[i], 1e-7 * (1 + std::abs(dd[i]))) << i << "," << j;
-    }
-  }
+  test::expect_slip_rows_match_finite_differences(p, rows, 1e-6, 1e-7);
   const Eigen::Vector3d consistent = rows.Q * p.d + rows.D * p.lambda;
   const Eigen::Vector2d C = slip_function(p);
   for (int i = 0; i < 2; ++i) EXPECT_NEAR(rows.r[1 + i], consistent[1 + i] - C[i], 1e-12);

@@ -7,6 +7,7 @@
 
 #include <gtest/gtest.h>
 
+#include "slip_rows_check.hpp"
 #include "styk/contact/active_set.hpp"
 #include "styk/contact/friction_law.hpp"
 #include "styk/contact/penalty_law.hpp"
@@ -104,22 +105,7 @@ TEST(PenaltyLaw, SlipTangentWithPenaltyMatchesFiniteDifferences) {
   p.live = {true, true, true};
   ASSERT_EQ(classify(p), NodeStatus::Slip);
   const LocalRows rows = linearise(p, NodeStatus::Slip);
-  const double h = 1e-6;
-  for (int j = 0; j < 3; ++j) {
-    LocalPoint plus = p, minus = p;
-    plus.lambda[j] += h;
-    minus.lambda[j] -= h;
-    const Eigen::Vector2d dl = (slip_function(plus) - slip_function(minus)) / (2 * h);
-    plus = p;
-    minus = p;
-    plus.d[j] += h;
-    minus.d[j] -= h;
-    const Eigen::Vector2d dd = (slip_function(plus) - slip_function(minus)) / (2 * h);
-    for (int i = 0; i < 2; ++i) {
-      EXPECT_NEAR(rows.D(1 + i, j), dl[i], 1e-7 * (1 + std::abs(dl[i]))) << i << "," << j;
-      EXPECT_NEAR(rows.Q(1 + i, j), dd[i], 1e-7 * (1 + std::abs(dd[i]))) << i << "," << j;
-    }
-  }
+  test::expect_slip_rows_match_finite_differences(p, rows, 1e-6, 1e-7);
   // The normal row is the spring: d_n - e lambda_n = gap0.
   EXPECT_EQ(rows.Q(0, 0), 1.0);
   EXPECT_EQ(rows.D(0, 0), -0.2);
