@@ -70,7 +70,7 @@ Solved solve_shaft(Mesh mesh, bool sector, const ElementRegistry& registry) {
     boundary = detail::sector_boundary(mesh, 4, 1e-7 * mesh.size());
   }
   Solved s;
-  s.model = detail::finish_model(mesh, "shaft", 200000, 0.3);
+  s.model = mesher::finish_model(mesh, "shaft", 200000, 0.3);
   if (sector) detail::add_cyclic_symmetry(s.model, boundary);
   const double tol = 1e-7 * mesh.size();
   const auto base = detail::nodes_where(mesh, [&](const Vec3& x) { return x[2] < tol; });
