@@ -102,6 +102,8 @@ void PMultigrid::configure(PC pc, Mat A, const LinearCoarseSpace& space,
     rows = &one_process;
   }
   const MPI_Comm comm = rows->size > 1 ? PETSC_COMM_WORLD : PETSC_COMM_SELF;
+  MatDestroy(&coarse_);  // a PC configured again (a new system) drops the previous level
+  MatDestroy(&P_);
   const CoarseLayout layout = coarse_layout(space, *rows);
   P_ = interpolation(space, *rows, layout, comm);
   petsc_check(MatPtAP(A, P_, MAT_INITIAL_MATRIX, PETSC_DEFAULT, &coarse_), "MatPtAP");
