@@ -2,6 +2,7 @@
 
 #include <Eigen/Dense>
 #include <cmath>
+#include <map>
 
 #include "styk/core/element.hpp"
 #include "styk/core/element_description.hpp"
@@ -62,37 +63,68 @@ bool has_linear_parent(const TElement& type, const std::vector<int>& corners) {
   return corners.size() == 4;
 }
 
+// Per element type, once: its corner count and, per local node, the linear parent's weights on
+// the corners at the node's natural point (a corner: 1 on itself). Empty when the type has no
+// linear parent the weights describe.
+struct ParentTable {
+  int corners = 0;
+  std::vector<std::vector<double>> weights;  // per local node, per corner
+};
+
+std::optional<ParentTable> parent_table(const TElement& type) {
+  const std::vector<int> corners = corner_nodes(type);
+  if (!has_linear_parent(type, corners)) return std::nullopt;
+  std::vector<Vec3> corner_xi;
+  for (int k : corners) corner_xi.push_back(type.natural_nodes()[k]);
+  ParentTable table;
+  table.corners = static_cast<int>(corners.size());
+  for (const Vec3& xi : type.natural_nodes())
+    table.weights.push_back(parent_weights(corner_xi, xi));
+  return table;
+}
+
 }  // namespace
 
 std::optional<LinearCoarseSpace> linear_coarse_space(const Model& model,
                                                      const PreparedModel& prepared) {
-  const int nodes = prepared.active_nodes();
-  std::vector<int> coarse_of(nodes, -1);
-  std::vector<int> owner_element(nodes, -1);  // an element holding the (non-corner) node
-  std::vector<int> local_index(nodes, -1);
+  // Phase 1: the element types' tables; no coarse space unless every type has one and some type
+  // has nodes beyond its corners.
+  std::map<const TElement*, ParentTable> tables;
   bool quadratic = false;
+  for (const TElement* type : prepared.formulation) {
+    if (tables.count(type) > 0) continue;
+    std::optional<ParentTable> table = parent_table(*type);
+    if (!table) return std::nullopt;
+    quadratic = quadratic || type->node_count() > table->corners;
+    tables.emplace(type, std::move(*table));
+  }
+  if (!quadratic) return std::nullopt;
+
+  // Phase 2: which active nodes are corners, and for the others one element holding them.
+  const int nodes = prepared.active_nodes();
+  std::vector<char> corner(nodes, 0);
+  std::vector<int> owner_element(nodes, -1), local_index(nodes, -1);
   for (int e = 0; e < model.element_count(); ++e) {
     const TElement& type = *prepared.formulation[e];
-    const std::vector<int> corners = corner_nodes(type);
-    if (!has_linear_parent(type, corners)) return std::nullopt;
-    quadratic = quadratic || type.node_count() > static_cast<int>(corners.size());
+    const int corners = tables.at(&type).corners;
     const int* element_nodes = model.element_nodes(e);
     for (int k = 0; k < type.node_count(); ++k) {
       const int a = prepared.active_of_node[element_nodes[k]];
       if (a < 0) continue;
-      if (k < static_cast<int>(corners.size())) {
-        coarse_of[a] = 0;  // numbered below
+      if (k < corners) {
+        corner[a] = 1;
       } else if (owner_element[a] < 0) {
         owner_element[a] = e;
         local_index[a] = k;
       }
     }
   }
-  if (!quadratic) return std::nullopt;
 
+  // Phase 3: coarse nodes (corners, and nodes of no element) and every node's weights.
   LinearCoarseSpace space;
+  std::vector<int> coarse_of(nodes, -1);
   for (int a = 0; a < nodes; ++a)
-    if (coarse_of[a] == 0 || owner_element[a] < 0) {  // corners, and nodes of no element
+    if (corner[a] || owner_element[a] < 0) {
       coarse_of[a] = space.coarse_nodes++;
       space.corner_node.push_back(a);
     }
@@ -103,15 +135,12 @@ std::optional<LinearCoarseSpace> linear_coarse_space(const Model& model,
       space.weight.push_back(1.0);
     } else {
       const int e = owner_element[a];
-      const TElement& type = *prepared.formulation[e];
-      const std::vector<int> corners = corner_nodes(type);
-      std::vector<Vec3> corner_xi;
-      for (int k : corners) corner_xi.push_back(type.natural_nodes()[k]);
-      const std::vector<double> w = parent_weights(corner_xi, type.natural_nodes()[local_index[a]]);
+      const ParentTable& table = tables.at(prepared.formulation[e]);
+      const std::vector<double>& w = table.weights[local_index[a]];
       const int* element_nodes = model.element_nodes(e);
-      for (std::size_t i = 0; i < corners.size(); ++i) {
+      for (int i = 0; i < table.corners; ++i) {
         if (std::abs(w[i]) < 1e-14) continue;
-        space.node.push_back(coarse_of[prepared.active_of_node[element_nodes[corners[i]]]]);
+        space.node.push_back(coarse_of[prepared.active_of_node[element_nodes[i]]]);
         space.weight.push_back(w[i]);
       }
     }

@@ -59,14 +59,16 @@ Mat interpolation(const LinearCoarseSpace& space, const RankRows& rows, const Co
   petsc_check(MatCreateAIJ(comm, local, layout.end - layout.begin, PETSC_DETERMINE, PETSC_DETERMINE,
                            0, inside.data(), 0, outside.data(), &P),
               "MatCreateAIJ");
+  std::vector<PetscInt> columns;
   for (PetscInt row = rows.begin(); row < rows.end(); ++row) {
     const int dof = rows.dof(static_cast<int>(row));
     const int a = dof / 3, c = dof % 3;
-    for (int k = space.ptr[a]; k < space.ptr[a + 1]; ++k) {
-      const PetscInt column = layout.first_row[space.node[k]] + c;
-      const PetscScalar w = space.weight[k];
-      petsc_check(MatSetValues(P, 1, &row, 1, &column, &w, INSERT_VALUES), "MatSetValues");
-    }
+    columns.clear();
+    for (int k = space.ptr[a]; k < space.ptr[a + 1]; ++k)
+      columns.push_back(layout.first_row[space.node[k]] + c);
+    petsc_check(MatSetValues(P, 1, &row, static_cast<PetscInt>(columns.size()), columns.data(),
+                             space.weight.data() + space.ptr[a], INSERT_VALUES),
+                "MatSetValues");
   }
   petsc_check(MatAssemblyBegin(P, MAT_FINAL_ASSEMBLY), "MatAssemblyBegin");
   petsc_check(MatAssemblyEnd(P, MAT_FINAL_ASSEMBLY), "MatAssemblyEnd");
