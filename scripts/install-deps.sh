@@ -4,7 +4,7 @@
 # Usage: scripts/install-deps.sh [--test] [--fuzz]   (--test adds the test-only peers: calculix-ccx
 # and its test suite, time, gmsh (meshes for the import tests), clang-format and clang-tidy
 # (scripts/check-format.sh, scripts/check-tidy.sh); --fuzz adds clang and its libFuzzer /
-# sanitizer runtimes: scripts/fuzz.sh)
+# sanitizer runtimes: scripts/fuzz.sh; --memcheck adds valgrind: docs/fuzzing.md)
 set -euo pipefail
 
 packages=(
@@ -21,7 +21,8 @@ for option in "$@"; do
     --test) packages+=(calculix-ccx calculix-ccx-test time python3 xvfb xauth python3-meshio clang-format-14 clang-tidy-14
                        python3-h5py gmsh) ;;
     --fuzz) packages+=(clang libclang-rt-14-dev) ;;
-    *) echo "install-deps: unknown option $option (use --test, --fuzz)" >&2; exit 1 ;;
+    --memcheck) packages+=(valgrind) ;;
+    *) echo "install-deps: unknown option $option (use --test, --fuzz, --memcheck)" >&2; exit 1 ;;
   esac
 done
 
