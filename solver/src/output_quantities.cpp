@@ -24,6 +24,17 @@ Vector6d voigt(const Tensor6& t) {
   return v;
 }
 
+// The estimate compares the continuum stress at the element's integration points (of the rule
+// its section chose) with the smoothed nodal stress. Beams and shells store section stations and
+// fibres instead (their S and laws do not line up with the rule's points: reading them as such
+// gave NaN or garbage), so they get no estimate.
+bool continuum_with_point_output(const TElement& element, const PreparedModel& prepared, int e) {
+  const ElementForm form = element.form();
+  if (form == ElementForm::Line || form == ElementForm::Shell) return false;
+  return prepared.ip_offset[e + 1] - prepared.ip_offset[e] ==
+         element.rule(prepared.rule_kind[e]).size();
+}
+
 }  // namespace
 
 OutputNeeds output_needs(const Model& model, std::size_t step) {
@@ -49,10 +60,12 @@ void estimate_stress_errors(const Model& model, const PreparedModel& prepared,
     std::vector<MaterialPoint> laws;
     for (int e = begin; e < end; ++e) {
       const TElement& element = *prepared.formulation[e];
+      if (!continuum_with_point_output(element, prepared, e)) continue;  // ERR stays 0
       element_geometry(model, prepared, e, g);
-      element.point_volumes(g, RuleKind::Full, dv);
-      element.point_laws(g, states.law(e), RuleKind::Full, laws);
-      const IntegrationRule rule = element.rule(RuleKind::Full);
+      const RuleKind kind = prepared.rule_kind[e];  // the rule its stresses are output at
+      element.point_volumes(g, kind, dv);
+      element.point_laws(g, states.law(e), kind, laws);
+      const IntegrationRule rule = element.rule(kind);
       const int n = element.node_count();
       N.resize(n);
       dN.resize(n, 3);
