@@ -11,6 +11,7 @@
 
 #include <Eigen/Core>
 
+#include "blas_kernels.hpp"
 #include "cholmod_handles.hpp"
 #include "linear_solver.hpp"
 #include "node_ordering.hpp"
@@ -134,6 +135,8 @@ class CholmodSolver final : public LinearSolver {
       std::vector<char> forward;
     };
     std::vector<Scratch> scratch(threads);
+    // The workers call the BLAS on independent blocks: one BLAS thread each.
+    const SingleThreadedBlas single_threaded_blas;
     parallel_for(blocks, threads, 1, [&](int begin, int end, int worker) {
       Scratch& w = scratch[worker];
       for (int b = begin; b < end; ++b) {

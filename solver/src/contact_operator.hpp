@@ -37,7 +37,7 @@ class ContactOperator {
   // components and reduced (still sparse: a dependent dof's entry moves to its masters), and the
   // solution is wanted at the reduced dofs the contact nodes are made of.
   Eigen::MatrixXd compliance(LinearSolver& solver, int active_dofs,
-                             const ModelConstraints& kinematic, int block = 64) const;
+                             const ModelConstraints& kinematic, int block = 128) const;
 
  private:
   std::vector<int> ptr_;  // row i: entries ptr_[i] .. ptr_[i+1]

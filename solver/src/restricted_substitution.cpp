@@ -2,6 +2,8 @@
 
 #include <algorithm>
 
+#include "blas_kernels.hpp"
+
 namespace styk::solver_detail {
 
 RestrictedSubstitution::RestrictedSubstitution(const cholmod_factor& L,
@@ -33,30 +35,35 @@ RestrictedSubstitution::RestrictedSubstitution(const cholmod_factor& L,
 void RestrictedSubstitution::solve(Eigen::MatrixXd& X, const std::vector<char>& forward,
                                    const std::vector<char>& back, Eigen::MatrixXd& E) const {
   const auto nsuper = static_cast<SuiteSparse_long>(parent_.size());
-  const Eigen::Index r = X.cols();
+  const auto r = static_cast<int>(X.cols());
+  const auto ldx = static_cast<int>(X.rows());
   if (E.rows() < max_below_ || E.cols() < r) E.resize(max_below_, r);
+  const auto lde = static_cast<int>(E.rows());
   for (SuiteSparse_long s = 0; s < nsuper; ++s) {
     if (!forward[s]) continue;
     const auto [columns, below, block] = supernode_block(s);
-    auto xs = X.middleRows(super_[s], columns);
-    block.topRows(columns).triangularView<Eigen::Lower>().solveInPlace(xs);
+    const auto c = static_cast<int>(columns), b = static_cast<int>(below);
+    const auto ldl = static_cast<int>(block.rows());
+    double* xs = X.data() + super_[s];
+    lower_triangular_solve(false, c, r, block.data(), ldl, xs, ldx);
     if (below == 0) continue;
-    auto e = E.topLeftCorner(below, r);
-    e.noalias() = block.bottomRows(below) * xs;
+    E.topLeftCorner(below, r).setZero();
+    multiply_add(false, b, r, c, 1.0, block.data() + columns, ldl, xs, ldx, E.data(), lde);
     const SuiteSparse_long* rows = s_ + pi_[s] + columns;
-    for (Eigen::Index i = 0; i < below; ++i) X.row(rows[i]) -= e.row(i);
+    for (Eigen::Index i = 0; i < below; ++i) X.row(rows[i]) -= E.row(i).head(r);
   }
   for (SuiteSparse_long s = nsuper - 1; s >= 0; --s) {
     if (!back[s]) continue;
     const auto [columns, below, block] = supernode_block(s);
-    auto xs = X.middleRows(super_[s], columns);
+    const auto c = static_cast<int>(columns), b = static_cast<int>(below);
+    const auto ldl = static_cast<int>(block.rows());
+    double* xs = X.data() + super_[s];
     if (below > 0) {
-      auto e = E.topLeftCorner(below, r);
       const SuiteSparse_long* rows = s_ + pi_[s] + columns;
-      for (Eigen::Index i = 0; i < below; ++i) e.row(i) = X.row(rows[i]);
-      xs.noalias() -= block.bottomRows(below).transpose() * e;
+      for (Eigen::Index i = 0; i < below; ++i) E.row(i).head(r) = X.row(rows[i]);
+      multiply_add(true, c, r, b, -1.0, block.data() + columns, ldl, E.data(), lde, xs, ldx);
     }
-    block.topRows(columns).triangularView<Eigen::Lower>().transpose().solveInPlace(xs);
+    lower_triangular_solve(true, c, r, block.data(), ldl, xs, ldx);
   }
 }
 
