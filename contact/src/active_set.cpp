@@ -138,6 +138,10 @@ class IncrementIteration {
         commit();
         return outcome_;
       }
+      if (stagnated()) {
+        report_no_convergence();
+        return outcome_;
+      }
     }
     report_no_convergence();
     return outcome_;
@@ -236,6 +240,7 @@ class IncrementIteration {
   Step iterate(int iteration) {
     Iterate next;
     bool regularised = false;
+    const int reused_before = factor_.reused;
     const Step solved = solve_step(next, regularised);
     if (solved != Step::next) return solved;
     if (damping_ < 1.0) {
@@ -247,10 +252,15 @@ class IncrementIteration {
     record.iteration = iteration;
     record.damping = damping_;
     record.regularised = regularised;
+    record.reused_factor = factor_.reused > reused_before;
     const double scale = force_scale(next);
     std::vector<NodeStatus> new_status;
     std::vector<int> changed = classify_iterate(next, scale, new_status, record.residual);
     record.residual /= scale;
+    // A Newton step solved by refinement should cut the residual by far more than 10x near the
+    // solution; when it does not, the refined solve's accuracy may be what limits it.
+    factor_.refine_next = !(record.reused_factor && !outcome_.history.empty() &&
+                            record.residual > 0.1 * outcome_.history.back().residual);
     const std::vector<int> anticipated = anticipate(iteration, next, new_status);
     changed.insert(changed.end(), anticipated.begin(), anticipated.end());
     record.anticipated = static_cast<int>(anticipated.size());
@@ -323,12 +333,12 @@ class IncrementIteration {
     regularised = hold.slip_only;
     bool solved =
         solve_linearised(constraints_, system_, loads_, setup_, status_, at_, state_.nodes, eps,
-                         regularised ? options_.slip_spring : 0.0, next);
+                         regularised ? options_.slip_spring : 0.0, options_, &factor_, next);
     if (!solved && !regularised && any_slipping(status_)) {
       // Singular for another reason (e.g. slip directions that leave a rotation free).
       regularised = true;
       solved = solve_linearised(constraints_, system_, loads_, setup_, status_, at_, state_.nodes,
-                                eps, options_.slip_spring, next);
+                                eps, options_.slip_spring, options_, &factor_, next);
     }
     if (solved) return Step::next;
     if (!closed_touching_) {
@@ -461,12 +471,30 @@ class IncrementIteration {
 
   // Phase 3 at the cap: the reason and the nodes whose status changed in the last four
   // iterations.
+  // The residual has not reached a new low for ActiveSetOptions::stagnation_iterations
+  // iterations.
+  bool stagnated() const {
+    const std::vector<IterationRecord>& history = outcome_.history;
+    const auto window = static_cast<std::size_t>(std::max(options_.stagnation_iterations, 1));
+    if (options_.stagnation_iterations <= 0 || history.size() <= window) return false;
+    double before = std::numeric_limits<double>::infinity();
+    for (std::size_t i = 0; i + window < history.size(); ++i)
+      before = std::min(before, history[i].residual);
+    for (std::size_t i = history.size() - window; i < history.size(); ++i)
+      if (history[i].residual < before) return false;
+    return true;
+  }
+
   void report_no_convergence() {
     char residual[32];
     std::snprintf(residual, sizeof residual, "%.2e",
                   outcome_.history.empty() ? 0.0 : outcome_.history.back().residual);
-    outcome_.reason = "no convergence in " + std::to_string(options_.max_iterations) +
-                      " iterations (last residual " + residual + ")";
+    outcome_.reason = outcome_.iterations < options_.max_iterations
+                          ? "no progress in the last " +
+                                std::to_string(options_.stagnation_iterations) +
+                                " iterations (last residual " + residual + ")"
+                          : "no convergence in " + std::to_string(options_.max_iterations) +
+                                " iterations (last residual " + residual + ")";
     std::set<int> offending;
     const std::size_t last = changed_history_.size();
     for (std::size_t i = last > 4 ? last - 4 : 0; i < last; ++i)
@@ -495,6 +523,7 @@ class IncrementIteration {
   bool front_receded_ = false;       // some node went from slip back to stick
   bool closed_touching_ = false;     // the touching nodes have been closed after a singular solve
   int exponential_stalls_ = 0;       // iterations in a row with nodes below the least force
+  LinearisedFactor factor_;          // the last large linearised system's factor, for reuse
 };
 
 }  // namespace

@@ -4,10 +4,12 @@
 #pragma once
 
 #include <array>
+#include <memory>
 #include <vector>
 
 #include <Eigen/Core>
 
+#include "dense_lu.hpp"
 #include "styk/contact/active_set.hpp"
 
 namespace styk::contact::active_set_detail {
@@ -45,14 +47,29 @@ Loads loads_with_fluid(const LinearContactSystem& system, const std::vector<char
 Eigen::VectorXd displacements(const LinearContactSystem& system, const Loads& loads,
                               const Iterate& x);
 
+// The factor of the last linearised system an increment solved, which the next iteration tries
+// first (ActiveSetOptions::reuse_factor_size): while the closed set keeps its unknowns and the
+// Newton steps shrink, the system changes little, and a few refinement steps with the old factor
+// replace a new factorisation (DenseLu::refine).
+struct LinearisedFactor {
+  std::vector<int> unknowns;  // of the factorised system
+  std::unique_ptr<contact_detail::DenseLu> lu;
+  // Off after an iteration solved by refinement failed to lower the contact residual tenfold:
+  // near the tolerance the refined solve's backward error (within sqrt(n) eps of a direct one,
+  // not equal to it) can be what stalls the iteration, so the next solve factorises.
+  bool refine_next = true;
+  int reused = 0;      // solves served by an older factor
+  int factorised = 0;  // factorisations kept for reuse
+};
+
 // Solves the linearised conditions of `status` at `at` (slip rows with the proximal weight, see
 // LocalPoint::proximal). Returns false when the system is singular (a body held only by contact is
-// not held by the closed constraints).
+// not held by the closed constraints). `factor` (may be null) is the increment's reusable factor.
 bool solve_linearised(const std::vector<ContactConstraint>& constraints,
                       const LinearContactSystem& system, const Loads& loads, const Setup& setup,
                       const std::vector<NodeStatus>& status, const Iterate& at,
                       const std::vector<ConstraintState>& previous, double eps, double proximal,
-                      Iterate& out);
+                      const ActiveSetOptions& options, LinearisedFactor* factor, Iterate& out);
 
 // How the bodies held only by contact are held at `at` under `status`. Along a free rigid motion a
 // (column of G) the closed constraints can carry, with the normal forces of `at` and tangential

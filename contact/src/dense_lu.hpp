@@ -21,6 +21,15 @@ class DenseLu {
   double rcond() const;
   Eigen::VectorXd solve(const Eigen::VectorXd& b) const;
 
+  // Solves A x = b for a matrix A close to the factorised one (the same contact system one
+  // Newton step later) by iterative refinement with this factor as the preconditioner:
+  // x += LU^-1 (b - A x), while each step at least halves the residual (up to `max_steps`). True
+  // when the residual it stops at is within a direct solve's backward error,
+  // ||b - A x||_inf <= sqrt(n) eps ||A||_inf ||x||_inf (LAPACK dsgesv's test); false otherwise (x
+  // is then meaningless and A wants a factorisation of its own). `steps`: the steps taken.
+  bool refine(const Eigen::MatrixXd& A, const Eigen::VectorXd& b, Eigen::VectorXd& x, int max_steps,
+              int& steps) const;
+
  private:
   Eigen::MatrixXd lu_;
   std::vector<int> pivots_;

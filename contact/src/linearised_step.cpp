@@ -3,6 +3,7 @@
 // contact, assembled densely and solved by LU (dense_lu.hpp).
 #include <algorithm>
 #include <cmath>
+#include <memory>
 
 #include "active_set_parts.hpp"
 #include "dense_lu.hpp"
@@ -69,24 +70,47 @@ LinearisedSystem assemble_rows(const std::vector<ContactConstraint>& constraints
   return out;
 }
 
-// Solves the system in place; false when it is singular. Rows mix units (displacement rows of S,
-// force^2 rows of the slip law, force rows of the rigid equilibrium): they are equilibrated so the
-// condition estimate means something.
-bool solve_equilibrated(LinearisedSystem& system, Eigen::VectorXd& x) {
+// Rows mix units (displacement rows of S, force^2 rows of the slip law, force rows of the rigid
+// equilibrium): they are equilibrated so the condition estimate means something. False when a row
+// or column is empty.
+bool equilibrate(LinearisedSystem& system) {
   Eigen::MatrixXd& A = system.A;
-  Eigen::VectorXd& rhs = system.rhs;
   const Eigen::Index size = A.rows();
   for (Eigen::Index r = 0; r < size; ++r) {
     const double largest = A.row(r).cwiseAbs().maxCoeff();
     if (!(largest > 0.0)) return false;  // e.g. a free rigid motion no closed node touches
     A.row(r) /= largest;
-    rhs[r] /= largest;
+    system.rhs[r] /= largest;
   }
   for (Eigen::Index c = 0; c < size; ++c)
     if (!(A.col(c).cwiseAbs().maxCoeff() > 1e-14)) return false;
-  const contact_detail::DenseLu lu(std::move(A));
-  if (!lu.factorised() || !(lu.rcond() > 1e-15)) return false;
-  x = lu.solve(rhs);
+  return true;
+}
+
+// Solves the system (A consumed); false when it is singular. A system of the unknowns of the kept
+// factor tries it first: refinement that contracts at least twofold per step means
+// ||I - LU_old^-1 A|| < 1 in effect, so A is as far from singular as the factorised matrix was
+// (its rcond passed) and the singularity test below is not skipped for a singular A.
+bool solve_equilibrated(LinearisedSystem& system, const ActiveSetOptions& options,
+                        LinearisedFactor* factor, Eigen::VectorXd& x) {
+  if (!equilibrate(system)) return false;
+  const bool reusable =
+      factor != nullptr && system.A.rows() >= options.reuse_factor_size && system.A.rows() > 0;
+  if (reusable && factor->refine_next && factor->lu && factor->unknowns == system.unknowns) {
+    int steps = 0;
+    if (factor->lu->refine(system.A, system.rhs, x, options.max_refinement_steps, steps)) {
+      ++factor->reused;
+      return true;
+    }
+  }
+  auto lu = std::make_unique<contact_detail::DenseLu>(std::move(system.A));
+  if (!lu->factorised() || !(lu->rcond() > 1e-15)) return false;
+  x = lu->solve(system.rhs);
+  if (reusable) {
+    factor->lu = std::move(lu);
+    factor->unknowns = system.unknowns;
+    ++factor->factorised;
+  }
   return x.allFinite();
 }
 
@@ -96,7 +120,7 @@ bool solve_linearised(const std::vector<ContactConstraint>& constraints,
                       const LinearContactSystem& system, const Loads& loads, const Setup& setup,
                       const std::vector<NodeStatus>& status, const Iterate& at,
                       const std::vector<ConstraintState>& previous, double eps, double proximal,
-                      Iterate& out) {
+                      const ActiveSetOptions& options, LinearisedFactor* factor, Iterate& out) {
   const int m = static_cast<int>(constraints.size());
   const int k = static_cast<int>(system.G.cols());
   LinearisedSystem linearised =
@@ -106,7 +130,7 @@ bool solve_linearised(const std::vector<ContactConstraint>& constraints,
   out.alpha = Eigen::VectorXd::Zero(k);
   if (n + k > 0) {
     Eigen::VectorXd x;
-    if (!solve_equilibrated(linearised, x)) return false;
+    if (!solve_equilibrated(linearised, options, factor, x)) return false;
     for (int j = 0; j < n; ++j) out.lambda[linearised.unknowns[j]] = x[j];
     out.alpha = x.tail(k);
   }

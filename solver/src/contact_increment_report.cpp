@@ -121,7 +121,8 @@ std::string iteration_line(const contact::IterationRecord& r, bool fluid) {
                             : "") +
          (fluid ? format(", %.0f penetrated", r.penetrated) : "") +
          (r.cycle ? format(", cycle detected: step length %.3g", r.damping) : "") +
-         (r.regularised ? ", held by slipping nodes alone: slip springs" : "");
+         (r.regularised ? ", held by slipping nodes alone: slip springs" : "") +
+         (r.reused_factor ? ", previous factor refined" : "");
 }
 
 }  // namespace styk::solver_detail

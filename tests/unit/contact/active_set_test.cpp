@@ -158,6 +158,63 @@ TEST(ActiveSet, CycleDampingFollowsTheOptions) {
     EXPECT_NEAR((state.nodes[i].lambda - reference.nodes[i].lambda).norm(), 0.0, 1e-10);
 }
 
+// A frictional patch of m nodes on a coupled compliance (the inverse of a chain stiffness), pressed
+// in and sheared in a turning direction so that part of it sticks and part slips: the slip
+// directions take Newton steps with the same closed unknowns.
+LinearContactSystem sheared_patch(int m) {
+  const int n = 3 * m;
+  Eigen::MatrixXd K = Eigen::MatrixXd::Identity(n, n) * 4.0;
+  for (int i = 0; i + 3 < n; ++i) K(i, i + 3) = K(i + 3, i) = -1.0;
+  LinearContactSystem s;
+  s.S = K.inverse();
+  s.d0 = Eigen::VectorXd::Zero(n);
+  for (int j = 0; j < m; ++j) {
+    const double a = 0.15 * j;
+    s.d0[3 * j] = 1.0 + 0.01 * j;
+    s.d0[3 * j + 1] = 0.05 * j * std::cos(a);
+    s.d0[3 * j + 2] = 0.05 * j * std::sin(a);
+  }
+  s.G.resize(n, 0);
+  s.h.resize(0);
+  return s;
+}
+
+// ActiveSetOptions::reuse_factor_size: solving by refinement with the previous iteration's factor
+// gives the increment of the plain factorisations (same iterations, same multipliers to 1e-10).
+TEST(ActiveSet, ReusedFactorGivesTheSameIncrement) {
+  const int m = 40;
+  const std::vector<ContactConstraint> cs(m, constraint(FrictionLaw::Kind::Coulomb, 0.3, 0.3, 0));
+  const LinearContactSystem s = sheared_patch(m);
+  auto run = [&](int reuse_size, ContactState& state, int& reused, int& slipping) {
+    ActiveSetOptions options;
+    options.reuse_factor_size = reuse_size;
+    reused = 0;
+    const IncrementOutcome out =
+        solve_increment(cs, s, state, options, [&](const IterationRecord& r) {
+          reused += r.reused_factor ? 1 : 0;
+          slipping = r.slip;
+        });
+    EXPECT_TRUE(out.converged) << out.reason;
+    return out.iterations;
+  };
+  ContactState plain, reusing;
+  int plain_reused = 0, reused = 0, plain_slipping = 0, slipping = 0;
+  const int plain_iterations = run(1 << 30, plain, plain_reused, plain_slipping);
+  const int iterations = run(1, reusing, reused, slipping);
+  EXPECT_EQ(iterations, plain_iterations);
+  EXPECT_EQ(plain_reused, 0);
+  EXPECT_GE(reused, 1);
+  EXPECT_GT(plain_slipping, 0);
+  EXPECT_LT(plain_slipping, m);  // some stick: a mixed status set
+  double largest = 0.0, difference = 0.0;
+  for (int j = 0; j < m; ++j) {
+    largest = std::max(largest, plain.nodes[j].lambda.cwiseAbs().maxCoeff());
+    difference = std::max(difference,
+                          (plain.nodes[j].lambda - reusing.nodes[j].lambda).cwiseAbs().maxCoeff());
+  }
+  EXPECT_LT(difference, 1e-10 * largest);
+}
+
 TEST(ActiveSet, NonConvergenceIsReportedWithTheFlippingNodes) {
   const std::vector<ContactConstraint> cs(3, constraint(FrictionLaw::Kind::Frictionless, 0, 0, 0));
   ContactState state;
