@@ -36,9 +36,6 @@ Results run_static_analysis(const Model& model, const ElementRegistry& registry,
   if (has_scalar_field_steps(model))
     return run_scalar_field_analysis(model, registry, options, progress, report);
   // Contact pairs make the analysis nonlinear: load increments and the active-set iteration.
-  if (!model.contact_pairs.empty() && options.distributed)
-    throw InputError(SourceLoc{model.source, 0},
-                     "contact pairs are not solved distributed yet: run without mpirun / --ranks");
   if (!model.contact_pairs.empty())
     return run_contact_analysis(model, registry, options, progress, report);
   return run_linear_static_analysis(model, registry, options, progress, report);

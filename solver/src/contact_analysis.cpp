@@ -15,6 +15,7 @@
 #include "body_loads.hpp"
 #include "contact_increment_report.hpp"
 #include "contact_operator.hpp"
+#include "distributed_solver.hpp"
 #include "element_states.hpp"
 #include "floating_bodies.hpp"
 #include "increment_control.hpp"
@@ -154,6 +155,7 @@ class ContactAnalysis {
         K_(model, prepared_, threads_, kinematic_.extra_node_couplings(model, prepared_)),
         initial_temperature_(initial_node_temperatures(model)),
         context_{model, prepared_, phases_, threads_, options.memory_limit_gb},
+        share_(rank_share(options)),
         B_(prepared_, constraints_),
         touches_contact_(contact_nodes(prepared_, constraints_)),
         penetration_(accumulate_penetrations(model)),
@@ -177,6 +179,16 @@ class ContactAnalysis {
   }
 
  private:
+  // A distributed run's share of rows and elements (the graph partition of the static path).
+  std::optional<RankShare> rank_share(const SolveOptions& options) const {
+    if (!options.distributed) return std::nullopt;
+    const PhaseRecorder::Scope phase(phases_, "partition");
+    RankShare share = share_of_rank(model_, prepared_, K_.graph(), join_mpi_world());
+    phases_.info("partition: " + std::to_string(share.rows.size) + " ranks, " +
+                 std::to_string(share.cut_node_pairs) + " node pairs couple two ranks");
+    return share;
+  }
+
   // The elements' material state at the end of step k; K holds the one of `stiffness_states_`
   // (a step that changes materials or the temperatures of temperature-dependent elasticity gets
   // a stiffness of its own, evaluated at the end of the step).
@@ -187,7 +199,8 @@ class ContactAnalysis {
 
   void assemble() {
     const PhaseRecorder::Scope phase(phases_, "assemble");
-    assemble_stiffness(model_, prepared_, *stiffness_states_, K_, threads_);
+    assemble_stiffness(model_, prepared_, *stiffness_states_, K_, threads_,
+                       share_ ? &share_->owns_element : nullptr);
     kinematic_.apply(K_);
   }
 
@@ -225,7 +238,10 @@ class ContactAnalysis {
                              kinematic_.restraints(model_, prepared_, held));
     }
     if (!K_.pristine()) assemble();
-    factor_.solver = make_cholmod_solver(context_);
+    // Distributed: MUMPS across the ranks; every rank then holds the same compliance and runs the
+    // same active-set iteration (the dense contact system is small beside K).
+    factor_.solver = share_ ? make_distributed_solver(context_, share_->rows, true, 0.0)
+                            : make_cholmod_solver(context_);
     factor_.solver->prepare(K_, partition_dofs(prepared_.active_dofs(), pinned));
     {
       const PhaseRecorder::Scope phase(phases_, "contact compliance");
@@ -476,6 +492,7 @@ class ContactAnalysis {
   std::vector<std::vector<double>> step_temperature_;  // per step: absolute, empty if unchanged
   std::optional<ElementStates> stiffness_states_;      // the material state K holds
   const SolverContext context_;
+  const std::optional<RankShare> share_;  // a distributed run: this rank's rows and elements
   const ContactOperator B_;
   const std::vector<char> touches_contact_;
   const std::vector<StepPenetration> penetration_;

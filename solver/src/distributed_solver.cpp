@@ -54,6 +54,14 @@ class DistributedSolver final : public LinearSolver {
 
   int iterations() const override { return system_ ? system_->iterations() : 0; }
 
+  // The direct solver solves blocks of columns at once (the contact compliance's); the iterative
+  // one column by column, as the default.
+  std::vector<double> solve_homogeneous(const std::vector<double>& F, int columns) override {
+    if (!direct_) return LinearSolver::solve_homogeneous(F, columns);
+    const PhaseRecorder::Scope phase(context_.phases, "solve");
+    return system_->solve_homogeneous(F, columns);
+  }
+
  private:
   SolverContext context_;
   RankRows rows_;

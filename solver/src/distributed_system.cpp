@@ -312,4 +312,60 @@ std::vector<double> DistributedSystem::solve(const std::vector<double>& f,
   return u;
 }
 
+std::vector<double> DistributedSystem::solve_homogeneous(const std::vector<double>& F,
+                                                         int columns) {
+  const std::size_t n = columns > 0 ? F.size() / static_cast<std::size_t>(columns) : 0;
+  std::vector<double> X(F.size(), 0.0);
+  if (columns <= 0 || n == 0) return X;
+  const PetscInt local = rows_.end() - rows_.begin();
+  Mat B = nullptr, Y = nullptr;
+  petsc_check(
+      MatCreateDense(PETSC_COMM_WORLD, local, PETSC_DECIDE, PETSC_DETERMINE, columns, nullptr, &B),
+      "MatCreateDense");
+  PetscScalar* b = nullptr;
+  PetscInt lda = 0;
+  petsc_check(MatDenseGetLDA(B, &lda), "MatDenseGetLDA");
+  petsc_check(MatDenseGetArrayWrite(B, &b), "MatDenseGetArrayWrite");
+  // The owner's rows of F; prescribed rows are zero (their value, diagonal x 0).
+  for (int row = rows_.begin(); row < rows_.end(); ++row) {
+    const int dof = rows_.dof(row);
+    const bool free = partition_.free_of_dof[dof] >= 0;
+    for (int j = 0; j < columns; ++j)
+      b[(row - rows_.begin()) + static_cast<std::size_t>(j) * lda] =
+          free ? F[static_cast<std::size_t>(j) * n + dof] : 0.0;
+  }
+  petsc_check(MatDenseRestoreArrayWrite(B, &b), "MatDenseRestoreArrayWrite");
+  petsc_check(MatAssemblyBegin(B, MAT_FINAL_ASSEMBLY), "MatAssemblyBegin");
+  petsc_check(MatAssemblyEnd(B, MAT_FINAL_ASSEMBLY), "MatAssemblyEnd");
+  petsc_check(MatDuplicate(B, MAT_DO_NOT_COPY_VALUES, &Y), "MatDuplicate");
+  const PetscErrorCode code = KSPMatSolve(petsc_->ksp, B, Y);
+  if (code != 0) {
+    MatDestroy(&Y);
+    MatDestroy(&B);
+    throw InputError(settings_.where, "the " + settings_.what +
+                                          " matrix is singular (MUMPS): the model is a mechanism "
+                                          "or an element is degenerate");
+  }
+  // Every rank gets every column: scattered column by column as solve() scatters x.
+  for (int j = 0; j < columns; ++j) {
+    Vec y = nullptr;
+    petsc_check(MatDenseGetColumnVecRead(Y, j, &y), "MatDenseGetColumnVecRead");
+    petsc_check(VecScatterBegin(petsc_->to_all, y, petsc_->all, INSERT_VALUES, SCATTER_FORWARD),
+                "VecScatterBegin");
+    petsc_check(VecScatterEnd(petsc_->to_all, y, petsc_->all, INSERT_VALUES, SCATTER_FORWARD),
+                "VecScatterEnd");
+    petsc_check(MatDenseRestoreColumnVecRead(Y, j, &y), "MatDenseRestoreColumnVecRead");
+    const PetscScalar* values = nullptr;
+    petsc_check(VecGetArrayRead(petsc_->all, &values), "VecGetArrayRead");
+    double* column = X.data() + static_cast<std::size_t>(j) * n;
+    for (std::size_t row = 0; row < n; ++row)
+      column[rows_.dof(static_cast<int>(row))] = values[row];
+    VecRestoreArrayRead(petsc_->all, &values);
+    for (int dof : partition_.prescribed) column[dof] = 0.0;
+  }
+  MatDestroy(&Y);
+  MatDestroy(&B);
+  return X;
+}
+
 }  // namespace styk::solver_detail

@@ -21,6 +21,10 @@ std::vector<double> DistributedSystem::solve(const std::vector<double>&,
   throw std::runtime_error("this build has no PETSc/MPI and cannot solve distributed");
 }
 
+std::vector<double> DistributedSystem::solve_homogeneous(const std::vector<double>&, int) {
+  throw std::runtime_error("this build has no PETSc/MPI and cannot solve distributed");
+}
+
 std::string DistributedSystem::description() const { return "unavailable"; }
 
 bool p_multigrid_requested() { return false; }
