@@ -8,6 +8,7 @@
 #include <map>
 #include <set>
 
+#include "mortar_constraints.hpp"
 #include "styk/core/cyclic_symmetry.hpp"
 #include "styk/core/local_axes.hpp"
 #include "surface_geometry.hpp"
@@ -259,16 +260,30 @@ std::vector<ContactConstraint> build_contact_constraints(const Model& model,
     const NodeLocator locator(model, master_nodes, coincidence);
 
     std::map<int, SlaveNode> slaves;
+    std::map<int, MortarRow> mortar;  // TYPE=MORTAR: the rows of every slave node
+    const bool by_mortar = pair.type == ContactPair::Type::Mortar;
     if (slave_surface.kind == Surface::Kind::ElementFaces) {
-      slaves = slave_nodes_of_faces(model, place_faces(model, registry, slave_surface, pair.where),
-                                    slave_surface, pair.where);
+      const SurfaceFaces placed = place_faces(model, registry, slave_surface, pair.where);
+      slaves = slave_nodes_of_faces(model, placed, slave_surface, pair.where);
+      if (by_mortar)
+        mortar =
+            mortar_rows(mortar_faces(model, slave_surface, placed.faces, pair.where),
+                        mortar_faces(model, master_surface, master.faces, pair.where), pair.where);
+    } else if (by_mortar) {
+      throw InputError(
+          pair.where, "TYPE=MORTAR needs element faces on the slave surface " + slave_surface.name);
     } else {
       for (int n : slave_surface.nodes) slaves[n] = SlaveNode{};
     }
 
-    if (const int joined = join_cyclic_copies(cyclic, slaves); joined > 0)
+    if (const int joined = join_cyclic_copies(cyclic, slaves); joined > 0) {
+      if (by_mortar)
+        throw InputError(pair.where,
+                         "TYPE=MORTAR across a cyclic symmetry boundary is not "
+                         "supported; use NODE TO SURFACE");
       note("contact pair " + pair.slave + "/" + pair.master + ": " + std::to_string(joined) +
            " slave nodes on the cyclic symmetry boundary are joined with their images");
+    }
     int skipped_shared = 0, skipped_outside = 0;
     for (const auto& [node, s] : slaves) {
       if (constrained.count(node) != 0) {
@@ -288,7 +303,13 @@ std::vector<ContactConstraint> build_contact_constraints(const Model& model,
 
       const int coincident = locator.find(xs);
       Eigen::Vector3d master_point = xs;
-      if (coincident >= 0 && coincident != node) {
+      if (by_mortar) {
+        const auto row = mortar.find(node);
+        if (row == mortar.end() || !apply_mortar_row(model, row->second, c, master_point)) {
+          ++skipped_outside;
+          continue;
+        }
+      } else if (coincident >= 0 && coincident != node) {
         c.master.push_back({coincident, 1.0});
         master_point = position(model, coincident);
       } else {

@@ -1,0 +1,50 @@
+// Segment-to-segment (mortar) integrals between a slave face and a master face (docs/contact.md,
+// "Mortar contact"). The slave face carries the dual multiplier basis phi_a (Wohlmuth 2000): the
+// functions of the face's shape-function space that are biorthogonal to the shape functions,
+// integral phi_a N_b dA = delta_ab integral N_a dA, so the slave side of the mortar coupling is
+// diagonal and every slave node's row is one ContactConstraint. The master side needs
+// M_ak = integral over the overlap of phi_a N_k dA, computed on the slave face's auxiliary plane
+// (its tangent plane at the face centre): both faces' boundaries are projected onto it, the master
+// polygon is clipped by the slave polygon, and the clipped polygon is integrated triangle by
+// triangle, each Gauss point mapped back onto the two faces along the plane's normal.
+#pragma once
+
+#include <vector>
+
+#include <Eigen/Core>
+
+#include "styk/core/diagnostics.hpp"
+#include "surface_geometry.hpp"
+
+namespace styk::contact {
+
+// A face of a contact surface: the placed face, the element-local indices of its nodes and the
+// model indices of the same nodes (same order).
+struct MortarFace {
+  PlacedFace placed;
+  std::vector<int> local;
+  std::vector<int> nodes;
+};
+
+// The face's shape functions at in-face coordinates (p, q), one per face node (MortarFace order).
+Eigen::VectorXd face_shape_values(const MortarFace& f, double p, double q);
+
+// The face's unit normal at its centre, out of its element.
+Eigen::Vector3d face_centre_normal(const PlacedFace& f);
+
+// The dual basis of a slave face: phi_a = sum_b coefficients(a, b) N_b, and the nodal integrals
+// D_a = integral N_a dA (= integral phi_a dA). Throws InputError at `where` when a nodal integral
+// is not positive (the serendipity 8-node and 6-node faces: their corner integrals are negative
+// or zero, and phi_a would not exist or would pull).
+struct DualBasis {
+  Eigen::MatrixXd coefficients;
+  Eigen::VectorXd nodal_integrals;
+};
+DualBasis dual_basis(const MortarFace& slave, const SourceLoc& where);
+
+// Adds integral over (slave face ∩ master face) of phi_a N_k dA_slave to coupling(a, k) (slave face
+// nodes x master face nodes, sized by the caller). Returns the overlap area (0: no overlap).
+double integrate_overlap(const MortarFace& slave, const DualBasis& dual, const MortarFace& master,
+                         Eigen::MatrixXd& coupling);
+
+}  // namespace styk::contact

@@ -1,0 +1,227 @@
+// Mortar contact (*CONTACT PAIR, TYPE=MORTAR; docs/contact.md "Mortar contact"): dual Lagrange
+// multipliers on the slave faces (Wohlmuth 2000), so every slave node's row is one constraint,
+// solved exactly through run_static_analysis.
+//
+// The contact patch test (Taylor and Papadopoulos 1991; issue "Contact engine at scale and
+// exactness", item 2): a block [0,1]^2 x [1,2] (slave bottom, n x n elements) pressed by p = 1 on
+// its top onto a block [0,1]^2 x [0,1] (master top, m x m) of the same stiffness, both on rollers.
+// The exact solution is a uniform stress, so a formulation that passes the test carries pressure 1
+// at every slave node. One-pass node-to-surface does not (0.63 ... 2.14,
+// node_to_surface_contact_test.cpp); mortar must, to 1e-8.
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+#include <map>
+#include <memory>
+#include <optional>
+#include <string>
+
+#include <gtest/gtest.h>
+#include <Eigen/Core>
+
+#include "contact_model_kit.hpp"
+#include "contact_spec_models.hpp"
+#include "hex_model_builder.hpp"
+#include "styk/mesher/convert.hpp"
+#include "styk/mesher/split.hpp"
+#include "styk/solver/analysis.hpp"
+
+namespace styk {
+namespace {
+
+constexpr double kPi = 3.14159265358979323846;
+
+// One side of the interface: element type of its contact layer and divisions along x and y.
+struct Side {
+  // C3D8, C3D20, C3D27, C3D21/C3D28 (a C3D20 block whose contact layer is converted), or C3D4 (the
+  // body's bricks split into tetrahedra: mesher/split.hpp)
+  std::string type;
+  int divisions = 1;
+};
+
+std::string block_type(const std::string& type) {
+  if (type == "C3D8" || type == "C3D4") return "C3D8";
+  return type == "C3D27" ? "C3D27" : "C3D20";
+}
+
+// The two blocks, their surfaces and the mortar pair (frictionless unless `friction`), no loads.
+Model two_blocks(const Side& slave, const Side& master, double poisson,
+                 std::optional<Friction> friction) {
+  mesher::Mesh mesh;
+  const mesher::Block lower =
+      test::add_box(mesh, {0, 0, 0}, {1, 1, 1}, {master.divisions, master.divisions, 2},
+                    block_type(master.type), "LOWER");
+  const mesher::Block upper =
+      test::add_box(mesh, {0, 0, 1}, {1, 1, 2}, {slave.divisions, slave.divisions, 2},
+                    block_type(slave.type), "UPPER");
+  mesh.add_to_surface("LOWER_TOP", lower.side_faces(2, 1));
+  mesh.add_to_surface("UPPER_BOTTOM", upper.side_faces(2, -1));
+  mesh.add_to_surface("LOAD", upper.side_faces(2, 1));
+  for (int axis = 0; axis < 2; ++axis)
+    for (int side : {-1, 1}) {
+      const std::string suffix = std::to_string(axis) + (side > 0 ? "+" : "-");
+      mesh.add_to_surface("UPPER_SIDE" + suffix, upper.side_faces(axis, side));
+      mesh.add_to_surface("LOWER_SIDE" + suffix, lower.side_faces(axis, side));
+    }
+  for (const auto& [side, surface] :
+       {std::make_pair(slave, "UPPER_BOTTOM"), std::make_pair(master, "LOWER_TOP")})
+    if (side.type == "C3D21" || side.type == "C3D28")
+      mesher::convert_elements(mesh, test::shared_registry(), side.type, surface);
+  for (const auto& [side, body] : {std::make_pair(slave, "UPPER"), std::make_pair(master, "LOWER")})
+    if (side.type == "C3D4")
+      mesher::split_to_tetrahedra(mesh, test::shared_registry(), side.type,
+                                  mesh.element_sets.at(body));
+  Model model = test::contact_model(mesh, {{"LOWER", 1.0, poisson}, {"UPPER", 1.0, poisson}});
+  test::add_contact_pair(model, "UPPER_BOTTOM", "LOWER_TOP", "MORTAR", friction);
+  model.contact_pairs.back().type = ContactPair::Type::Mortar;
+  return model;
+}
+
+Model pressed_patch(const Side& slave, const Side& master) {
+  Model model = two_blocks(slave, master, 0.3, std::nullopt);
+  test::add_pressure(model, "LOAD", 1.0);
+  for (int axis = 0; axis < 3; ++axis)
+    test::fix(model,
+              test::nodes_where(model, [axis](const Vec3& x) { return std::abs(x[axis]) < 1e-9; }),
+              {axis + 1});
+  return model;
+}
+
+std::string sci(double v) {
+  char text[32];
+  std::snprintf(text, sizeof text, "%.2e", v);
+  return text;
+}
+
+// Nodal forces of a uniform traction on the faces of `surface`: traction times the nodal areas
+// integral N_i dA of each face (the consistent load), summed per node (a later *CLOAD line for the
+// same node and dof would replace an earlier one).
+void add_traction(Model& model, const ElementRegistry& registry, const std::string& surface,
+                  const Eigen::Vector3d& traction) {
+  std::map<int, double> area_of;
+  for (const SurfaceFace& f : model.surfaces.at(surface).faces) {
+    const Element& element = model.elements[f.element];
+    ElementGeometry g;
+    g.X.resize(element.node_count, 3);
+    const int* nodes = model.element_nodes(f.element);
+    for (int k = 0; k < element.node_count; ++k)
+      for (int d = 0; d < 3; ++d) g.X(k, d) = model.coords[nodes[k]][d];
+    Eigen::VectorXd area;
+    registry.find(element.type)->nodal_areas(g, f.face - 1, area);
+    for (int k = 0; k < element.node_count; ++k)
+      if (area[k] != 0.0) area_of[nodes[k]] += area[k];
+  }
+  for (const auto& [node, area] : area_of)
+    for (int d = 0; d < 3; ++d)
+      if (traction[d] != 0.0)
+        model.steps[0].cloads.push_back({node, d + 1, traction[d] * area, {}});
+}
+
+class MortarContact : public ::testing::Test {
+ protected:
+  static void SetUpTestSuite() { full_ = test::registry_with_plugins(); }
+  static void TearDownTestSuite() { full_.reset(); }
+  static const ElementRegistry& registry() { return full_->registry; }
+  static std::unique_ptr<test::FullRegistry> full_;
+};
+std::unique_ptr<test::FullRegistry> MortarContact::full_;
+
+struct Spread {
+  double low = INFINITY, high = -INFINITY;
+  double worst(double exact) const { return std::max(high - exact, exact - low); }
+};
+
+// The patch test: every slave node closed with pressure 1 (1e-8), gap 0 (1e-12), the nodal
+// areas D_j adding up to the face area 1 (1e-12), the total force the applied load 1 (1e-10).
+// Returns the measured pressure spread.
+Spread expect_patch_test(const ElementRegistry& registry, const Side& slave, const Side& master) {
+  SCOPED_TRACE(slave.type + " " + std::to_string(slave.divisions) + " on " + master.type + " " +
+               std::to_string(master.divisions));
+  const Model model = pressed_patch(slave, master);
+  const Results results = run_static_analysis(model, registry, SolveOptions{}, nullptr, nullptr);
+  const IncrementResult& r = results.increments.back();
+  Spread spread;
+  double area = 0.0, force = 0.0;
+  for (const ContactNodeResult& c : r.contact) {
+    EXPECT_NE(c.status, ContactStatus::Open) << "node " << model.node_ids[c.node];
+    EXPECT_NEAR(c.pressure, 1.0, 1e-8) << "node " << model.node_ids[c.node];
+    EXPECT_NEAR(c.gap, 0.0, 1e-12);
+    spread.low = std::min(spread.low, c.pressure);
+    spread.high = std::max(spread.high, c.pressure);
+    area += c.area;
+    force += c.force[2];
+  }
+  EXPECT_FALSE(r.contact.empty());
+  EXPECT_NEAR(area, 1.0, 1e-12);
+  EXPECT_NEAR(force, 1.0, 1e-10);
+  EXPECT_LT(r.contact_equilibrium.relative_residual, 1e-8);
+  return spread;
+}
+
+// Linear faces: C3D8 both ways round, and linear triangles (C3D4) on the same non-matching
+// divisions. Measured worst deviation from 1: see docs/contact.md.
+TEST_F(MortarContact, FlatPatchTestOnLinearFaces) {
+  const std::pair<Side, Side> cases[] = {
+      {{"C3D8", 3}, {"C3D8", 4}}, {{"C3D8", 4}, {"C3D8", 3}}, {{"C3D4", 3}, {"C3D4", 4}}};
+  for (const auto& [slave, master] : cases) {
+    const Spread s = expect_patch_test(registry(), slave, master);
+    ::testing::Test::RecordProperty("worst_" + slave.type + "_" + std::to_string(slave.divisions) +
+                                        "_on_" + std::to_string(master.divisions),
+                                    sci(s.worst(1.0)));
+  }
+}
+
+// Coulomb friction under a uniform shear (nu = 0, E = 1, G = 1/2): the stress sigma_zz = -1,
+// sigma_xz = tau everywhere is exact when the lower block's bottom is clamped, the upper block's
+// top carries pressure 1 and is moved by u_x = delta, both blocks' x faces carry the shear
+// traction +-tau e_z and y = 0 is on rollers. Stick (mu = 0.5): delta = 2 tau / G = 0.8 with
+// tau = 0.2, the interface sticks and transmits tau. Full slip (mu = 0.1): delta = 1 exceeds the
+// blocks' shear strain at tau = mu p (0.4), every node slips and transmits mu p = 0.1. Pressure 1
+// and shear traction tau (x component of the force on the slave: -tau A) at every slave node to
+// 1e-8.
+void expect_uniform_shear(const ElementRegistry& registry, const Side& slave, const Side& master,
+                          double mu, double tau, double delta, ContactStatus status) {
+  SCOPED_TRACE(slave.type + " " + std::to_string(slave.divisions) + " on " + master.type + " " +
+               std::to_string(master.divisions) + ", mu " + std::to_string(mu));
+  Model model = two_blocks(slave, master, 0.0, test::coulomb(mu));
+  test::add_pressure(model, "LOAD", 1.0);
+  for (const char* body : {"UPPER", "LOWER"}) {
+    add_traction(model, registry, std::string(body) + "_SIDE0+", {0, 0, tau});
+    add_traction(model, registry, std::string(body) + "_SIDE0-", {0, 0, -tau});
+  }
+  test::fix(model, test::nodes_where(model, [](const Vec3& x) { return std::abs(x[2]) < 1e-9; }),
+            {1, 2, 3});
+  test::fix(model, test::nodes_where(model, [](const Vec3& x) { return std::abs(x[1]) < 1e-9; }),
+            {2});
+  for (int n : test::nodes_where(model, [](const Vec3& x) { return std::abs(x[2] - 2.0) < 1e-9; }))
+    model.steps[0].boundaries.push_back({n, 1, delta, {}});
+  const Results results = run_static_analysis(model, registry, SolveOptions{}, nullptr, nullptr);
+  const IncrementResult& r = results.increments.back();
+  ASSERT_FALSE(r.contact.empty());
+  double worst = 0.0;
+  for (const ContactNodeResult& c : r.contact) {
+    EXPECT_EQ(c.status, status) << "node " << model.node_ids[c.node];
+    EXPECT_NEAR(c.pressure, 1.0, 1e-8) << "node " << model.node_ids[c.node];
+    EXPECT_NEAR(c.force[0] / c.area, -tau, 1e-8) << "node " << model.node_ids[c.node];
+    EXPECT_NEAR(c.force[1] / c.area, 0.0, 1e-8) << "node " << model.node_ids[c.node];
+    worst = std::max({worst, std::abs(c.pressure - 1.0), std::abs(c.force[0] / c.area + tau)});
+  }
+  EXPECT_NEAR(r.contact_pairs.at(0).force[0], -tau, 1e-10);
+  ::testing::Test::RecordProperty(std::string(status == ContactStatus::Stick ? "stick_" : "slip_") +
+                                      slave.type + "_" + std::to_string(slave.divisions) + "_on_" +
+                                      std::to_string(master.divisions),
+                                  sci(worst));
+}
+
+TEST_F(MortarContact, UniformShearSticksOnLinearFaces) {
+  expect_uniform_shear(registry(), {"C3D8", 3}, {"C3D8", 4}, 0.5, 0.2, 0.8, ContactStatus::Stick);
+  expect_uniform_shear(registry(), {"C3D8", 4}, {"C3D8", 3}, 0.5, 0.2, 0.8, ContactStatus::Stick);
+}
+
+TEST_F(MortarContact, UniformShearSlipsOnLinearFaces) {
+  expect_uniform_shear(registry(), {"C3D8", 3}, {"C3D8", 4}, 0.1, 0.1, 1.0, ContactStatus::Slip);
+  expect_uniform_shear(registry(), {"C3D8", 4}, {"C3D8", 3}, 0.1, 0.1, 1.0, ContactStatus::Slip);
+}
+
+}  // namespace
+}  // namespace styk
