@@ -260,30 +260,26 @@ std::vector<ContactConstraint> build_contact_constraints(const Model& model,
     const NodeLocator locator(model, master_nodes, coincidence);
 
     std::map<int, SlaveNode> slaves;
-    std::map<int, MortarRow> mortar;  // TYPE=MORTAR: the rows of every slave node
-    const bool by_mortar = pair.type == ContactPair::Type::Mortar;
+    std::vector<PlacedFace> slave_faces;
     if (slave_surface.kind == Surface::Kind::ElementFaces) {
-      const SurfaceFaces placed = place_faces(model, registry, slave_surface, pair.where);
+      SurfaceFaces placed = place_faces(model, registry, slave_surface, pair.where);
       slaves = slave_nodes_of_faces(model, placed, slave_surface, pair.where);
-      if (by_mortar)
-        mortar =
-            mortar_rows(mortar_faces(model, slave_surface, placed.faces, pair.where),
-                        mortar_faces(model, master_surface, master.faces, pair.where), pair.where);
-    } else if (by_mortar) {
-      throw InputError(
-          pair.where, "TYPE=MORTAR needs element faces on the slave surface " + slave_surface.name);
+      slave_faces = std::move(placed.faces);
     } else {
       for (int n : slave_surface.nodes) slaves[n] = SlaveNode{};
     }
 
-    if (const int joined = join_cyclic_copies(cyclic, slaves); joined > 0) {
-      if (by_mortar)
-        throw InputError(pair.where,
-                         "TYPE=MORTAR across a cyclic symmetry boundary is not "
-                         "supported; use NODE TO SURFACE");
+    const int joined = join_cyclic_copies(cyclic, slaves);
+    if (joined > 0)
       note("contact pair " + pair.slave + "/" + pair.master + ": " + std::to_string(joined) +
            " slave nodes on the cyclic symmetry boundary are joined with their images");
-    }
+    std::string why_node_to_surface;
+    const std::optional<std::map<int, MortarRow>> mortar =
+        pair_mortar_rows(model, pair, slave_surface, std::move(slave_faces), master_surface,
+                         master.faces, joined > 0, why_node_to_surface);
+    if (!why_node_to_surface.empty())
+      note("contact pair " + pair.slave + "/" + pair.master +
+           ": TYPE=SURFACE TO SURFACE is paired node to surface (" + why_node_to_surface + ")");
     int skipped_shared = 0, skipped_outside = 0;
     for (const auto& [node, s] : slaves) {
       if (constrained.count(node) != 0) {
@@ -303,9 +299,9 @@ std::vector<ContactConstraint> build_contact_constraints(const Model& model,
 
       const int coincident = locator.find(xs);
       Eigen::Vector3d master_point = xs;
-      if (by_mortar) {
-        const auto row = mortar.find(node);
-        if (row == mortar.end() || !apply_mortar_row(model, row->second, c, master_point)) {
+      if (mortar) {
+        const auto row = mortar->find(node);
+        if (row == mortar->end() || !apply_mortar_row(model, row->second, c, master_point)) {
           ++skipped_outside;
           continue;
         }

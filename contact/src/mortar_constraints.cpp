@@ -1,5 +1,6 @@
 #include "mortar_constraints.hpp"
 
+#include <algorithm>
 #include <cmath>
 
 #include <Eigen/Geometry>
@@ -75,6 +76,50 @@ std::map<int, MortarRow> mortar_rows(const std::vector<MortarFace>& slave,
   std::map<int, MortarRow> rows;
   for (const MortarFace& f : slave) add_face_rows(f, master, master_boxes, where, rows);
   return rows;
+}
+
+std::optional<std::map<int, MortarRow>> pair_mortar_rows(
+    const Model& model, const ContactPair& pair, const Surface& slave_surface,
+    std::vector<PlacedFace> slave_faces, const Surface& master_surface,
+    const std::vector<PlacedFace>& master_faces, bool cyclic_joins, std::string& why_not) {
+  why_not.clear();
+  if (pair.type == ContactPair::Type::NodeToSurface) return std::nullopt;
+  const bool required = pair.type == ContactPair::Type::Mortar;
+  if (slave_surface.kind != Surface::Kind::ElementFaces) {
+    if (required)
+      throw InputError(
+          pair.where, "TYPE=MORTAR needs element faces on the slave surface " + slave_surface.name);
+    why_not = "the slave surface is a node surface";
+    return std::nullopt;
+  }
+  if (cyclic_joins) {
+    if (required)
+      throw InputError(pair.where,
+                       "TYPE=MORTAR across a cyclic symmetry boundary is not supported; use NODE "
+                       "TO SURFACE");
+    why_not = "slave nodes lie on a cyclic symmetry boundary";
+    return std::nullopt;
+  }
+  auto is_edge = [](const PlacedFace& f) {
+    const ElementForm form = f.element->form();
+    return form == ElementForm::Planar || form == ElementForm::Axisymmetric;
+  };
+  if (!required && (std::any_of(slave_faces.begin(), slave_faces.end(), is_edge) ||
+                    std::any_of(master_faces.begin(), master_faces.end(), is_edge))) {
+    why_not = "edges of plane or axisymmetric elements";
+    return std::nullopt;
+  }
+  const std::vector<MortarFace> slave =
+      mortar_faces(model, slave_surface, std::move(slave_faces), pair.where);
+  if (!required)
+    for (const MortarFace& f : slave)
+      if (!admits_dual_basis(f)) {
+        why_not = "slave element " + std::to_string(f.placed.geometry.id) +
+                  " has a face node whose integral of N dA is not positive";
+        return std::nullopt;
+      }
+  return mortar_rows(slave, mortar_faces(model, master_surface, master_faces, pair.where),
+                     pair.where);
 }
 
 bool apply_mortar_row(const Model& model, const MortarRow& row, ContactConstraint& c,

@@ -7,6 +7,8 @@
 #pragma once
 
 #include <map>
+#include <optional>
+#include <string>
 #include <vector>
 
 #include <Eigen/Core>
@@ -31,6 +33,17 @@ std::vector<MortarFace> mortar_faces(const Model& model, const Surface& surface,
 // for a slave face the dual basis does not exist on (dual_basis).
 std::map<int, MortarRow> mortar_rows(const std::vector<MortarFace>& slave,
                                      const std::vector<MortarFace>& master, const SourceLoc& where);
+
+// The mortar rows of pair `pair`, or nullopt when it is paired node to surface:
+// - TYPE=MORTAR always; InputError at the pair for a node slave surface, slave nodes joined across
+//   a cyclic symmetry boundary (`cyclic_joins`), a slave face without dual basis (dual_basis);
+// - SURFACE TO SURFACE when every slave face admits the dual basis and no slave node is joined
+//   across a cyclic symmetry boundary; otherwise node to surface, with the reason in `why_not`;
+// - NODE TO SURFACE never.
+std::optional<std::map<int, MortarRow>> pair_mortar_rows(
+    const Model& model, const ContactPair& pair, const Surface& slave_surface,
+    std::vector<PlacedFace> slave_faces, const Surface& master_surface,
+    const std::vector<PlacedFace>& master_faces, bool cyclic_joins, std::string& why_not);
 
 // Gives `c` the row's area and master terms (weights M_jk / sum_k M_jk, a partition of unity) and
 // `master_point` the weighted master point sum_k w_k x_k, so that gap0 = n . (master point - x_j)

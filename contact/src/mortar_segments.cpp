@@ -158,6 +158,31 @@ bool plane_inverse(const PlacedFace& f, const Plane& plane, const Eigen::Vector2
   return false;
 }
 
+// integral N_a dA per face node, and the face's mass matrix integral N_a N_b dA (may be null).
+Eigen::VectorXd nodal_integrals(const MortarFace& slave, Eigen::MatrixXd* mass) {
+  const int n = static_cast<int>(slave.local.size());
+  if (mass != nullptr) mass->setZero(n, n);
+  Eigen::VectorXd integrals = Eigen::VectorXd::Zero(n);
+  const FaceRule rule = face_rule(is_triangle(slave.placed), kFaceOrder);
+  for (std::size_t g = 0; g < rule.points.size(); ++g) {
+    const auto [p, q] = rule.points[g];
+    Eigen::Vector3d x, xp, xq;
+    face_map(slave.placed, p, q, x, xp, xq);
+    const double dA = rule.weights[g] * xp.cross(xq).norm();
+    const Eigen::VectorXd N = face_shape_values(slave, p, q);
+    if (mass != nullptr) mass->noalias() += dA * N * N.transpose();
+    integrals += dA * N;
+  }
+  return integrals;
+}
+
+// The first node with a non-positive integral, -1 if none.
+int first_non_positive(const Eigen::VectorXd& integrals) {
+  for (int a = 0; a < integrals.size(); ++a)
+    if (!(integrals[a] > 1e-9 * integrals.sum())) return a;
+  return -1;
+}
+
 }  // namespace
 
 Eigen::Vector3d face_centre_normal(const PlacedFace& f) {
@@ -172,28 +197,20 @@ Eigen::VectorXd face_shape_values(const MortarFace& f, double p, double q) {
   return out;
 }
 
+bool admits_dual_basis(const MortarFace& slave) {
+  return first_non_positive(nodal_integrals(slave, nullptr)) < 0;
+}
+
 DualBasis dual_basis(const MortarFace& slave, const SourceLoc& where) {
-  const int n = static_cast<int>(slave.local.size());
-  Eigen::MatrixXd mass = Eigen::MatrixXd::Zero(n, n);
-  Eigen::VectorXd integrals = Eigen::VectorXd::Zero(n);
-  const FaceRule rule = face_rule(is_triangle(slave.placed), kFaceOrder);
-  for (std::size_t g = 0; g < rule.points.size(); ++g) {
-    const auto [p, q] = rule.points[g];
-    Eigen::Vector3d x, xp, xq;
-    face_map(slave.placed, p, q, x, xp, xq);
-    const double dA = rule.weights[g] * xp.cross(xq).norm();
-    const Eigen::VectorXd N = face_shape_values(slave, p, q);
-    mass.noalias() += dA * N * N.transpose();
-    integrals += dA * N;
-  }
-  for (int a = 0; a < n; ++a)
-    if (!(integrals[a] > 1e-9 * integrals.sum()))
-      throw InputError(where, "TYPE=MORTAR: face S" + std::to_string(slave.placed.face + 1) +
-                                  " of slave element " + std::to_string(slave.placed.geometry.id) +
-                                  " has a node whose integral of N dA is not positive (" +
-                                  std::to_string(integrals[a]) +
-                                  "), which dual multipliers cannot carry; give the slave side a "
-                                  "C3D21/C3D28 contact layer or make it the master");
+  Eigen::MatrixXd mass;
+  const Eigen::VectorXd integrals = nodal_integrals(slave, &mass);
+  if (const int a = first_non_positive(integrals); a >= 0)
+    throw InputError(where, "TYPE=MORTAR: face S" + std::to_string(slave.placed.face + 1) +
+                                " of slave element " + std::to_string(slave.placed.geometry.id) +
+                                " has a node whose integral of N dA is not positive (" +
+                                std::to_string(integrals[a]) +
+                                "), which dual multipliers cannot carry; give the slave side a "
+                                "C3D21/C3D28 contact layer or make it the master");
   DualBasis out;
   out.nodal_integrals = integrals;
   // phi = D M^-1 N with M the face's mass matrix and D = diag(integrals): then

@@ -42,6 +42,9 @@ struct DualBasis {
 };
 DualBasis dual_basis(const MortarFace& slave, const SourceLoc& where);
 
+// Whether the dual basis exists on the face: every nodal integral positive.
+bool admits_dual_basis(const MortarFace& slave);
+
 // Adds integral over (slave face ∩ master face) of phi_a N_k dA_slave to coupling(a, k) (slave face
 // nodes x master face nodes, sized by the caller). Returns the overlap area (0: no overlap).
 double integrate_overlap(const MortarFace& slave, const DualBasis& dual, const MortarFace& master,
