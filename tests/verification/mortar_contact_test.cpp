@@ -11,9 +11,12 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
+#include <filesystem>
+#include <fstream>
 #include <map>
 #include <memory>
 #include <optional>
+#include <sstream>
 #include <string>
 
 #include <gtest/gtest.h>
@@ -22,9 +25,13 @@
 #include "contact_model_kit.hpp"
 #include "contact_spec_models.hpp"
 #include "hex_model_builder.hpp"
+#include "styk/inp/writer.hpp"
+#include "styk/mesher/builders.hpp"
 #include "styk/mesher/convert.hpp"
 #include "styk/mesher/split.hpp"
 #include "styk/solver/analysis.hpp"
+#include "support/ccx_runner.hpp"
+#include "support/test_scratch.hpp"
 
 namespace styk {
 namespace {
@@ -389,6 +396,33 @@ TEST_F(MortarContact, MatchingMeshesGiveNodeToNode) {
   const double difference = largest_difference(by_type[0], by_type[1]);
   EXPECT_LT(difference, 5e-5);
   ::testing::Test::RecordProperty("mortar_versus_node_to_node", sci(difference));
+}
+
+// The deck Styk writes for a mortar pair says TYPE=MORTAR and runs in CalculiX 2.20 (which has its
+// own mortar contact): no input error, the job finishes. The model is the SPEC §3.2.3 two
+// cantilevers (C3D8, 10 x 2 elements each, mu = 0.2: the builder's deck that CalculiX converges
+// on). On the non-matching flat patch CalculiX's mortar stops inside its solver (exit 255) while
+// the same deck with NODE TO SURFACE or SURFACE TO SURFACE finishes: a limit of CalculiX's mortar.
+TEST_F(MortarContact, WrittenDeckRunsInCalculix) {
+  ASSERT_TRUE(test::ccx_on_path()) << test::kCcxMissing;
+  Model model =
+      mesher::run_builder("two-cantilevers", {{"element", "C3D8"}, {"n", "10"}}, registry()).model;
+  ASSERT_EQ(model.contact_pairs.size(), 1u);
+  model.contact_pairs[0].type = ContactPair::Type::Mortar;
+  const std::filesystem::path dir = test::test_scratch_dir("mortar_ccx");
+  {
+    std::ofstream out(dir / "patch.inp");
+    write_inp(model, out);
+  }
+  std::ifstream written(dir / "patch.inp");
+  std::stringstream text;
+  text << written.rdbuf();
+  EXPECT_NE(text.str().find("TYPE=MORTAR"), std::string::npos);
+  const test::CcxRun run = test::run_ccx(dir, "patch", 300);
+  EXPECT_EQ(run.exit_code, 0) << run.log.substr(0, 3000);
+  EXPECT_EQ(run.log.find("*ERROR"), std::string::npos) << run.log.substr(0, 3000);
+  EXPECT_NE(run.log.find("Job finished"), std::string::npos)
+      << run.log.substr(run.log.size() > 3000 ? run.log.size() - 3000 : 0);
 }
 
 }  // namespace
