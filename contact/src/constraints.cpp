@@ -291,8 +291,6 @@ std::vector<ContactConstraint> build_contact_constraints(const Model& model,
       c.slave = node;
       c.law = law;
       c.area = s.area;
-      apply_penalty_law(interaction->second, slave_surface, std::to_string(model.node_ids[node]),
-                        c);
       const Eigen::Vector3d xs = position(model, node);
       bool have_normal = !s.normal_sum.isZero();
       if (have_normal) c.normal = s.normal_sum.normalized();
@@ -355,11 +353,17 @@ std::vector<ContactConstraint> build_contact_constraints(const Model& model,
       if (!have_normal)
         throw InputError(pair.where, "slave node " + std::to_string(model.node_ids[node]) +
                                          " has no normal (node surface on a coincident node)");
+      // The spring on the pairing's area (mortar: D_j); a row that is gap_scale times the node's
+      // gap (a mortar mid-edge row) has its spring and clearance scaled with it.
+      apply_penalty_law(interaction->second, slave_surface, std::to_string(model.node_ids[node]),
+                        c);
+      c.penalty_stiffness /= c.gap_scale;
+      c.exponential_beta /= c.gap_scale;
       c.gap0 = c.normal.dot(master_point - xs);
-      if (pair.clearance) c.gap0 = *pair.clearance;
+      if (pair.clearance) c.gap0 = *pair.clearance * c.gap_scale;
       if ((adjust != nullptr &&
            std::binary_search(adjust->nodes.begin(), adjust->nodes.end(), node)) ||
-          (pair.adjust_tolerance && std::abs(c.gap0) <= *pair.adjust_tolerance))
+          (pair.adjust_tolerance && std::abs(c.gap0) <= *pair.adjust_tolerance * c.gap_scale))
         c.gap0 = 0.0;
       // The orientation's local 1 axis at the node; a node on a cylindrical orientation's axis has
       // none and takes the default tangent.

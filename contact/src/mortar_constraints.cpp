@@ -30,8 +30,15 @@ void add_face_rows(const MortarFace& slave, const std::vector<MortarFace>& maste
                    const std::vector<Box>& master_boxes, const SourceLoc& where,
                    std::map<int, MortarRow>& rows) {
   const DualBasis dual = dual_basis(slave, where);
-  for (std::size_t a = 0; a < slave.nodes.size(); ++a)
-    rows[slave.nodes[a]].area += dual.nodal_integrals[a];
+  for (std::size_t a = 0; a < slave.nodes.size(); ++a) {
+    MortarRow& row = rows[slave.nodes[a]];
+    row.area += dual.nodal_integrals[a];
+    if (slave.basis.size() == 0 || slave.basis(a, a) == 1.0) continue;
+    // A mid-edge node: the same shares on every face along its edge.
+    row.own = slave.basis(a, a);
+    for (std::size_t c = 0; c < slave.nodes.size(); ++c)
+      if (c != a && slave.basis(c, a) != 0.0) row.corner_shares[slave.nodes[c]] = slave.basis(c, a);
+  }
   const Box box = box_of(slave);
   // Master faces within a face size of the slave face and facing it.
   const double margin = (box.hi - box.lo).norm();
@@ -109,8 +116,9 @@ std::optional<std::map<int, MortarRow>> pair_mortar_rows(
     why_not = "edges of plane or axisymmetric elements";
     return std::nullopt;
   }
-  const std::vector<MortarFace> slave =
+  std::vector<MortarFace> slave =
       mortar_faces(model, slave_surface, std::move(slave_faces), pair.where);
+  for (MortarFace& f : slave) f.basis = slave_basis_transform(f);
   if (!required)
     for (const MortarFace& f : slave)
       if (!admits_dual_basis(f)) {
@@ -129,13 +137,16 @@ bool apply_mortar_row(const Model& model, const MortarRow& row, ContactConstrain
   if (!(covered >= 0.5 * row.area)) return false;
   c.master.clear();
   master_point.setZero();
-  for (const auto& [node, m] : row.coupling) {
-    if (std::abs(m) <= 1e-14 * row.area) continue;
-    c.master.push_back({node, m / covered});
-    master_point += (m / covered) * Eigen::Vector3d(model.coords[node][0], model.coords[node][1],
-                                                    model.coords[node][2]);
-  }
-  c.area = row.area;
+  auto add = [&](int node, double weight, bool slave_side) {
+    c.master.push_back({node, weight, slave_side});
+    master_point += weight * Eigen::Vector3d(model.coords[node][0], model.coords[node][1],
+                                             model.coords[node][2]);
+  };
+  for (const auto& [node, m] : row.coupling)
+    if (std::abs(m) > 1e-14 * row.area) add(node, row.own * m / covered, false);
+  for (const auto& [node, share] : row.corner_shares) add(node, share, true);
+  c.area = row.area / row.own;
+  c.gap_scale = row.own;
   c.node_to_node = false;
   return true;
 }

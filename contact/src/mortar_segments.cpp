@@ -158,7 +158,13 @@ bool plane_inverse(const PlacedFace& f, const Plane& plane, const Eigen::Vector2
   return false;
 }
 
-// integral N_a dA per face node, and the face's mass matrix integral N_a N_b dA (may be null).
+// The slave basis N^ at (p, q).
+Eigen::VectorXd slave_basis_values(const MortarFace& f, double p, double q) {
+  const Eigen::VectorXd N = face_shape_values(f, p, q);
+  return f.basis.size() > 0 ? Eigen::VectorXd(f.basis * N) : N;
+}
+
+// integral N^_a dA per face node, and the face's mass matrix integral N^_a N^_b dA (may be null).
 Eigen::VectorXd nodal_integrals(const MortarFace& slave, Eigen::MatrixXd* mass) {
   const int n = static_cast<int>(slave.local.size());
   if (mass != nullptr) mass->setZero(n, n);
@@ -169,7 +175,7 @@ Eigen::VectorXd nodal_integrals(const MortarFace& slave, Eigen::MatrixXd* mass) 
     Eigen::Vector3d x, xp, xq;
     face_map(slave.placed, p, q, x, xp, xq);
     const double dA = rule.weights[g] * xp.cross(xq).norm();
-    const Eigen::VectorXd N = face_shape_values(slave, p, q);
+    const Eigen::VectorXd N = slave_basis_values(slave, p, q);
     if (mass != nullptr) mass->noalias() += dA * N * N.transpose();
     integrals += dA * N;
   }
@@ -195,6 +201,27 @@ Eigen::VectorXd face_shape_values(const MortarFace& f, double p, double q) {
   Eigen::VectorXd out(f.local.size());
   for (std::size_t a = 0; a < f.local.size(); ++a) out[a] = all[f.local[a]];
   return out;
+}
+
+Eigen::MatrixXd slave_basis_transform(const MortarFace& f) {
+  // The corners' share of a mid-edge node (Popp et al. 2012: 1/5 for both face types).
+  constexpr double kShare = 0.2;
+  const int n = static_cast<int>(f.local.size());
+  Eigen::MatrixXd T = Eigen::MatrixXd::Identity(n, n);
+  const int corners = is_triangle(f.placed) ? 3 : 4;
+  if (n != 2 * corners) return T;
+  const std::vector<Vec3>& xi = f.placed.element->natural_nodes();
+  auto natural = [&](int a) {
+    return Eigen::Vector3d(xi[f.local[a]][0], xi[f.local[a]][1], xi[f.local[a]][2]);
+  };
+  for (int m = corners; m < n; ++m)
+    for (int a = 0; a < corners; ++a)
+      for (int b = a + 1; b < corners; ++b)
+        if ((natural(a) + natural(b) - 2.0 * natural(m)).norm() < 1e-12) {
+          T(m, m) = 1.0 - 2.0 * kShare;
+          T(a, m) = T(b, m) = kShare;
+        }
+  return T;
 }
 
 bool admits_dual_basis(const MortarFace& slave) {
@@ -245,7 +272,7 @@ double integrate_overlap(const MortarFace& slave, const DualBasis& dual, const M
           !plane_inverse(master.placed, plane, y, master_pq, nullptr))
         continue;
       const Eigen::VectorXd phi =
-          dual.coefficients * face_shape_values(slave, slave_pq[0], slave_pq[1]);
+          dual.coefficients * slave_basis_values(slave, slave_pq[0], slave_pq[1]);
       const Eigen::VectorXd N = face_shape_values(master, master_pq[0], master_pq[1]);
       coupling.noalias() += (rule.weights[g] * jacobian * ratio) * phi * N.transpose();
     }

@@ -24,18 +24,28 @@ struct MortarFace {
   PlacedFace placed;
   std::vector<int> local;
   std::vector<int> nodes;
+  // The slave basis N^ = basis N the multipliers are biorthogonal to (empty: N itself).
+  Eigen::MatrixXd basis;
 };
 
 // The face's shape functions at in-face coordinates (p, q), one per face node (MortarFace order).
 Eigen::VectorXd face_shape_values(const MortarFace& f, double p, double q);
 
+// The slave basis of a face (Popp, Wohlmuth, Gee, Wall 2012, "Dual quadratic mortar finite element
+// methods for 3D finite deformation contact"): on an 8-node quadrilateral or 6-node triangle,
+// whose corner integrals are negative or zero, N^_corner = N_corner + 1/5 (sum of the N of the
+// two mid-edge nodes beside it) and N^_mid = 3/5 N_mid (a partition of unity with positive
+// integrals: A/20 and A/5 on a flat 8-node face); every other face keeps N (identity).
+Eigen::MatrixXd slave_basis_transform(const MortarFace& f);
+
 // The face's unit normal at its centre, out of its element.
 Eigen::Vector3d face_centre_normal(const PlacedFace& f);
 
-// The dual basis of a slave face: phi_a = sum_b coefficients(a, b) N_b, and the nodal integrals
-// D_a = integral N_a dA (= integral phi_a dA). Throws InputError at `where` when a nodal integral
-// is not positive (the serendipity 8-node and 6-node faces: their corner integrals are negative
-// or zero, and phi_a would not exist or would pull).
+// The dual basis of a slave face: phi_a = sum_b coefficients(a, b) N^_b, biorthogonal to the
+// slave basis N^ (MortarFace::basis), and the nodal integrals D_a = integral N^_a dA
+// (= integral phi_a dA). Throws InputError at `where` when a nodal integral
+// is not positive (the serendipity 8-node and 6-node faces without their transformed basis: their
+// corner integrals are negative or zero, and phi_a would not exist or would pull).
 struct DualBasis {
   Eigen::MatrixXd coefficients;
   Eigen::VectorXd nodal_integrals;

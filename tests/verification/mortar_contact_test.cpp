@@ -41,7 +41,7 @@ constexpr double kPi = 3.14159265358979323846;
 // One side of the interface: element type of its contact layer and divisions along x and y.
 struct Side {
   // C3D8, C3D20, C3D27 (a C3D20 block converted), C3D21/C3D28 (a C3D20 block whose contact layer
-  // is converted), or C3D4 (the body's bricks split into tetrahedra: mesher/split.hpp)
+  // is converted), or C3D4/C3D10 (the body's bricks split into tetrahedra: mesher/split.hpp)
   std::string type;
   int divisions = 1;
 };
@@ -78,7 +78,7 @@ Model two_blocks(const Side& slave, const Side& master, double poisson,
       mesher::convert_elements(mesh, test::shared_registry(), side.type, "",
                                mesh.element_sets.at(body));
   for (const auto& [side, body] : {std::make_pair(slave, "UPPER"), std::make_pair(master, "LOWER")})
-    if (side.type == "C3D4")
+    if (side.type == "C3D4" || side.type == "C3D10")
       mesher::split_to_tetrahedra(mesh, test::shared_registry(), side.type,
                                   mesh.element_sets.at(body));
   Model model = test::contact_model(mesh, {{"LOWER", 1.0, poisson}, {"UPPER", 1.0, poisson}});
@@ -142,8 +142,9 @@ struct Spread {
 };
 
 // The patch test: every slave node closed with pressure 1 (1e-8), gap 0 (1e-12), the nodal
-// areas D_j adding up to the face area 1 (1e-12), the total force the applied load 1 (1e-10).
-// Returns the measured pressure spread.
+// areas D_j adding up to the face area 1 (1e-12; not on 8-node and 6-node slave faces, whose
+// mid-edge rows carry integral N_j dA, the corners D^_j), the total force the applied load 1
+// (1e-10), also as the pair's force. Returns the measured pressure spread.
 Spread expect_patch_test(const ElementRegistry& registry, const Side& slave, const Side& master) {
   SCOPED_TRACE(slave.type + " " + std::to_string(slave.divisions) + " on " + master.type + " " +
                std::to_string(master.divisions));
@@ -162,8 +163,11 @@ Spread expect_patch_test(const ElementRegistry& registry, const Side& slave, con
     force += c.force[2];
   }
   EXPECT_FALSE(r.contact.empty());
-  EXPECT_NEAR(area, 1.0, 1e-12);
-  EXPECT_NEAR(force, 1.0, 1e-10);
+  if (slave.type != "C3D20" && slave.type != "C3D10") {
+    EXPECT_NEAR(area, 1.0, 1e-12);
+    EXPECT_NEAR(force, 1.0, 1e-10);
+  }
+  EXPECT_NEAR(r.contact_pairs.at(0).force[2], 1.0, 1e-10);
   EXPECT_LT(r.contact_equilibrium.relative_residual, 1e-8);
   return spread;
 }
@@ -195,6 +199,51 @@ TEST_F(MortarContact, FlatPatchTestOnQuadraticFaces) {
                                         "_on_" + master.type + "_" +
                                         std::to_string(master.divisions),
                                     sci(s.worst(1.0)));
+  }
+}
+
+// Serendipity slave faces (C3D20: 8 nodes, C3D10: 6-node triangles), whose corner integrals are
+// negative or zero: the transformed slave basis (Popp et al. 2012) makes every multiplier's
+// integral positive; the mid-edge rows couple the edge's corners. Pressure 1 at every node, corners
+// included (node-to-surface opens them: node_to_surface_contact_test.cpp).
+TEST_F(MortarContact, FlatPatchTestOnSerendipitySlaveFaces) {
+  const std::pair<Side, Side> cases[] = {{{"C3D20", 3}, {"C3D8", 4}},
+                                         {{"C3D20", 3}, {"C3D20", 4}},
+                                         {{"C3D20", 4}, {"C3D20", 3}},
+                                         {{"C3D10", 3}, {"C3D4", 4}}};
+  for (const auto& [slave, master] : cases) {
+    const Spread s = expect_patch_test(registry(), slave, master);
+    ::testing::Test::RecordProperty("worst_" + slave.type + "_" + std::to_string(slave.divisions) +
+                                        "_on_" + master.type + "_" +
+                                        std::to_string(master.divisions),
+                                    sci(s.worst(1.0)));
+  }
+}
+
+// A LINEAR penalty law (K = 100) on the pressed patch: pressure 1 and penetration 1 / K = 0.01 at
+// every slave node (1e-8) — on a C3D20 slave as well, whose mid-edge rows are 3/5 of their node's
+// gap (ContactConstraint::gap_scale: the spring and the reported gap are scaled back).
+TEST_F(MortarContact, PenaltyPatchTest) {
+  for (const std::pair<Side, Side>& sides :
+       {std::pair<Side, Side>{{"C3D20", 3}, {"C3D8", 4}}, {{"C3D21", 4}, {"C3D20", 3}}}) {
+    const Side& slave = sides.first;
+    SCOPED_TRACE(slave.type);
+    Model model = pressed_patch(slave, sides.second);
+    PressureOverclosure& law = model.surface_interactions.at("MORTAR").behavior;
+    law.law = PressureOverclosure::Law::Linear;
+    law.slope = 100.0;
+    const Results results =
+        run_static_analysis(model, registry(), SolveOptions{}, nullptr, nullptr);
+    const IncrementResult& r = results.increments.back();
+    ASSERT_FALSE(r.contact.empty());
+    double worst = 0.0;
+    for (const ContactNodeResult& c : r.contact) {
+      EXPECT_NEAR(c.pressure, 1.0, 1e-8) << "node " << model.node_ids[c.node];
+      EXPECT_NEAR(c.gap, -0.01, 1e-8) << "node " << model.node_ids[c.node];
+      worst = std::max({worst, std::abs(c.pressure - 1.0), std::abs(c.gap + 0.01) * 100.0});
+    }
+    EXPECT_NEAR(r.contact_pairs.at(0).force[2], 1.0, 1e-10);
+    ::testing::Test::RecordProperty("penalty_" + slave.type, sci(worst));
   }
 }
 
@@ -232,6 +281,12 @@ void expect_uniform_shear(const ElementRegistry& registry, const Side& slave, co
     EXPECT_NEAR(c.force[0] / c.area, -tau, 1e-8) << "node " << model.node_ids[c.node];
     EXPECT_NEAR(c.force[1] / c.area, 0.0, 1e-8) << "node " << model.node_ids[c.node];
     worst = std::max({worst, std::abs(c.pressure - 1.0), std::abs(c.force[0] / c.area + tau)});
+    // Full slip is uniform: the upper block's interface moves by delta - 2 mu p / G = 0.6 more
+    // than the lower block's (slip of the slave relative to the master, along x).
+    if (status == ContactStatus::Slip) {
+      EXPECT_NEAR(std::abs(c.slip[0] * c.t1[0] + c.slip[1] * c.t2[0]), 0.6, 1e-8)
+          << "node " << model.node_ids[c.node];
+    }
   }
   EXPECT_NEAR(r.contact_pairs.at(0).force[0], -tau, 1e-10);
   ::testing::Test::RecordProperty(std::string(status == ContactStatus::Stick ? "stick_" : "slip_") +
@@ -245,6 +300,7 @@ TEST_F(MortarContact, UniformShearSticks) {
   expect_uniform_shear(registry(), {"C3D8", 4}, {"C3D8", 3}, 0.5, 0.2, 0.8, ContactStatus::Stick);
   expect_uniform_shear(registry(), {"C3D21", 3}, {"C3D20", 4}, 0.5, 0.2, 0.8, ContactStatus::Stick);
   expect_uniform_shear(registry(), {"C3D28", 4}, {"C3D20", 3}, 0.5, 0.2, 0.8, ContactStatus::Stick);
+  expect_uniform_shear(registry(), {"C3D20", 3}, {"C3D20", 4}, 0.5, 0.2, 0.8, ContactStatus::Stick);
 }
 
 TEST_F(MortarContact, UniformShearSlips) {
@@ -252,6 +308,7 @@ TEST_F(MortarContact, UniformShearSlips) {
   expect_uniform_shear(registry(), {"C3D8", 4}, {"C3D8", 3}, 0.1, 0.1, 1.0, ContactStatus::Slip);
   expect_uniform_shear(registry(), {"C3D21", 3}, {"C3D20", 4}, 0.1, 0.1, 1.0, ContactStatus::Slip);
   expect_uniform_shear(registry(), {"C3D28", 4}, {"C3D20", 3}, 0.1, 0.1, 1.0, ContactStatus::Slip);
+  expect_uniform_shear(registry(), {"C3D20", 3}, {"C3D8", 4}, 0.1, 0.1, 1.0, ContactStatus::Slip);
 }
 
 // ---------------------------------------------------------------------------------------------

@@ -93,10 +93,13 @@ TEST(MortarDualBasis, IsBiorthogonalToTheShapeFunctions) {
   }
 }
 
-// The 8-node serendipity face has corner integrals -A/12: no dual basis, refused with the element.
-TEST(MortarDualBasis, SerendipityFaceIsRefused) {
+// The 8-node serendipity face has corner integrals -A/12: no dual basis on N itself (refused, with
+// the element named); the transformed basis (Popp et al. 2012, corner share 1/5) has integrals A/20
+// at the corners and A/5 at the mid-edge nodes (the unit face: 1/20 and 1/5, to 1e-14) and is
+// biorthogonal to its dual basis like any other.
+TEST(MortarDualBasis, SerendipityFaceNeedsTheTransformedBasis) {
   const ElementRegistry registry = test::builtin_registry();
-  const MortarFace f = mortar_face(box_face(registry, "C3D20", 0, false));
+  MortarFace f = mortar_face(box_face(registry, "C3D20", 0, false));
   EXPECT_FALSE(admits_dual_basis(f));
   try {
     dual_basis(f, {"deck.inp", 12});
@@ -106,6 +109,15 @@ TEST(MortarDualBasis, SerendipityFaceIsRefused) {
                                          "N dA is not positive"),
               std::string::npos)
         << e.what();
+  }
+  f.basis = slave_basis_transform(f);
+  ASSERT_TRUE(admits_dual_basis(f));
+  const DualBasis dual = dual_basis(f, {});
+  for (int a = 0; a < 8; ++a) EXPECT_NEAR(dual.nodal_integrals[a], a < 4 ? 0.05 : 0.2, 1e-14);
+  // Each mid-edge node shares 1/5 with the two corners of its edge and keeps 3/5.
+  for (int m = 4; m < 8; ++m) {
+    EXPECT_NEAR(f.basis(m, m), 0.6, 1e-15);
+    EXPECT_NEAR(f.basis.col(m).sum(), 1.0, 1e-15);
   }
 }
 
@@ -186,32 +198,60 @@ TEST(MortarPairing, ShiftedFacesGetTheIntegratedWeights) {
   }
 }
 
-// A C3D20 slave: TYPE=MORTAR is refused at the pair's line; SURFACE TO SURFACE is paired node to
-// surface and says why.
-TEST(MortarPairing, SerendipitySlaveRefusesMortarAndTurnsSurfaceToSurfaceNodeToSurface) {
+// A C3D20 slave (transformed basis): the corner nodes' rows are ordinary (area D^ = 1/20 of the
+// unit face); a mid-edge node's row couples the two corners of its edge as slave-side terms
+// (weights 1/5 each), the master weights add up to 3/5, and its area is integral N dA = 1/3, so
+// force / area is the multiplier's pressure; the row is 3/5 of the node's gap (gap_scale, gap0
+// 0.06 for the gap 0.1). SURFACE TO SURFACE gives the same rows.
+TEST(MortarPairing, SerendipitySlaveRowsCoupleTheEdgeCorners) {
   const ElementRegistry registry = test::builtin_registry();
-  try {
-    build_contact_constraints(shifted_pair(registry, "C3D20", ContactPair::Type::Mortar), registry,
-                              nullptr);
-    FAIL() << "no InputError";
-  } catch (const InputError& e) {
-    EXPECT_NE(std::string(e.what()).find("shifted.inp:40"), std::string::npos) << e.what();
-    EXPECT_NE(std::string(e.what()).find("slave element 2"), std::string::npos) << e.what();
+  for (const ContactPair::Type type :
+       {ContactPair::Type::Mortar, ContactPair::Type::SurfaceToSurface}) {
+    const Model model = shifted_pair(registry, "C3D20", type);
+    std::vector<std::string> notes;
+    const std::vector<ContactConstraint> constraints =
+        build_contact_constraints(model, registry, &notes);
+    ASSERT_FALSE(constraints.empty());
+    int mid_rows = 0;
+    for (const ContactConstraint& c : constraints) {
+      double slave_side = 0.0, master = 0.0;
+      int corners = 0;
+      for (const MasterTerm& t : c.master) {
+        if (t.slave_side) {
+          EXPECT_NEAR(t.weight, 0.2, 1e-15);
+          ++corners;
+          slave_side += t.weight;
+        } else {
+          master += t.weight;
+        }
+      }
+      const bool mid = corners > 0;
+      mid_rows += mid ? 1 : 0;
+      EXPECT_EQ(corners, mid ? 2 : 0);
+      EXPECT_NEAR(master, mid ? 0.6 : 1.0, 1e-14);
+      EXPECT_NEAR(c.area, mid ? 1.0 / 3.0 : 0.05, 1e-14);
+      EXPECT_NEAR(c.gap_scale, mid ? 0.6 : 1.0, 1e-15);
+      EXPECT_NEAR(c.gap0, 0.1 * c.gap_scale, 1e-14);
+    }
+    EXPECT_GT(mid_rows, 0);
   }
-  const Model model = shifted_pair(registry, "C3D20", ContactPair::Type::SurfaceToSurface);
+}
+
+// SURFACE TO SURFACE on a node slave surface (the deck reader refuses it; a model built in code
+// may have it) is paired node to surface, and the log says why.
+TEST(MortarPairing, SurfaceToSurfaceWithoutSlaveFacesIsPairedNodeToSurface) {
+  const ElementRegistry registry = test::builtin_registry();
+  Model model = shifted_pair(registry, "C3D8", ContactPair::Type::SurfaceToSurface);
+  Surface nodes{"SLAVE_NODES", Surface::Kind::Nodes, {}, {}, {}};
+  for (int n = 8; n < 12; ++n) nodes.nodes.push_back(n);  // the slave cube's bottom corners
+  model.surfaces[nodes.name] = nodes;
+  model.contact_pairs[0].slave = nodes.name;
   std::vector<std::string> notes;
-  const std::vector<ContactConstraint> constraints =
-      build_contact_constraints(model, registry, &notes);
+  build_contact_constraints(model, registry, &notes);
   ASSERT_FALSE(notes.empty());
   EXPECT_EQ(notes[0],
-            "contact pair SLAVE_BOTTOM/MASTER_TOP: TYPE=SURFACE TO SURFACE is paired node to "
-            "surface (slave element 2 has a face node whose integral of N dA is not positive)");
-  // Node to surface: the x = 1 corner nodes get the master's shape functions, 1/4 and 3/4.
-  for (const ContactConstraint& c : constraints) {
-    if (model.coords[c.slave][0] != 1.0 || c.master.size() != 2u) continue;
-    for (const MasterTerm& t : c.master)
-      EXPECT_NEAR(t.weight, model.coords[t.node][0] == 0.25 ? 0.25 : 0.75, 1e-14);
-  }
+            "contact pair SLAVE_NODES/MASTER_TOP: TYPE=SURFACE TO SURFACE is paired node to "
+            "surface (the slave surface is a node surface)");
 }
 
 }  // namespace
