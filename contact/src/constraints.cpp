@@ -8,6 +8,7 @@
 #include <map>
 #include <set>
 
+#include "mortar_constraints.hpp"
 #include "styk/core/cyclic_symmetry.hpp"
 #include "styk/core/local_axes.hpp"
 #include "surface_geometry.hpp"
@@ -259,16 +260,26 @@ std::vector<ContactConstraint> build_contact_constraints(const Model& model,
     const NodeLocator locator(model, master_nodes, coincidence);
 
     std::map<int, SlaveNode> slaves;
+    std::vector<PlacedFace> slave_faces;
     if (slave_surface.kind == Surface::Kind::ElementFaces) {
-      slaves = slave_nodes_of_faces(model, place_faces(model, registry, slave_surface, pair.where),
-                                    slave_surface, pair.where);
+      SurfaceFaces placed = place_faces(model, registry, slave_surface, pair.where);
+      slaves = slave_nodes_of_faces(model, placed, slave_surface, pair.where);
+      slave_faces = std::move(placed.faces);
     } else {
       for (int n : slave_surface.nodes) slaves[n] = SlaveNode{};
     }
 
-    if (const int joined = join_cyclic_copies(cyclic, slaves); joined > 0)
+    const int joined = join_cyclic_copies(cyclic, slaves);
+    if (joined > 0)
       note("contact pair " + pair.slave + "/" + pair.master + ": " + std::to_string(joined) +
            " slave nodes on the cyclic symmetry boundary are joined with their images");
+    std::string why_node_to_surface;
+    const std::optional<std::map<int, MortarRow>> mortar =
+        pair_mortar_rows(model, pair, slave_surface, std::move(slave_faces), master_surface,
+                         master.faces, joined > 0, why_node_to_surface);
+    if (!why_node_to_surface.empty())
+      note("contact pair " + pair.slave + "/" + pair.master +
+           ": TYPE=SURFACE TO SURFACE is paired node to surface (" + why_node_to_surface + ")");
     int skipped_shared = 0, skipped_outside = 0;
     for (const auto& [node, s] : slaves) {
       if (constrained.count(node) != 0) {
@@ -280,15 +291,19 @@ std::vector<ContactConstraint> build_contact_constraints(const Model& model,
       c.slave = node;
       c.law = law;
       c.area = s.area;
-      apply_penalty_law(interaction->second, slave_surface, std::to_string(model.node_ids[node]),
-                        c);
       const Eigen::Vector3d xs = position(model, node);
       bool have_normal = !s.normal_sum.isZero();
       if (have_normal) c.normal = s.normal_sum.normalized();
 
       const int coincident = locator.find(xs);
       Eigen::Vector3d master_point = xs;
-      if (coincident >= 0 && coincident != node) {
+      if (mortar) {
+        const auto row = mortar->find(node);
+        if (row == mortar->end() || !apply_mortar_row(model, row->second, c, master_point)) {
+          ++skipped_outside;
+          continue;
+        }
+      } else if (coincident >= 0 && coincident != node) {
         c.master.push_back({coincident, 1.0});
         master_point = position(model, coincident);
       } else {
@@ -338,11 +353,17 @@ std::vector<ContactConstraint> build_contact_constraints(const Model& model,
       if (!have_normal)
         throw InputError(pair.where, "slave node " + std::to_string(model.node_ids[node]) +
                                          " has no normal (node surface on a coincident node)");
+      // The spring on the pairing's area (mortar: D_j); a row that is gap_scale times the node's
+      // gap (a mortar mid-edge row) has its spring and clearance scaled with it.
+      apply_penalty_law(interaction->second, slave_surface, std::to_string(model.node_ids[node]),
+                        c);
+      c.penalty_stiffness /= c.gap_scale;
+      c.exponential_beta /= c.gap_scale;
       c.gap0 = c.normal.dot(master_point - xs);
-      if (pair.clearance) c.gap0 = *pair.clearance;
+      if (pair.clearance) c.gap0 = *pair.clearance * c.gap_scale;
       if ((adjust != nullptr &&
            std::binary_search(adjust->nodes.begin(), adjust->nodes.end(), node)) ||
-          (pair.adjust_tolerance && std::abs(c.gap0) <= *pair.adjust_tolerance))
+          (pair.adjust_tolerance && std::abs(c.gap0) <= *pair.adjust_tolerance * c.gap_scale))
         c.gap0 = 0.0;
       // The orientation's local 1 axis at the node; a node on a cylindrical orientation's axis has
       // none and takes the default tangent.

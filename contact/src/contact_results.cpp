@@ -32,8 +32,8 @@ void fill_contact_results(const Model& model, const std::vector<ContactConstrain
     const double per_area = c.area > 0.0 ? 1.0 / c.area : 1.0;
     r.pressure = s.lambda[0] * per_area;
     r.shear = {f.dot(c.t1) * per_area, f.dot(c.t2) * per_area};
-    r.slip = {s.slip[0], s.slip[1]};
-    r.gap = c.gap0 - s.d[0];
+    r.slip = {s.slip[0] / c.gap_scale, s.slip[1] / c.gap_scale};
+    r.gap = (c.gap0 - s.d[0]) / c.gap_scale;
     r.normal = to_vec3(c.normal);
     r.t1 = to_vec3(c.t1);
     r.t2 = to_vec3(c.t2);
@@ -41,14 +41,20 @@ void fill_contact_results(const Model& model, const std::vector<ContactConstrain
     r.fluid_pressure = s.fluid * per_area;
     out.contact.push_back(r);
 
+    // The pair's force on the slave body: the node's own, and the opposite of it times the weight
+    // at slave-side terms (mortar rows of quadratic slave faces).
     ContactPairResult& total = out.contact_pairs.at(c.pair);
-    const Eigen::Vector3d x(model.coords[c.slave][0], model.coords[c.slave][1],
-                            model.coords[c.slave][2]);
-    const Eigen::Vector3d moment = x.cross(f);
-    for (int d = 0; d < 3; ++d) {
-      total.force[d] += f[d];
-      total.moment[d] += moment[d];
-    }
+    auto add = [&](int node, const Eigen::Vector3d& force) {
+      const Eigen::Vector3d x(model.coords[node][0], model.coords[node][1], model.coords[node][2]);
+      const Eigen::Vector3d moment = x.cross(force);
+      for (int d = 0; d < 3; ++d) {
+        total.force[d] += force[d];
+        total.moment[d] += moment[d];
+      }
+    };
+    add(c.slave, f);
+    for (const MasterTerm& t : c.master)
+      if (t.slave_side) add(t.node, -t.weight * f);
   }
 }
 

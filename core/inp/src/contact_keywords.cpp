@@ -261,10 +261,12 @@ void DeckReader::on_contact_pair(const KeywordLine& kw) {
     const std::string value = normalize_name(type->value);
     if (value == "SURFACE TO SURFACE")
       pair.type = ContactPair::Type::SurfaceToSurface;
+    else if (value == "MORTAR")
+      pair.type = ContactPair::Type::Mortar;
     else if (value != "NODE TO SURFACE")
       throw InputError(kw.where, "*CONTACT PAIR, TYPE=" + type->value +
-                                     " is not supported; expected NODE TO SURFACE or SURFACE TO "
-                                     "SURFACE");
+                                     " is not supported; expected NODE TO SURFACE, SURFACE TO "
+                                     "SURFACE or MORTAR");
   }
   if (const Parameter* adjust = kw.find("ADJUST")) {
     if (!names_a_set(adjust->value)) {
@@ -355,11 +357,13 @@ void DeckReader::resolve_contact_references() {
       throw InputError(pair.where, "master surface " + pair.master +
                                        " is a node surface (TYPE=NODE); a master surface must "
                                        "consist of element faces");
-    if (pair.type == ContactPair::Type::SurfaceToSurface &&
+    if (pair.type != ContactPair::Type::NodeToSurface &&
         model_.surfaces.at(pair.slave).kind != Surface::Kind::ElementFaces)
-      throw InputError(pair.where, "slave surface " + pair.slave +
-                                       " is a node surface; TYPE=SURFACE TO SURFACE needs element "
-                                       "faces on both sides (or use TYPE=NODE TO SURFACE)");
+      throw InputError(
+          pair.where,
+          "slave surface " + pair.slave + " is a node surface; TYPE=" +
+              (pair.type == ContactPair::Type::Mortar ? "MORTAR" : "SURFACE TO SURFACE") +
+              " needs element faces on both sides (or use TYPE=NODE TO SURFACE)");
     if (!model_.surface_interactions.count(pair.interaction))
       throw InputError(pair.where, "INTERACTION=" + pair.interaction +
                                        " of *CONTACT PAIR is not defined; surface interactions: " +

@@ -75,11 +75,21 @@ void write_interactions(const std::map<std::string, SurfaceInteraction>& interac
   }
 }
 
+const char* type_name(ContactPair::Type type) {
+  switch (type) {
+    case ContactPair::Type::SurfaceToSurface:
+      return "SURFACE TO SURFACE";
+    case ContactPair::Type::Mortar:
+      return "MORTAR";
+    case ContactPair::Type::NodeToSurface:
+      break;
+  }
+  return "NODE TO SURFACE";
+}
+
 void write_contact_pairs(const std::vector<ContactPair>& pairs, std::ostream& out) {
   for (const ContactPair& pair : pairs) {
-    out << "*CONTACT PAIR, INTERACTION=" << pair.interaction << ", TYPE="
-        << (pair.type == ContactPair::Type::SurfaceToSurface ? "SURFACE TO SURFACE"
-                                                             : "NODE TO SURFACE");
+    out << "*CONTACT PAIR, INTERACTION=" << pair.interaction << ", TYPE=" << type_name(pair.type);
     if (!pair.adjust_nset.empty()) out << ", ADJUST=" << pair.adjust_nset;
     if (pair.adjust_tolerance) out << ", ADJUST=" << shortest_number(*pair.adjust_tolerance);
     out << '\n' << pair.slave << ", " << pair.master << '\n';

@@ -284,10 +284,16 @@ TEST(ContactInput, ContactPairReferencesAreCheckedAtTheEndWithTheirLine) {
   expect_error("pair_no_data.inp",
                surfaces + interaction + "*CONTACT PAIR, INTERACTION=I\n" + kStep, "*CONTACT PAIR",
                "needs a data line: slave surface, master surface");
-  expect_error("pair_mortar.inp",
+  expect_error("pair_linmortar.inp",
                surfaces + interaction +
-                   "*CONTACT PAIR, INTERACTION=I, TYPE=MORTAR\nB_BOTTOM, A_TOP\n" + kStep,
-               "*CONTACT PAIR", "TYPE=MORTAR is not supported");
+                   "*CONTACT PAIR, INTERACTION=I, TYPE=LINMORTAR\nB_BOTTOM, A_TOP\n" + kStep,
+               "*CONTACT PAIR",
+               "TYPE=LINMORTAR is not supported; expected NODE TO SURFACE, SURFACE TO SURFACE or "
+               "MORTAR");
+  expect_error("pair_mortar_nodes.inp",
+               surfaces + interaction +
+                   "*CONTACT PAIR, INTERACTION=I, TYPE=MORTAR\nB_NODES, A_TOP\n" + kStep,
+               "B_NODES, A_TOP", "TYPE=MORTAR needs element faces on both sides");
   expect_error("pair_adjust_negative.inp",
                surfaces + interaction +
                    "*CONTACT PAIR, INTERACTION=I, ADJUST=-1.\nB_BOTTOM, A_TOP\n" + kStep,

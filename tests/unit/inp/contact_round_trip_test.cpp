@@ -75,7 +75,7 @@ B_BOTTOM
 B_BOTTOM, A_TOP
 *CONTACT PAIR, INTERACTION=DRY, ADJUST=B_BOTTOM
 B_NODES, A_TOP
-*CONTACT PAIR, INTERACTION=GLUED
+*CONTACT PAIR, INTERACTION=GLUED, TYPE=MORTAR
 B_BOTTOM, A_TOP
 *CLEARANCE, SLAVE=B_BOTTOM, MASTER=A_TOP, VALUE=-2.5e-3
 *TRANSFORM, NSET=SECTOR, TYPE=R
@@ -216,6 +216,7 @@ TEST(ContactRoundTrip, EveryNewKeywordReadsBackAndWritingIsStable) {
   const Model original = read_inp(write_deck("contact_everything.inp", kDeck), registry);
   // The deck exercises what it should: a non-trivial value of every new field.
   ASSERT_EQ(original.contact_pairs.size(), 3u);
+  ASSERT_EQ(original.contact_pairs[2].type, ContactPair::Type::Mortar);
   ASSERT_EQ(original.surfaces.at("A_TOP").faces.size(), 2u);
   ASSERT_EQ(original.equations.size(), 2u);
   ASSERT_EQ(original.equations[1].terms.size(), 5u);

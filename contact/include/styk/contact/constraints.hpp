@@ -39,6 +39,10 @@ struct FrictionLaw {
 struct MasterTerm {
   int node = 0;       // model node index
   double weight = 0;  // shape-function value of the master face at the slave's projection
+  // A node of the slave surface itself: the row of a mid-edge node of a quadratic slave face in
+  // mortar contact couples it with the edge's corners (docs/contact.md, "Mortar contact"); its
+  // force acts on the slave body.
+  bool slave_side = false;
 };
 
 struct ContactConstraint {
@@ -51,6 +55,10 @@ struct ContactConstraint {
   Eigen::Vector3d t2 = Eigen::Vector3d::UnitY();
   double area = 0.0;  // nodal contact area: sum of integral N_i dA (SPEC §2.5)
   double gap0 = 0.0;
+  // The row is gap_scale times the node's gap and slip: 1, except the mortar row of a mid-edge node
+  // of a quadratic slave face (3/5, docs/contact.md "Mortar contact"). gap0, the springs and the
+  // row's d are in row units; the results divide by it.
+  double gap_scale = 1.0;
   FrictionLaw law;
   // Penalty laws of *SURFACE BEHAVIOR (penalty_law.hpp): the spring stiffness K A of the node
   // (force per length; 0: exact contact, the default) and whether the spring is TIED (never

@@ -402,7 +402,8 @@ struct SurfaceInteraction {          // *SURFACE INTERACTION, NAME=
 };
 
 struct ContactPair {  // one data line of *CONTACT PAIR
-  enum class Type { NodeToSurface, SurfaceToSurface };
+  // Mortar: segment-to-segment with dual multipliers (docs/contact.md, "Mortar contact").
+  enum class Type { NodeToSurface, SurfaceToSurface, Mortar };
   Type type = Type::NodeToSurface;
   std::string slave;                       // upper-case surface names (Model::surfaces)
   std::string master;                      // an element-face surface

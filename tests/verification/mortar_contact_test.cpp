@@ -1,0 +1,486 @@
+// Mortar contact (*CONTACT PAIR, TYPE=MORTAR; docs/contact.md "Mortar contact"): dual Lagrange
+// multipliers on the slave faces (Wohlmuth 2000), so every slave node's row is one constraint,
+// solved exactly through run_static_analysis.
+//
+// The contact patch test (Taylor and Papadopoulos 1991; issue "Contact engine at scale and
+// exactness", item 2): a block [0,1]^2 x [1,2] (slave bottom, n x n elements) pressed by p = 1 on
+// its top onto a block [0,1]^2 x [0,1] (master top, m x m) of the same stiffness, both on rollers.
+// The exact solution is a uniform stress, so a formulation that passes the test carries pressure 1
+// at every slave node. One-pass node-to-surface does not (0.63 ... 2.14,
+// node_to_surface_contact_test.cpp); mortar must, to 1e-8.
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+#include <filesystem>
+#include <fstream>
+#include <map>
+#include <memory>
+#include <optional>
+#include <sstream>
+#include <string>
+
+#include <gtest/gtest.h>
+#include <Eigen/Core>
+
+#include "contact_model_kit.hpp"
+#include "contact_spec_models.hpp"
+#include "hex_model_builder.hpp"
+#include "styk/inp/writer.hpp"
+#include "styk/mesher/builders.hpp"
+#include "styk/mesher/convert.hpp"
+#include "styk/mesher/split.hpp"
+#include "styk/solver/analysis.hpp"
+#include "support/ccx_runner.hpp"
+#include "support/test_scratch.hpp"
+
+namespace styk {
+namespace {
+
+constexpr double kPi = 3.14159265358979323846;
+
+// One side of the interface: element type of its contact layer and divisions along x and y.
+struct Side {
+  // C3D8, C3D20, C3D27 (a C3D20 block converted), C3D21/C3D28 (a C3D20 block whose contact layer
+  // is converted), or C3D4/C3D10 (the body's bricks split into tetrahedra: mesher/split.hpp)
+  std::string type;
+  int divisions = 1;
+};
+
+std::string block_type(const std::string& type) {
+  return type == "C3D8" || type == "C3D4" ? "C3D8" : "C3D20";
+}
+
+// The two blocks, their surfaces and the mortar pair (frictionless unless `friction`), no loads.
+Model two_blocks(const Side& slave, const Side& master, double poisson,
+                 std::optional<Friction> friction) {
+  mesher::Mesh mesh;
+  const mesher::Block lower =
+      test::add_box(mesh, {0, 0, 0}, {1, 1, 1}, {master.divisions, master.divisions, 2},
+                    block_type(master.type), "LOWER");
+  const mesher::Block upper =
+      test::add_box(mesh, {0, 0, 1}, {1, 1, 2}, {slave.divisions, slave.divisions, 2},
+                    block_type(slave.type), "UPPER");
+  mesh.add_to_surface("LOWER_TOP", lower.side_faces(2, 1));
+  mesh.add_to_surface("UPPER_BOTTOM", upper.side_faces(2, -1));
+  mesh.add_to_surface("LOAD", upper.side_faces(2, 1));
+  for (int axis = 0; axis < 2; ++axis)
+    for (int side : {-1, 1}) {
+      const std::string suffix = std::to_string(axis) + (side > 0 ? "+" : "-");
+      mesh.add_to_surface("UPPER_SIDE" + suffix, upper.side_faces(axis, side));
+      mesh.add_to_surface("LOWER_SIDE" + suffix, lower.side_faces(axis, side));
+    }
+  for (const auto& [side, surface] :
+       {std::make_pair(slave, "UPPER_BOTTOM"), std::make_pair(master, "LOWER_TOP")})
+    if (side.type == "C3D21" || side.type == "C3D28")
+      mesher::convert_elements(mesh, test::shared_registry(), side.type, surface);
+  for (const auto& [side, body] : {std::make_pair(slave, "UPPER"), std::make_pair(master, "LOWER")})
+    if (side.type == "C3D27")
+      mesher::convert_elements(mesh, test::shared_registry(), side.type, "",
+                               mesh.element_sets.at(body));
+  for (const auto& [side, body] : {std::make_pair(slave, "UPPER"), std::make_pair(master, "LOWER")})
+    if (side.type == "C3D4" || side.type == "C3D10")
+      mesher::split_to_tetrahedra(mesh, test::shared_registry(), side.type,
+                                  mesh.element_sets.at(body));
+  Model model = test::contact_model(mesh, {{"LOWER", 1.0, poisson}, {"UPPER", 1.0, poisson}});
+  test::add_contact_pair(model, "UPPER_BOTTOM", "LOWER_TOP", "MORTAR", friction);
+  model.contact_pairs.back().type = ContactPair::Type::Mortar;
+  return model;
+}
+
+Model pressed_patch(const Side& slave, const Side& master) {
+  Model model = two_blocks(slave, master, 0.3, std::nullopt);
+  test::add_pressure(model, "LOAD", 1.0);
+  for (int axis = 0; axis < 3; ++axis)
+    test::fix(model,
+              test::nodes_where(model, [axis](const Vec3& x) { return std::abs(x[axis]) < 1e-9; }),
+              {axis + 1});
+  return model;
+}
+
+std::string sci(double v) {
+  char text[32];
+  std::snprintf(text, sizeof text, "%.2e", v);
+  return text;
+}
+
+// Nodal forces of a uniform traction on the faces of `surface`: traction times the nodal areas
+// integral N_i dA of each face (the consistent load), summed per node (a later *CLOAD line for the
+// same node and dof would replace an earlier one).
+void add_traction(Model& model, const ElementRegistry& registry, const std::string& surface,
+                  const Eigen::Vector3d& traction) {
+  std::map<int, double> area_of;
+  for (const SurfaceFace& f : model.surfaces.at(surface).faces) {
+    const Element& element = model.elements[f.element];
+    ElementGeometry g;
+    g.X.resize(element.node_count, 3);
+    const int* nodes = model.element_nodes(f.element);
+    for (int k = 0; k < element.node_count; ++k)
+      for (int d = 0; d < 3; ++d) g.X(k, d) = model.coords[nodes[k]][d];
+    Eigen::VectorXd area;
+    registry.find(element.type)->nodal_areas(g, f.face - 1, area);
+    for (int k = 0; k < element.node_count; ++k)
+      if (area[k] != 0.0) area_of[nodes[k]] += area[k];
+  }
+  for (const auto& [node, area] : area_of)
+    for (int d = 0; d < 3; ++d)
+      if (traction[d] != 0.0)
+        model.steps[0].cloads.push_back({node, d + 1, traction[d] * area, {}});
+}
+
+class MortarContact : public ::testing::Test {
+ protected:
+  static void SetUpTestSuite() { full_ = test::registry_with_plugins(); }
+  static void TearDownTestSuite() { full_.reset(); }
+  static const ElementRegistry& registry() { return full_->registry; }
+  static std::unique_ptr<test::FullRegistry> full_;
+};
+std::unique_ptr<test::FullRegistry> MortarContact::full_;
+
+struct Spread {
+  double low = INFINITY, high = -INFINITY;
+  double worst(double exact) const { return std::max(high - exact, exact - low); }
+};
+
+// The patch test: every slave node closed with pressure 1 (1e-8), gap 0 (1e-12), the nodal
+// areas D_j adding up to the face area 1 (1e-12; not on 8-node and 6-node slave faces, whose
+// mid-edge rows carry integral N_j dA, the corners D^_j), the total force the applied load 1
+// (1e-10), also as the pair's force. Returns the measured pressure spread.
+Spread expect_patch_test(const ElementRegistry& registry, const Side& slave, const Side& master) {
+  SCOPED_TRACE(slave.type + " " + std::to_string(slave.divisions) + " on " + master.type + " " +
+               std::to_string(master.divisions));
+  const Model model = pressed_patch(slave, master);
+  const Results results = run_static_analysis(model, registry, SolveOptions{}, nullptr, nullptr);
+  const IncrementResult& r = results.increments.back();
+  Spread spread;
+  double area = 0.0, force = 0.0;
+  for (const ContactNodeResult& c : r.contact) {
+    EXPECT_NE(c.status, ContactStatus::Open) << "node " << model.node_ids[c.node];
+    EXPECT_NEAR(c.pressure, 1.0, 1e-8) << "node " << model.node_ids[c.node];
+    EXPECT_NEAR(c.gap, 0.0, 1e-12);
+    spread.low = std::min(spread.low, c.pressure);
+    spread.high = std::max(spread.high, c.pressure);
+    area += c.area;
+    force += c.force[2];
+  }
+  EXPECT_FALSE(r.contact.empty());
+  if (slave.type != "C3D20" && slave.type != "C3D10") {
+    EXPECT_NEAR(area, 1.0, 1e-12);
+    EXPECT_NEAR(force, 1.0, 1e-10);
+  }
+  EXPECT_NEAR(r.contact_pairs.at(0).force[2], 1.0, 1e-10);
+  EXPECT_LT(r.contact_equilibrium.relative_residual, 1e-8);
+  return spread;
+}
+
+// Linear faces: C3D8 both ways round, and linear triangles (C3D4) on the same non-matching
+// divisions. Measured worst deviation from 1: see docs/contact.md.
+TEST_F(MortarContact, FlatPatchTestOnLinearFaces) {
+  const std::pair<Side, Side> cases[] = {
+      {{"C3D8", 3}, {"C3D8", 4}}, {{"C3D8", 4}, {"C3D8", 3}}, {{"C3D4", 3}, {"C3D4", 4}}};
+  for (const auto& [slave, master] : cases) {
+    const Spread s = expect_patch_test(registry(), slave, master);
+    ::testing::Test::RecordProperty("worst_" + slave.type + "_" + std::to_string(slave.divisions) +
+                                        "_on_" + std::to_string(master.divisions),
+                                    sci(s.worst(1.0)));
+  }
+}
+
+// Quadratic and cubic faces: the thesis' contact layers C3D21 (9-node face) and C3D28 (16-node
+// face) and C3D27 (9-node) as slaves on C3D20 (8-node) and C3D8 masters and the other way round
+// where the slave face allows dual multipliers.
+TEST_F(MortarContact, FlatPatchTestOnQuadraticFaces) {
+  const std::pair<Side, Side> cases[] = {{{"C3D21", 3}, {"C3D20", 4}}, {{"C3D21", 4}, {"C3D20", 3}},
+                                         {{"C3D28", 3}, {"C3D20", 4}}, {{"C3D28", 4}, {"C3D20", 3}},
+                                         {{"C3D27", 3}, {"C3D27", 4}}, {{"C3D8", 3}, {"C3D20", 4}},
+                                         {{"C3D21", 4}, {"C3D28", 3}}};
+  for (const auto& [slave, master] : cases) {
+    const Spread s = expect_patch_test(registry(), slave, master);
+    ::testing::Test::RecordProperty("worst_" + slave.type + "_" + std::to_string(slave.divisions) +
+                                        "_on_" + master.type + "_" +
+                                        std::to_string(master.divisions),
+                                    sci(s.worst(1.0)));
+  }
+}
+
+// Serendipity slave faces (C3D20: 8 nodes, C3D10: 6-node triangles), whose corner integrals are
+// negative or zero: the transformed slave basis (Popp et al. 2012) makes every multiplier's
+// integral positive; the mid-edge rows couple the edge's corners. Pressure 1 at every node, corners
+// included (node-to-surface opens them: node_to_surface_contact_test.cpp).
+TEST_F(MortarContact, FlatPatchTestOnSerendipitySlaveFaces) {
+  const std::pair<Side, Side> cases[] = {{{"C3D20", 3}, {"C3D8", 4}},
+                                         {{"C3D20", 3}, {"C3D20", 4}},
+                                         {{"C3D20", 4}, {"C3D20", 3}},
+                                         {{"C3D10", 3}, {"C3D4", 4}}};
+  for (const auto& [slave, master] : cases) {
+    const Spread s = expect_patch_test(registry(), slave, master);
+    ::testing::Test::RecordProperty("worst_" + slave.type + "_" + std::to_string(slave.divisions) +
+                                        "_on_" + master.type + "_" +
+                                        std::to_string(master.divisions),
+                                    sci(s.worst(1.0)));
+  }
+}
+
+// A LINEAR penalty law (K = 100) on the pressed patch: pressure 1 and penetration 1 / K = 0.01 at
+// every slave node (1e-8) — on a C3D20 slave as well, whose mid-edge rows are 3/5 of their node's
+// gap (ContactConstraint::gap_scale: the spring and the reported gap are scaled back).
+TEST_F(MortarContact, PenaltyPatchTest) {
+  for (const std::pair<Side, Side>& sides :
+       {std::pair<Side, Side>{{"C3D20", 3}, {"C3D8", 4}}, {{"C3D21", 4}, {"C3D20", 3}}}) {
+    const Side& slave = sides.first;
+    SCOPED_TRACE(slave.type);
+    Model model = pressed_patch(slave, sides.second);
+    PressureOverclosure& law = model.surface_interactions.at("MORTAR").behavior;
+    law.law = PressureOverclosure::Law::Linear;
+    law.slope = 100.0;
+    const Results results =
+        run_static_analysis(model, registry(), SolveOptions{}, nullptr, nullptr);
+    const IncrementResult& r = results.increments.back();
+    ASSERT_FALSE(r.contact.empty());
+    double worst = 0.0;
+    for (const ContactNodeResult& c : r.contact) {
+      EXPECT_NEAR(c.pressure, 1.0, 1e-8) << "node " << model.node_ids[c.node];
+      EXPECT_NEAR(c.gap, -0.01, 1e-8) << "node " << model.node_ids[c.node];
+      worst = std::max({worst, std::abs(c.pressure - 1.0), std::abs(c.gap + 0.01) * 100.0});
+    }
+    EXPECT_NEAR(r.contact_pairs.at(0).force[2], 1.0, 1e-10);
+    ::testing::Test::RecordProperty("penalty_" + slave.type, sci(worst));
+  }
+}
+
+// Coulomb friction under a uniform shear (nu = 0, E = 1, G = 1/2): the stress sigma_zz = -1,
+// sigma_xz = tau everywhere is exact when the lower block's bottom is clamped, the upper block's
+// top carries pressure 1 and is moved by u_x = delta, both blocks' x faces carry the shear
+// traction +-tau e_z and y = 0 is on rollers. Stick (mu = 0.5): delta = 2 tau / G = 0.8 with
+// tau = 0.2, the interface sticks and transmits tau. Full slip (mu = 0.1): delta = 1 exceeds the
+// blocks' shear strain at tau = mu p (0.4), every node slips and transmits mu p = 0.1. Pressure 1
+// and shear traction tau (x component of the force on the slave: -tau A) at every slave node to
+// 1e-8.
+void expect_uniform_shear(const ElementRegistry& registry, const Side& slave, const Side& master,
+                          double mu, double tau, double delta, ContactStatus status) {
+  SCOPED_TRACE(slave.type + " " + std::to_string(slave.divisions) + " on " + master.type + " " +
+               std::to_string(master.divisions) + ", mu " + std::to_string(mu));
+  Model model = two_blocks(slave, master, 0.0, test::coulomb(mu));
+  test::add_pressure(model, "LOAD", 1.0);
+  for (const char* body : {"UPPER", "LOWER"}) {
+    add_traction(model, registry, std::string(body) + "_SIDE0+", {0, 0, tau});
+    add_traction(model, registry, std::string(body) + "_SIDE0-", {0, 0, -tau});
+  }
+  test::fix(model, test::nodes_where(model, [](const Vec3& x) { return std::abs(x[2]) < 1e-9; }),
+            {1, 2, 3});
+  test::fix(model, test::nodes_where(model, [](const Vec3& x) { return std::abs(x[1]) < 1e-9; }),
+            {2});
+  for (int n : test::nodes_where(model, [](const Vec3& x) { return std::abs(x[2] - 2.0) < 1e-9; }))
+    model.steps[0].boundaries.push_back({n, 1, delta, {}});
+  const Results results = run_static_analysis(model, registry, SolveOptions{}, nullptr, nullptr);
+  const IncrementResult& r = results.increments.back();
+  ASSERT_FALSE(r.contact.empty());
+  double worst = 0.0;
+  for (const ContactNodeResult& c : r.contact) {
+    EXPECT_EQ(c.status, status) << "node " << model.node_ids[c.node];
+    EXPECT_NEAR(c.pressure, 1.0, 1e-8) << "node " << model.node_ids[c.node];
+    EXPECT_NEAR(c.force[0] / c.area, -tau, 1e-8) << "node " << model.node_ids[c.node];
+    EXPECT_NEAR(c.force[1] / c.area, 0.0, 1e-8) << "node " << model.node_ids[c.node];
+    worst = std::max({worst, std::abs(c.pressure - 1.0), std::abs(c.force[0] / c.area + tau)});
+    // Full slip is uniform: the upper block's interface moves by delta - 2 mu p / G = 0.6 more
+    // than the lower block's (slip of the slave relative to the master, along x).
+    if (status == ContactStatus::Slip) {
+      EXPECT_NEAR(std::abs(c.slip[0] * c.t1[0] + c.slip[1] * c.t2[0]), 0.6, 1e-8)
+          << "node " << model.node_ids[c.node];
+    }
+  }
+  EXPECT_NEAR(r.contact_pairs.at(0).force[0], -tau, 1e-10);
+  ::testing::Test::RecordProperty(std::string(status == ContactStatus::Stick ? "stick_" : "slip_") +
+                                      slave.type + "_" + std::to_string(slave.divisions) + "_on_" +
+                                      std::to_string(master.divisions),
+                                  sci(worst));
+}
+
+TEST_F(MortarContact, UniformShearSticks) {
+  expect_uniform_shear(registry(), {"C3D8", 3}, {"C3D8", 4}, 0.5, 0.2, 0.8, ContactStatus::Stick);
+  expect_uniform_shear(registry(), {"C3D8", 4}, {"C3D8", 3}, 0.5, 0.2, 0.8, ContactStatus::Stick);
+  expect_uniform_shear(registry(), {"C3D21", 3}, {"C3D20", 4}, 0.5, 0.2, 0.8, ContactStatus::Stick);
+  expect_uniform_shear(registry(), {"C3D28", 4}, {"C3D20", 3}, 0.5, 0.2, 0.8, ContactStatus::Stick);
+  expect_uniform_shear(registry(), {"C3D20", 3}, {"C3D20", 4}, 0.5, 0.2, 0.8, ContactStatus::Stick);
+}
+
+TEST_F(MortarContact, UniformShearSlips) {
+  expect_uniform_shear(registry(), {"C3D8", 3}, {"C3D8", 4}, 0.1, 0.1, 1.0, ContactStatus::Slip);
+  expect_uniform_shear(registry(), {"C3D8", 4}, {"C3D8", 3}, 0.1, 0.1, 1.0, ContactStatus::Slip);
+  expect_uniform_shear(registry(), {"C3D21", 3}, {"C3D20", 4}, 0.1, 0.1, 1.0, ContactStatus::Slip);
+  expect_uniform_shear(registry(), {"C3D28", 4}, {"C3D20", 3}, 0.1, 0.1, 1.0, ContactStatus::Slip);
+  expect_uniform_shear(registry(), {"C3D20", 3}, {"C3D8", 4}, 0.1, 0.1, 1.0, ContactStatus::Slip);
+}
+
+// ---------------------------------------------------------------------------------------------
+// SPEC §3.2.2 concentric cylinders (plane strain, length 1): inner r 1-2 (E = 10, nu = 0.3),
+// outer r 2-3 (E = 20, nu = 0.2), internal pressure 5, external 3; quarter model, 3 radial x
+// `around` x 1 axial C3D20 per cylinder. Slave: the outer cylinder's bore (`slave_type`: a C3D21
+// or C3D28 contact layer); master: the inner cylinder's C3D20 outer face. The divisions around
+// differ, so the nodes coincide only at the angles both share.
+Model cylinders(int inner_around, int outer_around, const std::string& slave_type,
+                ContactPair::Type type = ContactPair::Type::Mortar) {
+  mesher::Mesh mesh;
+  auto ring = [&](double r0, double r1, int around, const std::string& elset) {
+    const mesher::PatchMap profile =
+        mesher::quad_map({{r0, 0, 0}, {r0, 0, 1}, {r1, 0, 1}, {r1, 0, 0}});
+    mesher::BlockSpec spec;
+    spec.type = "C3D20";
+    spec.divisions = {1, 3, around};
+    spec.elset = elset;
+    return mesher::mesh_block(mesh, mesher::revolve(profile, {0, 0, 0}, {0, 0, 1}, 0.0, kPi / 2),
+                              spec);
+  };
+  const mesher::Block inner = ring(1.0, 2.0, inner_around, "INNER");
+  const mesher::Block outer = ring(2.0, 3.0, outer_around, "OUTER");
+  mesh.add_to_surface("INNER_OUT", inner.side_faces(1, 1));
+  mesh.add_to_surface("OUTER_IN", outer.side_faces(1, -1));
+  mesh.add_to_surface("P_IN", inner.side_faces(1, -1));
+  mesh.add_to_surface("P_OUT", outer.side_faces(1, 1));
+  mesher::convert_elements(mesh, test::shared_registry(), slave_type, "OUTER_IN");
+  Model model = test::contact_model(mesh, {{"INNER", 10.0, 0.3}, {"OUTER", 20.0, 0.2}});
+  test::add_contact_pair(model, "OUTER_IN", "INNER_OUT", "MORTAR", std::nullopt);
+  model.contact_pairs.back().type = type;
+  test::add_pressure(model, "P_IN", 5.0);
+  test::add_pressure(model, "P_OUT", 3.0);
+  test::fix(model, test::nodes_where(model, [](const Vec3&) { return true; }), {3});
+  test::fix(model, test::nodes_where(model, [](const Vec3& x) { return std::abs(x[0]) < 1e-9; }),
+            {1});
+  test::fix(model, test::nodes_where(model, [](const Vec3& x) { return std::abs(x[1]) < 1e-9; }),
+            {2});
+  return model;
+}
+
+// The slave nodes' pressures by position (angle in degrees and z, rounded), so that meshes with the
+// same slave side can be compared node by node.
+using PressureMap = std::map<std::pair<long, long>, double>;
+
+// SPEC §3.2.2: Lamé's contact pressure 3.294, uniform. Every slave node's pressure within
+// `tolerance` (relative) of it, the resultant on the quarter interface F_x = F_y = p r L within
+// 0.5 %, the nodal areas adding up to the quarter bore pi r L / 2 = pi within the quadratic faces'
+// interpolation of the circle (1e-4), gaps closed to round-off. Returns the pressures.
+PressureMap expect_uniform_lame(const ElementRegistry& registry, int inner_around, int outer_around,
+                                const std::string& slave_type, double tolerance) {
+  const std::string name =
+      slave_type + "_" + std::to_string(outer_around) + "_on_" + std::to_string(inner_around);
+  SCOPED_TRACE(name);
+  const Model model = cylinders(inner_around, outer_around, slave_type);
+  const Results results = run_static_analysis(model, registry, SolveOptions{}, nullptr, nullptr);
+  const IncrementResult& r = results.increments.back();
+  const double lame = 3.294, radius = 2.0;
+  EXPECT_FALSE(r.contact.empty());
+  Spread spread;
+  double area = 0.0;
+  PressureMap pressures;
+  for (const ContactNodeResult& c : r.contact) {
+    const Vec3& x = model.coords[c.node];
+    EXPECT_NE(c.status, ContactStatus::Open) << "node " << model.node_ids[c.node];
+    EXPECT_NEAR(c.gap, 0.0, 1e-12);
+    EXPECT_NEAR(c.pressure, lame, tolerance * lame) << "node " << model.node_ids[c.node];
+    spread.low = std::min(spread.low, c.pressure);
+    spread.high = std::max(spread.high, c.pressure);
+    area += c.area;
+    pressures[{std::lround(std::atan2(x[1], x[0]) * 180.0 / kPi * 1e4), std::lround(x[2] * 1e4)}] =
+        c.pressure;
+  }
+  EXPECT_NEAR(area, kPi, 1e-4 * kPi);
+  for (int d = 0; d < 2; ++d)
+    EXPECT_NEAR(r.contact_pairs.at(0).force[d], lame * radius, 0.005 * lame * radius);
+  EXPECT_LT(r.contact_equilibrium.relative_residual, 1e-8);
+  ::testing::Test::RecordProperty("low_" + name, sci(spread.low / lame - 1.0));
+  ::testing::Test::RecordProperty("high_" + name, sci(spread.high / lame - 1.0));
+  ::testing::Test::RecordProperty("resultant_" + name,
+                                  sci(r.contact_pairs.at(0).force[0] / radius / lame - 1.0));
+  return pressures;
+}
+
+// The largest difference, relative to Lamé's 3.294, between the pressures of two solutions with
+// the same slave mesh (every node of `a` present in `b`).
+double largest_difference(const PressureMap& a, const PressureMap& b) {
+  double worst = 0.0;
+  for (const auto& [at, p] : a) {
+    const auto other = b.find(at);
+    EXPECT_NE(other, b.end());
+    if (other != b.end()) worst = std::max(worst, std::abs(p - other->second) / 3.294);
+  }
+  return worst;
+}
+
+// 6 slave elements around the quarter on 4: within 0.5 % of Lamé at every node with either
+// contact layer (measured C3D21 -0.22 % ... +0.40 %, C3D28 -0.20 % ... +0.45 %).
+TEST_F(MortarContact, ConcentricCylindersSixSlaveElementsOnFour) {
+  for (const char* layer : {"C3D21", "C3D28"}) {
+    const PressureMap mortar = expect_uniform_lame(registry(), 4, 6, layer, 0.005);
+    const PressureMap matching = expect_uniform_lame(registry(), 6, 6, layer, 0.005);
+    ::testing::Test::RecordProperty(std::string("versus_matching_") + layer + "_6_on_4",
+                                    sci(largest_difference(mortar, matching)));
+  }
+}
+
+// 4 slave elements on 6: the C3D28 layer is within 0.5 % of Lamé (measured -0.02 % ... +0.06 %).
+// The C3D21 layer with 4 elements around the quarter has -0.39 % (mid-edge nodes) ... +0.77 %
+// (corner nodes) on the matching 4 on 4 mesh already, node-to-node: a property of that slave
+// mesh, not of the pairing. So it is held to 0.8 % of Lamé and, node by node, to the matching
+// mesh's pressures within 0.05 % of Lamé (the non-matching pairing's own error).
+TEST_F(MortarContact, ConcentricCylindersFourSlaveElementsOnSix) {
+  expect_uniform_lame(registry(), 6, 4, "C3D28", 0.005);
+  const PressureMap mortar = expect_uniform_lame(registry(), 6, 4, "C3D21", 0.008);
+  const PressureMap matching = expect_uniform_lame(registry(), 4, 4, "C3D21", 0.008);
+  const double difference = largest_difference(mortar, matching);
+  EXPECT_LT(difference, 5e-4);
+  ::testing::Test::RecordProperty("versus_matching_C3D21_4_on_6", sci(difference));
+}
+
+// On matching meshes the mortar weights are 1 on the coincident master node (the dual function's
+// integral against the master's shape functions is D_j delta_jk) when the two faces are the same
+// surface. On the 4 on 4 cylinders the C3D21 slave face (9 nodes) and the C3D20 master face (8
+// nodes) interpolate the circle slightly differently, and mortar differs from node-to-node by
+// 1.25e-5 of Lamé at most (asserted 5e-5).
+TEST_F(MortarContact, MatchingMeshesGiveNodeToNode) {
+  PressureMap by_type[2];
+  const ContactPair::Type types[2] = {ContactPair::Type::Mortar, ContactPair::Type::NodeToSurface};
+  for (int t = 0; t < 2; ++t) {
+    const Model model = cylinders(4, 4, "C3D21", types[t]);
+    const Results results =
+        run_static_analysis(model, registry(), SolveOptions{}, nullptr, nullptr);
+    for (const ContactNodeResult& c : results.increments.back().contact) {
+      const Vec3& x = model.coords[c.node];
+      by_type[t][{std::lround(std::atan2(x[1], x[0]) * 180.0 / kPi * 1e4),
+                  std::lround(x[2] * 1e4)}] = c.pressure;
+    }
+  }
+  ASSERT_EQ(by_type[0].size(), 27u);
+  ASSERT_EQ(by_type[1].size(), 27u);
+  const double difference = largest_difference(by_type[0], by_type[1]);
+  EXPECT_LT(difference, 5e-5);
+  ::testing::Test::RecordProperty("mortar_versus_node_to_node", sci(difference));
+}
+
+// The deck Styk writes for a mortar pair says TYPE=MORTAR and runs in CalculiX 2.20 (which has its
+// own mortar contact): no input error, the job finishes. The model is the SPEC §3.2.3 two
+// cantilevers (C3D8, 10 x 2 elements each, mu = 0.2: the builder's deck that CalculiX converges
+// on). On the non-matching flat patch CalculiX's mortar stops inside its solver (exit 255) while
+// the same deck with NODE TO SURFACE or SURFACE TO SURFACE finishes: a limit of CalculiX's mortar.
+TEST_F(MortarContact, WrittenDeckRunsInCalculix) {
+  ASSERT_TRUE(test::ccx_on_path()) << test::kCcxMissing;
+  Model model =
+      mesher::run_builder("two-cantilevers", {{"element", "C3D8"}, {"n", "10"}}, registry()).model;
+  ASSERT_EQ(model.contact_pairs.size(), 1u);
+  model.contact_pairs[0].type = ContactPair::Type::Mortar;
+  const std::filesystem::path dir = test::test_scratch_dir("mortar_ccx");
+  {
+    std::ofstream out(dir / "patch.inp");
+    write_inp(model, out);
+  }
+  std::ifstream written(dir / "patch.inp");
+  std::stringstream text;
+  text << written.rdbuf();
+  EXPECT_NE(text.str().find("TYPE=MORTAR"), std::string::npos);
+  const test::CcxRun run = test::run_ccx(dir, "patch", 300);
+  EXPECT_EQ(run.exit_code, 0) << run.log.substr(0, 3000);
+  EXPECT_EQ(run.log.find("*ERROR"), std::string::npos) << run.log.substr(0, 3000);
+  EXPECT_NE(run.log.find("Job finished"), std::string::npos)
+      << run.log.substr(run.log.size() > 3000 ? run.log.size() - 3000 : 0);
+}
+
+}  // namespace
+}  // namespace styk
