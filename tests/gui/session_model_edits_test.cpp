@@ -138,6 +138,22 @@ TEST_F(ModelEditTest, EditContactPairRoughWithInterference) {
   EXPECT_EQ(model.surface_interactions.count("GRIP"), 0u);
 }
 
+// The pair's type (docs/input.md *CONTACT PAIR, TYPE=) survives an edit of its friction, MORTAR
+// included; a node slave cannot be mortar.
+TEST_F(ModelEditTest, EditContactPairKeepsItsType) {
+  ContactInput mortar = fit();
+  mortar.type = ContactPair::Type::Mortar;
+  apply(contact_command(model, mortar));
+  ContactInput in = contact_input_of(model, 0);
+  EXPECT_EQ(in.type, ContactPair::Type::Mortar);
+  in.mu = 0.3;
+  apply(contact_command(model, in, 0));
+  EXPECT_EQ(model.contact_pairs[0].type, ContactPair::Type::Mortar);
+  in.type = ContactPair::Type::SurfaceToSurface;
+  apply(contact_command(model, in, 0));
+  EXPECT_EQ(model.contact_pairs[0].type, ContactPair::Type::SurfaceToSurface);
+}
+
 // SPEC §4.2 heating: alpha = 2e-5 on the material, shaft at 0 initially and 100 in step 1.
 TEST_F(ModelEditTest, ThermalLoads) {
   EXPECT_DOUBLE_EQ(*model.materials[0].expansion, 2e-5);

@@ -20,8 +20,9 @@ Checked check_contact(const Model& model, const ContactInput& in, int replacing)
            "; self-contact is not supported");
   if (master.kind != Surface::Kind::ElementFaces)
     refuse("the master " + master.name + " must be a surface of element faces");
-  if (in.surface_to_surface && slave.kind != Surface::Kind::ElementFaces)
-    refuse("surface to surface needs element faces on the slave " + slave.name + " too");
+  if (in.type != ContactPair::Type::NodeToSurface && slave.kind != Surface::Kind::ElementFaces)
+    refuse(std::string(in.type == ContactPair::Type::Mortar ? "mortar" : "surface to surface") +
+           " needs element faces on the slave " + slave.name + " too");
   check_name(in.interaction, "the interaction");
   const std::string name = to_upper(in.interaction);
   const std::string own =
@@ -63,8 +64,7 @@ Checked check_contact(const Model& model, const ContactInput& in, int replacing)
   } else if (kind != "FRICTIONLESS") {
     refuse("friction must be frictionless, isotropic, anisotropic or rough, not " + in.friction);
   }
-  out.pair.type = in.surface_to_surface ? ContactPair::Type::SurfaceToSurface
-                                        : ContactPair::Type::NodeToSurface;
+  out.pair.type = in.type;
   out.pair.slave = slave.name;
   out.pair.master = master.name;
   out.pair.interaction = name;
@@ -121,7 +121,7 @@ ContactInput contact_input_of(const Model& model, int pair) {
   in.slave = p.slave;
   in.master = p.master;
   in.interaction = p.interaction;
-  in.surface_to_surface = p.type == ContactPair::Type::SurfaceToSurface;
+  in.type = p.type;
   in.has_clearance = p.clearance.has_value();
   in.clearance = p.clearance.value_or(0.0);
   in.friction = "frictionless";

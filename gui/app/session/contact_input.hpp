@@ -21,7 +21,8 @@ struct ContactInput {
   double mu = 0.2;
   double mu2 = 0.0;
   std::string orientation;  // anisotropic: an *ORIENTATION of the model
-  bool surface_to_surface = false;
+  // NODE TO SURFACE, SURFACE TO SURFACE or MORTAR (the last two need element faces on the slave).
+  ContactPair::Type type = ContactPair::Type::NodeToSurface;
   bool has_clearance = false;
   double clearance = 0.0;  // > 0 open gap, < 0 interference (replaces the geometric gap)
 };

@@ -75,8 +75,10 @@ FormDialog* make_contact_dialog(Document& doc, QWidget* parent, int pair) {
   QStringList orientations{"(none)"};
   for (const auto& [name, o] : m.orientations) orientations << q(name);
   d->add_choice("orientation", "Orientation (anisotropic)", orientations, q(in.orientation));
-  d->add_choice("type", "Type", {"node to surface", "surface to surface"},
-                in.surface_to_surface ? "surface to surface" : "node to surface");
+  d->add_choice("type", "Type", {"node to surface", "surface to surface", "mortar"},
+                in.type == ContactPair::Type::Mortar             ? "mortar"
+                : in.type == ContactPair::Type::SurfaceToSurface ? "surface to surface"
+                                                                 : "node to surface");
   d->add_check("has_clearance", "Clearance (replaces the geometric gap)", in.has_clearance);
   d->add_text("clearance", "Clearance (< 0: interference)", QString::number(in.clearance));
   d->set_accept([&doc, pair](const FormDialog& f) {
@@ -88,7 +90,10 @@ FormDialog* make_contact_dialog(Document& doc, QWidget* parent, int pair) {
     c.mu = f.real("mu", "mu");
     c.mu2 = f.real("mu2", "mu2");
     c.orientation = f.text("orientation") == "(none)" ? std::string() : f.text("orientation");
-    c.surface_to_surface = f.text("type") == "surface to surface";
+    const std::string type = f.text("type");
+    c.type = type == "mortar"               ? ContactPair::Type::Mortar
+             : type == "surface to surface" ? ContactPair::Type::SurfaceToSurface
+                                            : ContactPair::Type::NodeToSurface;
     c.has_clearance = f.checked("has_clearance");
     if (c.has_clearance) c.clearance = f.real("clearance", "Clearance");
     doc.apply(contact_command(doc.model(), c, pair));
