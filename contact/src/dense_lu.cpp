@@ -15,10 +15,28 @@ void dgecon_(const char* norm, const int* n, const double* a, const int* lda, co
 
 namespace styk::contact_detail {
 
-DenseLu::DenseLu(Eigen::MatrixXd A) : lu_(std::move(A)) {
+namespace {
+
+// ||M||_1 (largest column sum) and ||M||_inf (largest row sum) of a column-major matrix, each in
+// one contiguous sweep.
+double largest_column_sum(const Eigen::MatrixXd& M) {
+  return M.size() > 0 ? M.cwiseAbs().colwise().sum().maxCoeff() : 0.0;
+}
+double largest_row_sum(const Eigen::MatrixXd& M) {
+  if (M.size() == 0) return 0.0;
+  Eigen::VectorXd sums = Eigen::VectorXd::Zero(M.rows());
+  for (Eigen::Index c = 0; c < M.cols(); ++c) sums += M.col(c).cwiseAbs();
+  return sums.maxCoeff();
+}
+
+}  // namespace
+
+DenseLu::DenseLu(Eigen::MatrixXd A, Storage storage)
+    : lu_(std::move(A)), transposed_(storage == Storage::transposed) {
   if (lu_.rows() != lu_.cols()) throw std::invalid_argument("DenseLu: the matrix is not square");
   const int n = static_cast<int>(lu_.rows());
-  norm1_ = n > 0 ? lu_.cwiseAbs().colwise().sum().maxCoeff() : 0.0;
+  // ||A||_1 is ||A^T||_inf.
+  norm1_ = transposed_ ? largest_row_sum(lu_) : largest_column_sum(lu_);
   pivots_.resize(static_cast<std::size_t>(n));
   if (n > 0) dgetrf_(&n, &n, lu_.data(), &n, pivots_.data(), &info_);
 }
@@ -31,7 +49,8 @@ double DenseLu::rcond() const {
   std::vector<double> work(4 * static_cast<std::size_t>(n));
   std::vector<int> iwork(static_cast<std::size_t>(n));
   int info = 0;
-  const char norm = '1';
+  // The 1-norm condition of A is the infinity-norm condition of A^T.
+  const char norm = transposed_ ? 'I' : '1';
   dgecon_(&norm, &n, lu_.data(), &n, &norm1_, &rcond, work.data(), iwork.data(), &info, 1);
   return info == 0 ? rcond : 0.0;
 }
@@ -42,7 +61,7 @@ Eigen::VectorXd DenseLu::solve(const Eigen::VectorXd& b) const {
   if (n == 0) return x;
   const int nrhs = 1;
   int info = 0;
-  const char trans = 'N';
+  const char trans = transposed_ ? 'T' : 'N';
   dgetrs_(&trans, &n, &nrhs, lu_.data(), &n, pivots_.data(), x.data(), &n, &info, 1);
   if (info != 0) throw std::logic_error("DenseLu: dgetrs rejected its arguments");
   return x;
@@ -53,9 +72,10 @@ bool DenseLu::refine(const Eigen::MatrixXd& A, const Eigen::VectorXd& b, Eigen::
   steps = 0;
   if (!factorised() || A.rows() != lu_.rows() || A.cols() != lu_.cols() || b.size() != A.rows())
     return false;
+  // ||A||_inf: the row sums of A, the column sums of a stored A^T.
   const double tolerance = std::sqrt(static_cast<double>(A.rows())) *
                            std::numeric_limits<double>::epsilon() *
-                           A.cwiseAbs().rowwise().sum().maxCoeff();
+                           (transposed_ ? largest_column_sum(A) : largest_row_sum(A));
   // Refined while the residual still falls (to the floor of a residual computed in double), as a
   // direct solve's backward error is usually well below the test's bound: the contact iteration's
   // complementarity tolerance needs that accuracy, not just the bound.
@@ -65,7 +85,10 @@ bool DenseLu::refine(const Eigen::MatrixXd& A, const Eigen::VectorXd& b, Eigen::
   for (;; ++steps) {
     if (!x.allFinite()) return false;
     Eigen::VectorXd r = b;
-    r.noalias() -= A * x;
+    if (transposed_)
+      r.noalias() -= A.transpose() * x;
+    else
+      r.noalias() -= A * x;
     const double residual = r.cwiseAbs().maxCoeff();
     if (!(residual < 0.9 * last)) return reached;
     reached = residual <= tolerance * x.cwiseAbs().maxCoeff();

@@ -12,8 +12,13 @@ namespace styk::contact_detail {
 
 class DenseLu {
  public:
-  // Factorises A (square); check factorised() before solving.
-  explicit DenseLu(Eigen::MatrixXd A);
+  // How the matrix is handed over: A itself, or its transpose (a system assembled row by row of A
+  // is contiguous in column-major storage as A^T; LAPACK then factorises A^T and solves with
+  // TRANS = 'T', the same arithmetic).
+  enum class Storage { plain, transposed };
+
+  // Factorises A (square), given as `storage` says; check factorised() before solving.
+  explicit DenseLu(Eigen::MatrixXd A, Storage storage = Storage::plain);
 
   // False when a pivot is exactly zero.
   bool factorised() const { return info_ == 0; }
@@ -26,12 +31,14 @@ class DenseLu {
   // x += LU^-1 (b - A x), while each step at least halves the residual (up to `max_steps`). True
   // when the residual it stops at is within a direct solve's backward error,
   // ||b - A x||_inf <= sqrt(n) eps ||A||_inf ||x||_inf (LAPACK dsgesv's test); false otherwise (x
-  // is then meaningless and A wants a factorisation of its own). `steps`: the steps taken.
+  // is then meaningless and A wants a factorisation of its own). `steps`: the steps taken. A is
+  // given in this factor's storage (A^T for Storage::transposed).
   bool refine(const Eigen::MatrixXd& A, const Eigen::VectorXd& b, Eigen::VectorXd& x, int max_steps,
               int& steps) const;
 
  private:
-  Eigen::MatrixXd lu_;
+  Eigen::MatrixXd lu_;  // the LU of the stored matrix (A or A^T)
+  bool transposed_ = false;
   std::vector<int> pivots_;
   double norm1_ = 0.0;  // 1-norm of A before factorisation
   int info_ = 0;
