@@ -253,6 +253,37 @@ TEST(MpiSolve, TwoRanksGiveTheSerialContactStateAndAnswer) {
   }
 }
 
+// The same with cyclic symmetry (the contact rows through the *EQUATION reduction) and a
+// prescribed rotation over two steps: the SPEC 4.2 model B sector sample, turned to full slip.
+TEST(MpiSolve, TwoRanksGiveTheSerialContactStateOfACyclicSector) {
+  const fs::path dir = test::test_scratch_dir("mpi_contact_sector");
+  const std::string deck = "spec-4.2-shrink-fit-B-sector-c3d21-rotation";
+  fs::copy_file(std::string(STYK_SOURCE_DIR) + "/samples/" + deck + ".inp", dir / (deck + ".inp"),
+                fs::copy_options::overwrite_existing);
+  const Solved serial = solve(dir, deck + ".inp", "", "serial");
+  const Solved ranks = solve(dir, deck + ".inp", "--ranks 2", "ranks2");
+  ASSERT_EQ(serial.results.increments.size(), ranks.results.increments.size());
+  ASSERT_FALSE(serial.results.increments.empty());
+  int slipping = 0;
+  for (std::size_t k = 0; k < serial.results.increments.size(); ++k) {
+    const IncrementResult& a = serial.results.increments[k];
+    const IncrementResult& b = ranks.results.increments[k];
+    ASSERT_EQ(a.contact.size(), b.contact.size());
+    std::vector<double> shear_a, shear_b;
+    for (std::size_t j = 0; j < a.contact.size(); ++j) {
+      EXPECT_EQ(a.contact[j].status, b.contact[j].status) << "increment " << k << " node " << j;
+      slipping += a.contact[j].status == ContactStatus::Slip ? 1 : 0;
+      for (int c = 0; c < 2; ++c) {
+        shear_a.push_back(a.contact[j].shear[c]);
+        shear_b.push_back(b.contact[j].shear[c]);
+      }
+    }
+    EXPECT_LT(relative_difference(shear_a, shear_b), 1e-8) << "increment " << k;
+    EXPECT_LT(relative_difference(a.U, b.U), 1e-8) << "increment " << k;
+  }
+  EXPECT_GT(slipping, 0);  // the rotation reaches full slip
+}
+
 TEST(MpiSolve, MissingRunnerIsAClearErrorAndWritesNothing) {
   const fs::path dir = test::test_scratch_dir("mpi");
   write_text(dir / "beam.inp", thermal_equation_deck());
