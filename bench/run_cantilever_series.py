@@ -57,7 +57,7 @@ def mean_tip_uz(dat_path):
 
 def styk_phases(stderr_text):
     phases = {}
-    for name, seconds in re.findall(r"styk: (\w+) done in ([0-9.]+) s", stderr_text):
+    for name, seconds in re.findall(r"styk: (\w[\w ]*?) done in ([0-9.]+) s", stderr_text):
         phases[name] = phases.get(name, 0.0) + float(seconds)
     return phases
 

@@ -20,6 +20,9 @@ import subprocess
 import sys
 import time
 
+sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), ".."))
+from run_cantilever_series import styk_phases  # noqa: E402
+
 CAPACITY_NM = 571.35  # all-slip capacity of the builder's model B (bench/contact/README.md)
 TORQUE2_NM = 850.0  # the builder's TORQUE2 step
 
@@ -53,9 +56,7 @@ def run(styk, deck, work):
                           stderr=subprocess.PIPE, stdout=subprocess.DEVNULL, text=True)
     wall = time.monotonic() - start
     log = proc.stderr
-    phases = {}
-    for name, seconds in re.findall(r"styk: (.+?) done in ([0-9.]+) s", log):
-        phases[name] = phases.get(name, 0.0) + float(seconds)
+    phases = styk_phases(log)
     converged = re.findall(r"converged in (\d+) iterations", log)
     return {
         "exit": proc.returncode,

@@ -58,8 +58,7 @@ struct LinearisedFactor {
   // near the tolerance the refined solve's backward error (within sqrt(n) eps of a direct one,
   // not equal to it) can be what stalls the iteration, so the next solve factorises.
   bool refine_next = true;
-  int reused = 0;      // solves served by an older factor
-  int factorised = 0;  // factorisations kept for reuse
+  int reused = 0;  // solves served by an older factor
 };
 
 // Solves the linearised conditions of `status` at `at` (slip rows with the proximal weight, see

@@ -121,7 +121,6 @@ bool solve_equilibrated(LinearisedSystem& system, const ActiveSetOptions& option
   if (reusable) {
     factor->lu = std::move(lu);
     factor->unknowns = system.unknowns;
-    ++factor->factorised;
   }
   return x.allFinite();
 }

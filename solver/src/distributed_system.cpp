@@ -124,6 +124,24 @@ void report_rank_shares(const RankRows& rows, int contributed, double seconds,
         format("its elements gave %.0f rows, added in %.2f s", all[3 * r + 1], all[3 * r + 2]));
 }
 
+// The distributed vector x on every rank: scattered into `all` (the whole solution) and copied
+// into u by active dof (u: the active dofs; prescribed dofs are left to the caller).
+void gather_to_every_rank(VecScatter to_all, Vec all, const RankRows& rows, Vec x, double* u,
+                          std::size_t dofs) {
+  petsc_check(VecScatterBegin(to_all, x, all, INSERT_VALUES, SCATTER_FORWARD), "VecScatterBegin");
+  petsc_check(VecScatterEnd(to_all, x, all, INSERT_VALUES, SCATTER_FORWARD), "VecScatterEnd");
+  const PetscScalar* values = nullptr;
+  petsc_check(VecGetArrayRead(all, &values), "VecGetArrayRead");
+  for (std::size_t row = 0; row < dofs; ++row) u[rows.dof(static_cast<int>(row))] = values[row];
+  VecRestoreArrayRead(all, &values);
+}
+
+InputError singular_matrix(const DistributedSettings& settings) {
+  return InputError(settings.where, "the " + settings.what +
+                                        " matrix is singular (MUMPS): the model is a mechanism or "
+                                        "an element is degenerate");
+}
+
 }  // namespace
 
 DistributedSystem::DistributedSystem(const RankRows& rows, const CsrView& K,
@@ -272,10 +290,7 @@ std::vector<double> DistributedSystem::solve(const std::vector<double>& f,
     KSPGetIterationNumber(petsc_->ksp, &its);
     iterations_ = settings_.direct ? 0 : static_cast<int>(its);
     if (code != 0 || reason < 0) {
-      if (settings_.direct)
-        throw InputError(settings_.where, "the " + settings_.what +
-                                              " matrix is singular (MUMPS): the model is a "
-                                              "mechanism or an element is degenerate");
+      if (settings_.direct) throw singular_matrix(settings_);
       throw NotConvergedError(
           format("the iterative solver (CG + GAMG, distributed) did not converge: %.0f iterations "
                  "(PETSc reason %.0f)",
@@ -298,16 +313,8 @@ std::vector<double> DistributedSystem::solve(const std::vector<double>& f,
       phases_.info(format("CG + GAMG: %.0f iterations in %.2f s, relative residual %.2g",
                           static_cast<double>(its), seconds_since(start), relative));
   }
-  petsc_check(VecScatterBegin(petsc_->to_all, x, petsc_->all, INSERT_VALUES, SCATTER_FORWARD),
-              "VecScatterBegin");
-  petsc_check(VecScatterEnd(petsc_->to_all, x, petsc_->all, INSERT_VALUES, SCATTER_FORWARD),
-              "VecScatterEnd");
-  const PetscScalar* values = nullptr;
-  petsc_check(VecGetArrayRead(petsc_->all, &values), "VecGetArrayRead");
   std::vector<double> u(f.size());
-  for (std::size_t row = 0; row < f.size(); ++row)
-    u[rows_.dof(static_cast<int>(row))] = values[row];
-  VecRestoreArrayRead(petsc_->all, &values);
+  gather_to_every_rank(petsc_->to_all, petsc_->all, rows_, x, u.data(), u.size());
   for (int dof : partition_.prescribed) u[dof] = prescribed_value[dof];
   return u;
 }
@@ -342,25 +349,15 @@ std::vector<double> DistributedSystem::solve_homogeneous(const std::vector<doubl
   if (code != 0) {
     MatDestroy(&Y);
     MatDestroy(&B);
-    throw InputError(settings_.where, "the " + settings_.what +
-                                          " matrix is singular (MUMPS): the model is a mechanism "
-                                          "or an element is degenerate");
+    throw singular_matrix(settings_);
   }
   // Every rank gets every column: scattered column by column as solve() scatters x.
   for (int j = 0; j < columns; ++j) {
     Vec y = nullptr;
-    petsc_check(MatDenseGetColumnVecRead(Y, j, &y), "MatDenseGetColumnVecRead");
-    petsc_check(VecScatterBegin(petsc_->to_all, y, petsc_->all, INSERT_VALUES, SCATTER_FORWARD),
-                "VecScatterBegin");
-    petsc_check(VecScatterEnd(petsc_->to_all, y, petsc_->all, INSERT_VALUES, SCATTER_FORWARD),
-                "VecScatterEnd");
-    petsc_check(MatDenseRestoreColumnVecRead(Y, j, &y), "MatDenseRestoreColumnVecRead");
-    const PetscScalar* values = nullptr;
-    petsc_check(VecGetArrayRead(petsc_->all, &values), "VecGetArrayRead");
     double* column = X.data() + static_cast<std::size_t>(j) * n;
-    for (std::size_t row = 0; row < n; ++row)
-      column[rows_.dof(static_cast<int>(row))] = values[row];
-    VecRestoreArrayRead(petsc_->all, &values);
+    petsc_check(MatDenseGetColumnVecRead(Y, j, &y), "MatDenseGetColumnVecRead");
+    gather_to_every_rank(petsc_->to_all, petsc_->all, rows_, y, column, n);
+    petsc_check(MatDenseRestoreColumnVecRead(Y, j, &y), "MatDenseRestoreColumnVecRead");
     for (int dof : partition_.prescribed) column[dof] = 0.0;
   }
   MatDestroy(&Y);
