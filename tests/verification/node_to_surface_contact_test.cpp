@@ -184,40 +184,12 @@ TEST_F(NodeToSurfaceContact, C3D20SlaveOpensItsCornerNodes) {
 }
 
 // ---------------------------------------------------------------------------------------------
-// SPEC §3.2.2 concentric cylinders (plane strain, length 1): inner r 1-2 (E = 10, nu = 0.3),
-// outer r 2-3 (E = 20, nu = 0.2), internal pressure 5, external 3; quarter model, 3 radial x
-// `around` x 1 axial C3D20 per cylinder. Slave: the outer cylinder's bore (C3D21 layer, so every
-// nodal area is positive); master: the inner cylinder's C3D20 outer face. Nodes coincide only at
-// the angles both divisions share (0, 22.5°, 45°, ...): the rest pair node-to-surface.
+// SPEC §3.2.2 concentric cylinders on non-matching meshes (contact_spec_models.hpp): a C3D21
+// slave layer (every nodal area positive), node to surface. Nodes coincide only at the angles both
+// divisions share (0, 22.5°, 45°, ...): the rest pair node-to-surface.
 Model cylinders(int inner_around, int outer_around) {
-  mesher::Mesh mesh;
-  auto ring = [&](double r0, double r1, int around, const std::string& elset) {
-    const mesher::PatchMap profile =
-        mesher::quad_map({{r0, 0, 0}, {r0, 0, 1}, {r1, 0, 1}, {r1, 0, 0}});
-    mesher::BlockSpec spec;
-    spec.type = "C3D20";
-    spec.divisions = {1, 3, around};
-    spec.elset = elset;
-    return mesher::mesh_block(mesh, mesher::revolve(profile, {0, 0, 0}, {0, 0, 1}, 0.0, kPi / 2),
-                              spec);
-  };
-  const mesher::Block inner = ring(1.0, 2.0, inner_around, "INNER");
-  const mesher::Block outer = ring(2.0, 3.0, outer_around, "OUTER");
-  mesh.add_to_surface("INNER_OUT", inner.side_faces(1, 1));
-  mesh.add_to_surface("OUTER_IN", outer.side_faces(1, -1));
-  mesh.add_to_surface("P_IN", inner.side_faces(1, -1));
-  mesh.add_to_surface("P_OUT", outer.side_faces(1, 1));
-  mesher::convert_elements(mesh, test::shared_registry(), "C3D21", "OUTER_IN");
-  Model model = test::contact_model(mesh, {{"INNER", 10.0, 0.3}, {"OUTER", 20.0, 0.2}});
-  test::add_contact_pair(model, "OUTER_IN", "INNER_OUT", "SMOOTH", std::nullopt);
-  test::add_pressure(model, "P_IN", 5.0);
-  test::add_pressure(model, "P_OUT", 3.0);
-  test::fix(model, test::nodes_where(model, [](const Vec3&) { return true; }), {3});
-  test::fix(model, test::nodes_where(model, [](const Vec3& x) { return std::abs(x[0]) < 1e-9; }),
-            {1});
-  test::fix(model, test::nodes_where(model, [](const Vec3& x) { return std::abs(x[1]) < 1e-9; }),
-            {2});
-  return model;
+  return test::nonmatching_cylinders_model(inner_around, outer_around, "C3D21", "SMOOTH",
+                                           ContactPair::Type::NodeToSurface);
 }
 
 // SPEC §3.2.2: Lamé contact pressure 3.294 (uniform), asserted within 2 % on the interface means:
