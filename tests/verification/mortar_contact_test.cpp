@@ -18,6 +18,7 @@
 #include <optional>
 #include <sstream>
 #include <string>
+#include <vector>
 
 #include <gtest/gtest.h>
 #include <Eigen/Core>
@@ -172,34 +173,37 @@ Spread expect_patch_test(const ElementRegistry& registry, const Side& slave, con
   return spread;
 }
 
+// The patch test on each (slave, master) pair; the worst deviation from 1 recorded per case.
+void expect_patch_tests(const ElementRegistry& registry,
+                        const std::vector<std::pair<Side, Side>>& cases) {
+  for (const auto& [slave, master] : cases) {
+    const Spread s = expect_patch_test(registry, slave, master);
+    ::testing::Test::RecordProperty("worst_" + slave.type + "_" + std::to_string(slave.divisions) +
+                                        "_on_" + master.type + "_" +
+                                        std::to_string(master.divisions),
+                                    sci(s.worst(1.0)));
+  }
+}
+
 // Linear faces: C3D8 both ways round, and linear triangles (C3D4) on the same non-matching
 // divisions. Measured worst deviation from 1: see docs/contact.md.
 TEST_F(MortarContact, FlatPatchTestOnLinearFaces) {
-  const std::pair<Side, Side> cases[] = {
-      {{"C3D8", 3}, {"C3D8", 4}}, {{"C3D8", 4}, {"C3D8", 3}}, {{"C3D4", 3}, {"C3D4", 4}}};
-  for (const auto& [slave, master] : cases) {
-    const Spread s = expect_patch_test(registry(), slave, master);
-    ::testing::Test::RecordProperty("worst_" + slave.type + "_" + std::to_string(slave.divisions) +
-                                        "_on_" + std::to_string(master.divisions),
-                                    sci(s.worst(1.0)));
-  }
+  expect_patch_tests(
+      registry(),
+      {{{"C3D8", 3}, {"C3D8", 4}}, {{"C3D8", 4}, {"C3D8", 3}}, {{"C3D4", 3}, {"C3D4", 4}}});
 }
 
 // Quadratic and cubic faces: the thesis' contact layers C3D21 (9-node face) and C3D28 (16-node
 // face) and C3D27 (9-node) as slaves on C3D20 (8-node) and C3D8 masters and the other way round
 // where the slave face allows dual multipliers.
 TEST_F(MortarContact, FlatPatchTestOnQuadraticFaces) {
-  const std::pair<Side, Side> cases[] = {{{"C3D21", 3}, {"C3D20", 4}}, {{"C3D21", 4}, {"C3D20", 3}},
-                                         {{"C3D28", 3}, {"C3D20", 4}}, {{"C3D28", 4}, {"C3D20", 3}},
-                                         {{"C3D27", 3}, {"C3D27", 4}}, {{"C3D8", 3}, {"C3D20", 4}},
-                                         {{"C3D21", 4}, {"C3D28", 3}}};
-  for (const auto& [slave, master] : cases) {
-    const Spread s = expect_patch_test(registry(), slave, master);
-    ::testing::Test::RecordProperty("worst_" + slave.type + "_" + std::to_string(slave.divisions) +
-                                        "_on_" + master.type + "_" +
-                                        std::to_string(master.divisions),
-                                    sci(s.worst(1.0)));
-  }
+  expect_patch_tests(registry(), {{{"C3D21", 3}, {"C3D20", 4}},
+                                  {{"C3D21", 4}, {"C3D20", 3}},
+                                  {{"C3D28", 3}, {"C3D20", 4}},
+                                  {{"C3D28", 4}, {"C3D20", 3}},
+                                  {{"C3D27", 3}, {"C3D27", 4}},
+                                  {{"C3D8", 3}, {"C3D20", 4}},
+                                  {{"C3D21", 4}, {"C3D28", 3}}});
 }
 
 // Serendipity slave faces (C3D20: 8 nodes, C3D10: 6-node triangles), whose corner integrals are
@@ -207,17 +211,10 @@ TEST_F(MortarContact, FlatPatchTestOnQuadraticFaces) {
 // integral positive; the mid-edge rows couple the edge's corners. Pressure 1 at every node, corners
 // included (node-to-surface opens them: node_to_surface_contact_test.cpp).
 TEST_F(MortarContact, FlatPatchTestOnSerendipitySlaveFaces) {
-  const std::pair<Side, Side> cases[] = {{{"C3D20", 3}, {"C3D8", 4}},
-                                         {{"C3D20", 3}, {"C3D20", 4}},
-                                         {{"C3D20", 4}, {"C3D20", 3}},
-                                         {{"C3D10", 3}, {"C3D4", 4}}};
-  for (const auto& [slave, master] : cases) {
-    const Spread s = expect_patch_test(registry(), slave, master);
-    ::testing::Test::RecordProperty("worst_" + slave.type + "_" + std::to_string(slave.divisions) +
-                                        "_on_" + master.type + "_" +
-                                        std::to_string(master.divisions),
-                                    sci(s.worst(1.0)));
-  }
+  expect_patch_tests(registry(), {{{"C3D20", 3}, {"C3D8", 4}},
+                                  {{"C3D20", 3}, {"C3D20", 4}},
+                                  {{"C3D20", 4}, {"C3D20", 3}},
+                                  {{"C3D10", 3}, {"C3D4", 4}}});
 }
 
 // A LINEAR penalty law (K = 100) on the pressed patch: pressure 1 and penetration 1 / K = 0.01 at
