@@ -33,6 +33,13 @@ LinearSolverKind parse_solver(const std::string& name) {
   throw InputError({}, "--solver must be auto, cholmod or iterative, not '" + name + "'");
 }
 
+ContactSolveKind parse_contact_solver(const std::string& name) {
+  if (name == "auto") return ContactSolveKind::Automatic;
+  if (name == "dense") return ContactSolveKind::Dense;
+  if (name == "sparse") return ContactSolveKind::Sparse;
+  throw InputError({}, "--contact-solver must be auto, dense or sparse, not '" + name + "'");
+}
+
 double seconds_since(std::chrono::steady_clock::time_point start) {
   return std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
 }
@@ -77,6 +84,7 @@ int solve_here(const SolveArgs& args, const MpiWorld& world) {
   options.distributed = world.size > 1;
   options.force = parse_solver(args.solver);
   options.memory_limit_gb = args.memory_limit_gb;
+  options.contact_solve = parse_contact_solver(args.contact_solver);
   AnalysisReport report;
   const Results results = run_static_analysis(model, registry, options, &progress, &report);
   if (world.rank != 0) return kOk;  // every rank holds the results; rank 0 writes them

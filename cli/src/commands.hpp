@@ -13,7 +13,8 @@ enum class ProgressFormat { Text, JsonLines };
 struct SolveArgs {
   std::string deck;
   std::string output_dir = ".";
-  std::string solver = "auto";  // auto | cholmod | iterative
+  std::string solver = "auto";          // auto | cholmod | iterative
+  std::string contact_solver = "auto";  // auto | dense | sparse
   int threads = 0;
   double memory_limit_gb = 0.0;  // 0: 80 % of the physical memory
   bool quiet = false;

@@ -37,6 +37,13 @@ int main(int argc, char** argv) {
                    "overrides *STATIC, SOLVER=")
       ->check(CLI::IsMember({"auto", "cholmod", "iterative"}));
   solve_cmd
+      ->add_option("--contact-solver", solve.contact_solver,
+                   "Contact iteration: auto, dense (the compliance over the contact rows; fastest "
+                   "while it fits), sparse (one sparse LU of K with the closed rows per "
+                   "iteration; for thousands of contact nodes); auto picks sparse when the dense "
+                   "compliance would pass a quarter of the memory limit")
+      ->check(CLI::IsMember({"auto", "dense", "sparse"}));
+  solve_cmd
       ->add_option("--threads", solve.threads, "Threads for assembly and recovery (0 = all cores)")
       ->check(CLI::NonNegativeNumber);
   solve_cmd

@@ -47,6 +47,10 @@ Loads loads_with_fluid(const LinearContactSystem& system, const std::vector<char
 Eigen::VectorXd displacements(const LinearContactSystem& system, const Loads& loads,
                               const Iterate& x);
 
+// S's diagonal block of constraint j and S v, from S or from the structure operator.
+Eigen::Matrix3d compliance_block(const LinearContactSystem& system, int j);
+Eigen::VectorXd compliance_times(const LinearContactSystem& system, const Eigen::VectorXd& v);
+
 // The factor of the last linearised system an increment solved, which the next iteration tries
 // first (ActiveSetOptions::reuse_factor_size): while the closed set keeps its unknowns and the
 // Newton steps shrink, the system changes little, and a few refinement steps with the old factor

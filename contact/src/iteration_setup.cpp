@@ -18,9 +18,9 @@ namespace {
 // complement of the row in the Gram matrix of the node's rows, S_kk + w^2 G_k G_k^T (the rigid
 // motions of bodies held by contact count as movement, weighted to S's scale), at most
 // `ratio` (ActiveSetOptions::dependent_row_ratio) of its diagonal.
-void drop_dependent_rows(const LinearContactSystem& system, int k, double max_diag, double g_max,
-                         double ratio, std::array<bool, 3>& live) {
-  Eigen::Matrix3d M = system.S.block<3, 3>(3 * k, 3 * k);
+void drop_dependent_rows(const LinearContactSystem& system, const Eigen::Matrix3d& block, int k,
+                         double max_diag, double g_max, double ratio, std::array<bool, 3>& live) {
+  Eigen::Matrix3d M = block;
   if (system.G.cols() > 0 && g_max > 0.0) {
     const Eigen::MatrixXd Gk = system.G.middleRows<3>(3 * k);
     M += (max_diag / (g_max * g_max)) * Gk * Gk.transpose();
@@ -55,8 +55,12 @@ Setup set_up(const std::vector<ContactConstraint>& constraints, const LinearCont
   s.live.resize(m);
   s.c_n.assign(m, 1.0);
   s.c_t.assign(m, 1.0);
+  std::vector<Eigen::Matrix3d> blocks(m);
   double max_diag = 0.0;
-  for (int i = 0; i < 3 * m; ++i) max_diag = std::max(max_diag, system.S(i, i));
+  for (int k = 0; k < m; ++k) {
+    blocks[k] = compliance_block(system, k);
+    max_diag = std::max(max_diag, blocks[k].diagonal().maxCoeff());
+  }
   if (!(max_diag > 0.0)) max_diag = 1.0;
   const double g_max = system.G.size() > 0 ? system.G.cwiseAbs().maxCoeff() : 0.0;
   for (int k = 0; k < m; ++k) {
@@ -65,22 +69,23 @@ Setup set_up(const std::vector<ContactConstraint>& constraints, const LinearCont
       const bool allowed = c == 0 || constraints[k].scale(c) > 0.0;
       // A component whose dofs are all prescribed moves nothing: its force goes to the reactions.
       const bool degenerate =
-          system.S(row, row) <= 1e-12 * max_diag &&
+          blocks[k](c, c) <= 1e-12 * max_diag &&
           (system.G.cols() == 0 || system.G.row(row).cwiseAbs().maxCoeff() <= 1e-12 * g_max);
       s.live[k][c] = allowed && !degenerate;
     }
-    drop_dependent_rows(system, k, max_diag, g_max, options.dependent_row_ratio, s.live[k]);
+    drop_dependent_rows(system, blocks[k], k, max_diag, g_max, options.dependent_row_ratio,
+                        s.live[k]);
     // A penalty spring is in series with the structure: c_n is the inverse of both compliances
     // (the spring's largest, so c_n e < 1 at every force, and b keeps the sign of lambda_n on a
     // closed node).
-    const double snn = system.S(3 * k, 3 * k);
+    const double snn = blocks[k](0, 0);
     s.c_n[k] = 1.0 / ((snn > 1e-12 * max_diag ? snn : max_diag) +
                       constraints[k].largest_spring_compliance());
     double stt = 0.0;
     int count = 0;
     for (int c = 1; c < 3; ++c)
       if (s.live[k][c]) {
-        stt += system.S(3 * k + c, 3 * k + c);
+        stt += blocks[k](c, c);
         ++count;
       }
     s.c_t[k] = count > 0 && stt > 1e-12 * max_diag ? count / stt : s.c_n[k];
@@ -113,21 +118,35 @@ LocalPoint point_of(const ContactConstraint& constraint, const Setup& setup, int
 
 Loads loads_with_fluid(const LinearContactSystem& system, const std::vector<char>& penetrated) {
   Loads out{system.d0, system.h};
+  Eigen::VectorXd fluid = Eigen::VectorXd::Zero(system.d0.size());
+  bool any = false;
   for (std::size_t j = 0; j < penetrated.size(); ++j) {
     if (!penetrated[j]) continue;
     const double f = system.fluid.force[j];
     const auto row = static_cast<Eigen::Index>(3 * j);
-    out.d0 -= f * system.S.col(row);
+    fluid[row] = f;
+    any = true;
     if (system.G.cols() > 0) out.h -= f * system.G.row(row).transpose();
   }
+  if (any) out.d0 -= compliance_times(system, fluid);
   return out;
 }
 
 Eigen::VectorXd displacements(const LinearContactSystem& system, const Loads& loads,
                               const Iterate& x) {
-  Eigen::VectorXd d = loads.d0 - system.S * x.lambda;
+  Eigen::VectorXd d = loads.d0 - compliance_times(system, x.lambda);
   if (system.G.cols() > 0) d += system.G * x.alpha;
   return d;
+}
+
+Eigen::Matrix3d compliance_block(const LinearContactSystem& system, int j) {
+  if (system.structure) return system.structure->block(j);
+  return system.S.block<3, 3>(3 * j, 3 * j);
+}
+
+Eigen::VectorXd compliance_times(const LinearContactSystem& system, const Eigen::VectorXd& v) {
+  if (system.structure) return system.structure->times(v);
+  return system.S * v;
 }
 
 }  // namespace styk::contact::active_set_detail

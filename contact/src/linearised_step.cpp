@@ -1,6 +1,7 @@
 // One Newton step of the active-set iteration: the linearised complementarity conditions of the
 // closed constraints under the current statuses, with the equilibrium of the bodies held only by
-// contact, assembled densely and solved by LU (dense_lu.hpp).
+// contact, assembled densely and solved by LU (dense_lu.hpp), or handed to the structure operator
+// when S is not held (structure_operator.hpp).
 #include <algorithm>
 #include <cmath>
 #include <memory>
@@ -31,23 +32,25 @@ std::vector<int> closed_unknowns(const Setup& setup, const std::vector<NodeStatu
   return unknowns;
 }
 
-// Per closed node the rows Q d + D lambda = r with d = d0 - S lambda + G alpha substituted, then
-// the rigid equilibrium G^T lambda = h. S is symmetric (exactly: ContactOperator::compliance
-// symmetrises it), so the node's rows of S restricted to the unknowns are read down its three
-// columns.
-LinearisedSystem assemble_rows(const std::vector<ContactConstraint>& constraints,
-                               const LinearContactSystem& system, const Loads& loads,
-                               const Setup& setup, const std::vector<NodeStatus>& status,
-                               const Iterate& at, const std::vector<ConstraintState>& previous,
-                               double eps, double proximal) {
+// Per closed node the rows Q d + D lambda = r of its statuses' linearisation (friction_law.hpp),
+// with d = d0 - S lambda + G alpha: what does not involve S (NewtonRows), shared by the dense
+// and the sparse solve.
+NewtonRows newton_rows(const std::vector<ContactConstraint>& constraints,
+                       const LinearContactSystem& system, const Loads& loads, const Setup& setup,
+                       const std::vector<NodeStatus>& status, const Iterate& at,
+                       const std::vector<ConstraintState>& previous, double eps, double proximal) {
   const int k = static_cast<int>(system.G.cols());
-  LinearisedSystem out;
+  NewtonRows out;
   out.unknowns = closed_unknowns(setup, status);
   const std::vector<int>& unknowns = out.unknowns;
   const int n = static_cast<int>(unknowns.size());
-  out.At = Eigen::MatrixXd::Zero(n + k, n + k);
-  out.rhs = Eigen::VectorXd::Zero(n + k);
-  Eigen::MatrixXd S_columns(n, 3);  // S(unknowns, node's three components)
+  out.q.resize(n);
+  out.coupling.resize(n);
+  out.rhs = Eigen::VectorXd::Zero(n);
+  out.qg = Eigen::MatrixXd::Zero(n, k);
+  out.g = Eigen::MatrixXd::Zero(n, k);
+  for (int r = 0; r < n && k > 0; ++r) out.g.row(r) = system.G.row(unknowns[r]);
+  out.h = loads.h;
   for (int i = 0; i < n;) {
     const int node = unknowns[i] / 3;
     int end = i;
@@ -55,26 +58,50 @@ LinearisedSystem assemble_rows(const std::vector<ContactConstraint>& constraints
     const LocalPoint p = point_of(constraints[node], setup, node, at.lambda.segment<3>(3 * node),
                                   at.d.segment<3>(3 * node), previous[node].d_ref, eps, proximal);
     const LocalRows rows = linearise(p, status[node]);
-    for (int m = 0; m < 3; ++m) {
-      const double* column = system.S.col(3 * node + m).data();
-      for (int j = 0; j < n; ++j) S_columns(j, m) = column[unknowns[j]];
-    }
-    const Eigen::MatrixXd QS_t = S_columns * rows.Q.transpose();  // (Q S_rows)^T
-    const Eigen::Vector3d Qd0 = rows.Q * loads.d0.segment<3>(3 * node);
-    Eigen::MatrixXd QG;
-    if (k > 0) QG = rows.Q * system.G.middleRows<3>(3 * node);
+    const Eigen::Vector3d d0 = loads.d0.segment<3>(3 * node);
     for (int r = i; r < end; ++r) {
       const int c = unknowns[r] % 3;
-      out.At.col(r).head(n) = -QS_t.col(c);
-      for (int q = i; q < end; ++q) out.At(q, r) += rows.D(c, unknowns[q] % 3);
-      if (k > 0) out.At.col(r).tail(k) = QG.row(c).transpose();
-      out.rhs[r] = rows.r[c] - Qd0[c];
+      out.q[r] = rows.Q.row(c).transpose();
+      for (int s = i; s < end; ++s) out.coupling[r].emplace_back(s, rows.D(c, unknowns[s] % 3));
+      out.rhs[r] = rows.r[c] - out.q[r].dot(d0);
+      if (k > 0) out.qg.row(r) = out.q[r].transpose() * system.G.middleRows<3>(3 * node);
     }
     i = end;
   }
+  return out;
+}
+
+// The dense system of `rows`: row r of A is -q[r] . S(node's rows, unknowns) + coupling + qg,
+// then the rigid equilibrium G^T lambda = h. S is symmetric (exactly: ContactOperator::compliance
+// symmetrises it), so the node's rows of S restricted to the unknowns are read down its three
+// columns.
+LinearisedSystem assemble_dense(const LinearContactSystem& system, const NewtonRows& rows) {
+  const int k = static_cast<int>(system.G.cols());
+  LinearisedSystem out;
+  out.unknowns = rows.unknowns;
+  const std::vector<int>& unknowns = out.unknowns;
+  const int n = static_cast<int>(unknowns.size());
+  out.At = Eigen::MatrixXd::Zero(n + k, n + k);
+  out.rhs = Eigen::VectorXd::Zero(n + k);
+  Eigen::MatrixXd S_columns(n, 3);  // S(unknowns, node's three components)
+  int loaded_node = -1;
+  for (int r = 0; r < n; ++r) {
+    const int node = unknowns[r] / 3;
+    if (node != loaded_node) {
+      for (int m = 0; m < 3; ++m) {
+        const double* column = system.S.col(3 * node + m).data();
+        for (int j = 0; j < n; ++j) S_columns(j, m) = column[unknowns[j]];
+      }
+      loaded_node = node;
+    }
+    out.At.col(r).head(n).noalias() = -S_columns * rows.q[r];
+    for (const auto& [s, v] : rows.coupling[r]) out.At(s, r) += v;
+    if (k > 0) out.At.col(r).tail(k) = rows.qg.row(r).transpose();
+    out.rhs[r] = rows.rhs[r];
+  }
   for (int a = 0; a < k; ++a) {
-    for (int j = 0; j < n; ++j) out.At(j, n + a) = system.G(unknowns[j], a);
-    out.rhs[n + a] = loads.h[a];
+    out.At.col(n + a).head(n) = rows.g.col(a);
+    out.rhs[n + a] = rows.h[a];
   }
   return out;
 }
@@ -134,17 +161,29 @@ bool solve_linearised(const std::vector<ContactConstraint>& constraints,
                       const ActiveSetOptions& options, LinearisedFactor* factor, Iterate& out) {
   const int m = static_cast<int>(constraints.size());
   const int k = static_cast<int>(system.G.cols());
-  LinearisedSystem linearised =
-      assemble_rows(constraints, system, loads, setup, status, at, previous, eps, proximal);
-  const int n = static_cast<int>(linearised.unknowns.size());
+  const NewtonRows rows =
+      newton_rows(constraints, system, loads, setup, status, at, previous, eps, proximal);
+  const int n = static_cast<int>(rows.unknowns.size());
   out.lambda = Eigen::VectorXd::Zero(3 * m);
   out.alpha = Eigen::VectorXd::Zero(k);
-  if (n + k > 0) {
-    Eigen::VectorXd x;
-    if (!solve_equilibrated(linearised, options, factor, x)) return false;
-    for (int j = 0; j < n; ++j) out.lambda[linearised.unknowns[j]] = x[j];
-    out.alpha = x.tail(k);
+  if (n + k == 0) {
+    out.d = displacements(system, loads, out);
+    return true;
   }
+  Eigen::VectorXd x;
+  if (system.structure) {
+    Eigen::VectorXd s_lambda;
+    if (!system.structure->solve(rows, x, s_lambda) || !x.allFinite()) return false;
+    for (int j = 0; j < n; ++j) out.lambda[rows.unknowns[j]] = x[j];
+    out.alpha = x.tail(k);
+    out.d = loads.d0 - s_lambda;
+    if (k > 0) out.d += system.G * out.alpha;
+    return true;
+  }
+  LinearisedSystem linearised = assemble_dense(system, rows);
+  if (!solve_equilibrated(linearised, options, factor, x)) return false;
+  for (int j = 0; j < n; ++j) out.lambda[rows.unknowns[j]] = x[j];
+  out.alpha = x.tail(k);
   out.d = displacements(system, loads, out);
   return true;
 }

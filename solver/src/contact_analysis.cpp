@@ -27,6 +27,7 @@
 #include "phase_recorder.hpp"
 #include "prepared_model.hpp"
 #include "recovery.hpp"
+#include "sparse_contact_structure.hpp"
 #include "step_conditions.hpp"
 #include "stiffness_matrix.hpp"
 #include "stress_averaging.hpp"
@@ -34,6 +35,7 @@
 #include "styk/contact/contact_results.hpp"
 #include "styk/contact/penalty_law.hpp"
 #include "styk/contact/penetration.hpp"
+#include "styk/core/machine_memory.hpp"
 #include "thermal_load.hpp"
 
 namespace styk::solver_detail {
@@ -71,6 +73,8 @@ struct ContactFactor {
   FloatingBodies floating;
   std::unique_ptr<LinearSolver> solver;
   Eigen::MatrixXd S, G;
+  // Instead of S when the contact layer is too large for it (SolveOptions::contact_solve).
+  std::shared_ptr<SparseContactStructure> structure;
 };
 
 // The loads of one step end (or start): mechanical forces on the nodal dofs (what reactions are
@@ -156,6 +160,7 @@ class ContactAnalysis {
         initial_temperature_(initial_node_temperatures(model)),
         context_{model, prepared_, phases_, threads_, options.memory_limit_gb},
         share_(rank_share(options)),
+        contact_solve_(options.contact_solve),
         B_(prepared_, constraints_),
         touches_contact_(contact_nodes(prepared_, constraints_)),
         penetration_(accumulate_penetrations(model)),
@@ -242,18 +247,43 @@ class ContactAnalysis {
     // same active-set iteration (the dense contact system is small beside K).
     factor_.solver = share_ ? make_distributed_solver(context_, share_->rows, true, 0.0)
                             : make_cholmod_solver(context_);
-    factor_.solver->prepare(K_, partition_dofs(prepared_.active_dofs(), pinned));
+    const DofPartition partition = partition_dofs(prepared_.active_dofs(), pinned);
+    factor_.structure.reset();
+    factor_.S.resize(0, 0);
+    if (sparse_contact_solve())  // K's values are read before the factor may release them
+      factor_.structure = std::make_shared<SparseContactStructure>(
+          K_, partition, B_.reduced_rows(prepared_.active_dofs(), kinematic_),
+          prepared_.active_dofs());
+    factor_.solver->prepare(K_, partition);
     {
       const PhaseRecorder::Scope phase(phases_, "contact compliance");
-      factor_.S = B_.compliance(*factor_.solver, prepared_.active_dofs(), kinematic_);
+      if (factor_.structure)
+        factor_.structure->attach(*factor_.solver);
+      else
+        factor_.S = B_.compliance(*factor_.solver, prepared_.active_dofs(), kinematic_);
       factor_.G = B_.apply_columns(factor_.floating.modes);
     }
     phases_.info("contact: " + std::to_string(factor_.floating.count()) +
                  " rigid motions held only by contact");
     if (report_ != nullptr && report_->linear_solver.empty()) {
-      report_->linear_solver = factor_.solver->description() + " + dense contact active set";
+      report_->linear_solver =
+          factor_.solver->description() +
+          (factor_.structure ? " + sparse contact solve (UMFPACK LU of K with the closed rows)"
+                             : " + dense contact active set");
       report_->dofs = prepared_.active_dofs() - static_cast<long long>(pinned.size());
     }
+  }
+
+  // Whether the contact iteration sees the structure through the sparse solve: when asked to,
+  // or when the dense compliance (3 m x 3 m doubles; the dense Newton system and its LU take up
+  // to twice that again) would pass a quarter of the memory limit. Distributed runs hold S.
+  bool sparse_contact_solve() const {
+    if (share_ || contact_solve_ == ContactSolveKind::Dense) return false;
+    if (contact_solve_ == ContactSolveKind::Sparse) return true;
+    const double rows = 3.0 * static_cast<double>(constraints_.size());
+    const double limit = context_.memory_limit_gb > 0.0 ? context_.memory_limit_gb * 1e9
+                                                        : 0.8 * physical_memory_bytes();
+    return 8.0 * rows * rows > 0.25 * limit;
   }
 
   // The structure's displacement (global) and the contact-row images d = B u of a step end's
@@ -318,6 +348,7 @@ class ContactAnalysis {
     const StepRamp ramp = step_ramp(k, states, prescribed);
     contact::LinearContactSystem system;
     system.S = factor_.S;
+    system.structure = factor_.structure;
     system.G = factor_.G;
     // Per zone: the fluid pressure of the last converged increment (the step's start value first).
     fluid_before_ = penetration_[k].start;
@@ -346,6 +377,11 @@ class ContactAnalysis {
       report_increment(where, outcome, ramp, fluid_pressures, increment);
       results_.increments.push_back(std::move(increment));
     }
+    if (factor_.structure)
+      phases_.info("contact step " + std::to_string(k + 1) + ": sparse contact solve, " +
+                   std::to_string(factor_.structure->factorisations()) +
+                   " LU factorisations so far, " + std::to_string(factor_.structure->reused()) +
+                   " Newton steps solved by refinement with an earlier factor");
     total_time_ += model_.steps[k].procedure.total_time;
     previous_ = ramp.end;
   }
@@ -493,6 +529,7 @@ class ContactAnalysis {
   std::optional<ElementStates> stiffness_states_;      // the material state K holds
   const SolverContext context_;
   const std::optional<RankShare> share_;  // a distributed run: this rank's rows and elements
+  const ContactSolveKind contact_solve_;
   const ContactOperator B_;
   const std::vector<char> touches_contact_;
   const std::vector<StepPenetration> penetration_;

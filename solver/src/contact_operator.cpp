@@ -54,26 +54,8 @@ void ContactOperator::add_transpose(const Eigen::VectorXd& lambda, double factor
     for (int p = ptr_[i]; p < ptr_[i + 1]; ++p) f[dof_[p]] += factor * value_[p] * lambda[i];
 }
 
-namespace {
-
-// The columns B^T e_i of the used rows as sparse right-hand sides of the reduced nodal system
-// (turned to the nodal systems, R^T, and reduced by the equations, P^T: a dependent dof's entry
-// moves to its masters), and the reduced dofs whose solution the contact rows need: the nodal
-// dofs of the contact nodes, or the masters of those that are dependent.
-struct ReducedColumns {
-  std::vector<LinearSolver::SparseColumn> F;
-  std::vector<int> wanted;  // reduced nodal dofs
-  std::vector<int> local;   // per active dof: index into wanted, -1
-};
-
-}  // namespace
-
-Eigen::MatrixXd ContactOperator::compliance(LinearSolver& solver, int active_dofs,
-                                            const ModelConstraints& kinematic, int block) const {
-  std::vector<int> columns;
-  for (int i = 0; i < rows(); ++i)
-    if (row_used(i)) columns.push_back(i);
-  Eigen::MatrixXd S = Eigen::MatrixXd::Zero(rows(), rows());
+ContactOperator::ReducedRows ContactOperator::reduced_rows(
+    int active_dofs, const ModelConstraints& kinematic) const {
   // Per active dof: the reduced nodal dofs and coefficients it is made of (itself; a dependent
   // dof its masters' combination).
   std::vector<std::vector<std::pair<int, double>>> made_of(active_dofs);
@@ -93,35 +75,50 @@ Eigen::MatrixXd ContactOperator::compliance(LinearSolver& solver, int active_dof
     }
     return out;
   };
-  // B^T e_i in reduced nodal dofs (the transpose of the same map) and the wanted dofs.
-  ReducedColumns reduced;
-  reduced.local.assign(active_dofs, -1);
-  std::vector<std::vector<std::pair<int, double>>> row_terms(rows());
-  for (int i : columns) {
+  ReducedRows rows(this->rows());
+  for (int i = 0; i < this->rows(); ++i) {
+    if (!row_used(i)) continue;
     std::map<int, double> sum;
     for (int p = ptr_[i]; p < ptr_[i + 1]; ++p)
       for (const auto& [j, coefficient] : nodal_terms(dof_[p])) sum[j] += value_[p] * coefficient;
+    for (const auto& [j, v] : sum)
+      if (v != 0.0) rows[i].emplace_back(j, v);
+  }
+  return rows;
+}
+
+Eigen::MatrixXd ContactOperator::compliance(LinearSolver& solver, int active_dofs,
+                                            const ModelConstraints& kinematic, int block) const {
+  const ReducedRows row_terms = reduced_rows(active_dofs, kinematic);
+  std::vector<int> columns;
+  for (int i = 0; i < rows(); ++i)
+    if (row_used(i)) columns.push_back(i);
+  Eigen::MatrixXd S = Eigen::MatrixXd::Zero(rows(), rows());
+  // B^T e_i in reduced nodal dofs (the transpose of the same map) and the wanted dofs: the nodal
+  // dofs of the contact nodes, or the masters of those that are dependent.
+  std::vector<LinearSolver::SparseColumn> F;
+  std::vector<int> wanted;
+  std::vector<int> local(active_dofs, -1);  // per active dof: index into wanted
+  for (int i : columns) {
     LinearSolver::SparseColumn column;
-    for (const auto& [j, v] : sum) {
-      if (v == 0.0) continue;
+    for (const auto& [j, v] : row_terms[i]) {
       column.dof.push_back(j);
       column.value.push_back(v);
-      row_terms[i].emplace_back(j, v);
-      if (reduced.local[j] < 0) {
-        reduced.local[j] = static_cast<int>(reduced.wanted.size());
-        reduced.wanted.push_back(j);
+      if (local[j] < 0) {
+        local[j] = static_cast<int>(wanted.size());
+        wanted.push_back(j);
       }
     }
-    reduced.F.push_back(std::move(column));
+    F.push_back(std::move(column));
   }
   // S_ij = (B R P)_i x_j: row i's reduced terms dotted with the solution at the wanted dofs.
-  solver.solve_sparse_columns(reduced.F, reduced.wanted, active_dofs, block,
+  solver.solve_sparse_columns(F, wanted, active_dofs, block,
                               [&](const std::vector<int>& solved, const Eigen::MatrixXd& X) {
                                 for (std::size_t j = 0; j < solved.size(); ++j)
                                   for (int i : columns) {
                                     double sum = 0.0;
                                     for (const auto& [dof, v] : row_terms[i])
-                                      sum += v * X(reduced.local[dof], j);
+                                      sum += v * X(local[dof], j);
                                     S(i, columns[solved[j]]) = sum;
                                   }
                               });

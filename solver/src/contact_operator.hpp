@@ -4,6 +4,7 @@
 // rigid-mode coupling G = B R, and the images B u of displacement fields.
 #pragma once
 
+#include <utility>
 #include <vector>
 
 #include <Eigen/Core>
@@ -38,6 +39,11 @@ class ContactOperator {
   // solution is wanted at the reduced dofs the contact nodes are made of.
   Eigen::MatrixXd compliance(LinearSolver& solver, int active_dofs,
                              const ModelConstraints& kinematic, int block = 128) const;
+
+  // The rows of B R P (what `compliance` multiplies K^-1 by): per row, the reduced nodal dofs
+  // (active dof numbers of the reduced system) and coefficients; empty for unused rows.
+  using ReducedRows = std::vector<std::vector<std::pair<int, double>>>;
+  ReducedRows reduced_rows(int active_dofs, const ModelConstraints& kinematic) const;
 
  private:
   std::vector<int> ptr_;  // row i: entries ptr_[i] .. ptr_[i+1]

@@ -7,10 +7,12 @@
 //   G^T lambda = h                     (those bodies' equilibrium)
 // S = B K^-1 B^T is the contact compliance (K with the free rigid motions fixed), G = B R.
 // Each iteration solves the linearised complementarity conditions (friction_law.hpp) of the
-// current status set for (lambda, alpha) exactly (dense LU), so constraints hold to round-off.
+// current status set for (lambda, alpha) exactly (dense LU, or one sparse LU with K when S is too
+// large to hold: structure_operator.hpp), so constraints hold to round-off.
 #pragma once
 
 #include <functional>
+#include <memory>
 #include <string>
 #include <vector>
 
@@ -18,6 +20,7 @@
 
 #include "styk/contact/constraints.hpp"
 #include "styk/contact/friction_law.hpp"
+#include "styk/contact/structure_operator.hpp"
 
 namespace styk::contact {
 
@@ -36,8 +39,11 @@ struct FluidPenetration {
 };
 
 struct LinearContactSystem {
-  Eigen::VectorXd d0;      // 3 m
-  Eigen::MatrixXd S;       // 3 m x 3 m; columns of components that cannot carry force may be zero
+  Eigen::VectorXd d0;  // 3 m
+  Eigen::MatrixXd S;   // 3 m x 3 m; columns of components that cannot carry force may be zero
+  // Instead of S (then empty) for contact layers too large for it: S through the structure's
+  // sparse factorisation (structure_operator.hpp).
+  std::shared_ptr<StructureOperator> structure;
   Eigen::MatrixXd G;       // 3 m x k
   Eigen::VectorXd h;       // k
   FluidPenetration fluid;  // empty: no pressure penetration

@@ -29,6 +29,8 @@ class ProgressSink {
   virtual void warning(const std::string& message) { info("warning: " + message); }
 };
 
+enum class ContactSolveKind { Automatic, Dense, Sparse };
+
 struct SolveOptions {
   int threads = 0;  // worker threads for assembly and recovery; 0 = hardware_concurrency
   // Overrides *STATIC, SOLVER= of the deck unless Automatic.
@@ -47,6 +49,11 @@ struct SolveOptions {
   // one distributed linear solve (MUMPS where the serial rule picks CHOLMOD, CG + GAMG where it
   // picks GAMG); every rank ends with the whole results. docs/solver.md "Distributed runs".
   bool distributed = false;
+  // How the contact iteration sees the structure (docs/contact.md, "Sparse contact solve"):
+  // Dense holds the compliance S over the contact rows (fastest while it fits), Sparse solves
+  // each Newton step as one sparse LU of K with the closed rows, Automatic picks Sparse when S
+  // would take more than a quarter of the memory limit. Serial runs only (distributed: dense).
+  ContactSolveKind contact_solve = ContactSolveKind::Automatic;
 };
 
 struct AnalysisReport {
