@@ -124,7 +124,8 @@ Difference difference(const contact::ContactState& a, const contact::ContactStat
 // at a residual of 6.3e-11, the new path's at 8.3e-13), and the two paths converged that far agree
 // to 1e-9 (8.2e-11).
 TEST_F(IterationPath, TwoCantileversMu10SameSolutionInFewerIterations) {
-  const BeamSystem beams = beam_system(test::two_cantilevers_model(test::coulomb(10.0)), registry());
+  const BeamSystem beams =
+      beam_system(test::two_cantilevers_model(test::coulomb(10.0)), registry());
   contact::ActiveSetOptions before;
   before.front_kink_band = 0.0;
   before.anticipate_on_cone = false;
@@ -152,9 +153,10 @@ TEST_F(IterationPath, TwoCantileversMu10SameSolutionInFewerIterations) {
   const Difference old_error = difference(old_tight.state, old_path.state);
   const Difference new_error = difference(old_tight.state, new_path.state);
   const Difference tight = difference(old_tight.state, new_tight.state);
-  std::printf("multipliers: paths %.2e apart; from the 1e-13 solution old %.2e, new %.2e; "
-              "both paths at 1e-13 %.2e apart\n",
-              paths.lambda, old_error.lambda, new_error.lambda, tight.lambda);
+  std::printf(
+      "multipliers: paths %.2e apart; from the 1e-13 solution old %.2e, new %.2e; "
+      "both paths at 1e-13 %.2e apart\n",
+      paths.lambda, old_error.lambda, new_error.lambda, tight.lambda);
   EXPECT_EQ(paths.statuses, 0);
   EXPECT_EQ(tight.statuses, 0);
   EXPECT_LE(new_error.lambda, 1e-8);
