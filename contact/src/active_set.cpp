@@ -398,8 +398,9 @@ class IncrementIteration {
 
   // The nodes just sent ahead of the front are linearised for slip with their tangential
   // multipliers on the cone (ActiveSetOptions::anticipate_on_cone). Only the linearisation point
-  // moves: at_.d stays (their slip rows see the same displacements), and no other node's rows
-  // read these multipliers.
+  // moves: at_.d stays (every other node's rows see the same displacements), and the trial
+  // traction keeps its direction, so the check of bodies held by friction (body_hold.cpp) sees
+  // the same slip directions.
   void linearise_on_cone(const std::vector<int>& nodes) {
     for (int j : nodes) {
       const LocalPoint p = point_of(constraints_[j], setup_, j, at_.lambda.segment<3>(3 * j),
