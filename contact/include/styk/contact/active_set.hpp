@@ -105,7 +105,7 @@ struct ActiveSetOptions {
   // place, so the anticipation goes on (such a node counts as a moved front node, like a swap with
   // the node that takes its place) instead of stopping for the rest of the increment. 0: every
   // return stops it. Measured on the SPEC 3.2.3 beams at mu = 10 (every return there is within
-  // 0.4 % of the cone; 1e-2, 5e-3 and 3e-2 give the same path): 10 -> 9 iterations together with
+  // 0.4 % of the cone; 5e-3 and 3e-2 also give 9): 10 -> 9 iterations together with
   // anticipate_on_cone, 10 without it; the other bench/contact models unchanged.
   double front_kink_band = 1e-2;
   // A node sent to slip ahead of the front (still inside the cone) has its slip rows linearised
