@@ -61,20 +61,19 @@ double friction_ratio(const Setup& setup, const Eigen::VectorXd& lambda, int j) 
 
 // The stick/slip front moves a few nodes per iteration: a node that starts to slip sheds its
 // tangential force on its sticking neighbours, which leave the cone in the next iteration. While
-// the front only advances (sticking nodes turned to slip, none back), a sticking node whose ratio
-// |lambda_t| / lambda_n grew from `before` to `now` and would pass 1 after `lookahead` more such
-// steps is sent to slip at once. Returns the nodes switched.
+// the front advances (sticking nodes turned to slip; the only nodes back are the `returned` ones
+// at the kink), a sticking node whose ratio |lambda_t| / lambda_n grew from `before` to `now` and
+// would pass 1 after `lookahead` more such steps is sent to slip at once. Returns the nodes
+// switched.
 std::vector<int> anticipate_front(const std::vector<ContactConstraint>& constraints,
                                   const Setup& setup, const std::vector<NodeStatus>& solved,
                                   const Iterate& before, const Iterate& now, double lookahead,
-                                  std::vector<NodeStatus>& status) {
+                                  std::size_t returned, std::vector<NodeStatus>& status) {
   std::vector<int> switched;
   if (!(lookahead > 0.0)) return switched;
-  std::size_t advanced = 0;
-  for (std::size_t j = 0; j < status.size(); ++j) {
-    if (solved[j] == NodeStatus::Slip && status[j] == NodeStatus::Stick) return switched;
-    if (solved[j] == NodeStatus::Stick && status[j] == NodeStatus::Slip) ++advanced;
-  }
+  std::size_t moved = returned;
+  for (std::size_t j = 0; j < status.size(); ++j)
+    if (solved[j] == NodeStatus::Stick && status[j] == NodeStatus::Slip) ++moved;
   std::vector<std::pair<double, int>> candidates;  // (predicted ratio, node)
   for (std::size_t j = 0; j < status.size(); ++j) {
     if (solved[j] != NodeStatus::Stick || status[j] != NodeStatus::Stick) continue;
@@ -92,7 +91,7 @@ std::vector<int> anticipate_front(const std::vector<ContactConstraint>& constrai
   // ahead, the likeliest first (a global redistribution, as in a shrink fit's push, raises many
   // ratios at once and would otherwise send far too many).
   std::sort(candidates.begin(), candidates.end(), std::greater<>());
-  for (std::size_t i = 0; i < candidates.size() && i < advanced; ++i) {
+  for (std::size_t i = 0; i < candidates.size() && i < moved; ++i) {
     status[candidates[i].second] = NodeStatus::Slip;
     switched.push_back(candidates[i].second);
   }
@@ -261,7 +260,7 @@ class IncrementIteration {
     // solution; when it does not, the refined solve's accuracy may be what limits it.
     factor_.refine_next = !(record.reused_factor && !outcome_.history.empty() &&
                             record.residual > 0.1 * outcome_.history.back().residual);
-    const std::vector<int> anticipated = anticipate(iteration, next, new_status);
+    const std::vector<int> anticipated = anticipate(iteration, next, changed, new_status);
     changed.insert(changed.end(), anticipated.begin(), anticipated.end());
     record.anticipated = static_cast<int>(anticipated.size());
     count_statuses(new_status, record);
@@ -282,6 +281,7 @@ class IncrementIteration {
     seen_.emplace_back(new_status, new_zone);
     seen_residuals_.push_back(record.residual);
     advance(std::move(next), std::move(new_status), std::move(new_zone), zone_changes > 0);
+    if (options_.anticipate_on_cone) linearise_on_cone(anticipated);
     return converged ? Step::converged : Step::next;
   }
 
@@ -373,18 +373,42 @@ class IncrementIteration {
   }
 
   // Slip-front anticipation (ActiveSetOptions::front_lookahead). Once a node has come back from
-  // slip to stick the front has found its place: anticipating further would only make the nodes
-  // at the front flip. Not in the first iteration either (the growth from the predictor, the last
-  // step's solution, to the trial is the load step's, not the front's), nor after a damped step
-  // or from an extrapolated predictor: both cost the builder's shrink-fit model A iterations.
-  std::vector<int> anticipate(int iteration, const Iterate& next,
+  // slip to stick well inside the cone the front has found its place: anticipating further would
+  // only make the nodes at the front flip. A node back at the kink does not end it
+  // (ActiveSetOptions::front_kink_band). Not in the first iteration either (the growth from the
+  // predictor, the last step's solution, to the trial is the load step's, not the front's), nor
+  // after a damped step or from an extrapolated predictor: both cost the builder's shrink-fit
+  // model A iterations.
+  std::vector<int> anticipate(int iteration, const Iterate& next, const std::vector<int>& changed,
                               std::vector<NodeStatus>& new_status) {
-    for (int j = 0; j < m_; ++j)
-      if (status_[j] == NodeStatus::Slip && new_status[j] == NodeStatus::Stick)
+    std::size_t at_kink = 0;
+    for (int j : changed) {
+      if (status_[j] != NodeStatus::Slip || new_status[j] != NodeStatus::Stick) continue;
+      const LocalPoint p = point_of(constraints_[j], setup_, j, next.lambda.segment<3>(3 * j),
+                                    next.d.segment<3>(3 * j), state_.nodes[j].d_ref, 0.0);
+      if (cone_ratio(p) > 1.0 - options_.front_kink_band)
+        ++at_kink;
+      else
         front_receded_ = true;
+    }
     if (damping_ < 1.0 || front_receded_ || !from_elastic_trial_ || iteration == 1) return {};
     return anticipate_front(constraints_, setup_, status_, at_, next, options_.front_lookahead,
-                            new_status);
+                            at_kink, new_status);
+  }
+
+  // The nodes just sent ahead of the front are linearised for slip with their tangential
+  // multipliers on the cone (ActiveSetOptions::anticipate_on_cone). Only the linearisation point
+  // moves: at_.d stays (every other node's rows see the same displacements), and the trial
+  // traction keeps its direction, so the check of bodies held by friction (body_hold.cpp) sees
+  // the same slip directions.
+  void linearise_on_cone(const std::vector<int>& nodes) {
+    for (int j : nodes) {
+      const LocalPoint p = point_of(constraints_[j], setup_, j, at_.lambda.segment<3>(3 * j),
+                                    at_.d.segment<3>(3 * j), state_.nodes[j].d_ref, 0.0);
+      const Eigen::Vector2d on_cone = traction_on_cone(p);
+      for (int c = 1; c < 3; ++c)
+        if (p.live[c]) at_.lambda[3 * j + c] = on_cone[c - 1] - p.c_t * (p.d[c] - p.d_ref[c]);
+    }
   }
 
   static void count_statuses(const std::vector<NodeStatus>& status, IterationRecord& record) {

@@ -128,6 +128,20 @@ LocalRows linearise(const LocalPoint& p, NodeStatus status) {
   return rows;
 }
 
+double cone_ratio(const LocalPoint& p) {
+  if (p.bonded || p.tied || !has_tangential(p)) return 0.0;
+  const double b = normal_indicator(p);
+  if (!(b > p.eps)) return 0.0;
+  return trial_traction(p).norm() / b;
+}
+
+Eigen::Vector2d traction_on_cone(const LocalPoint& p) {
+  const Eigen::Vector2d xi = trial_traction(p);
+  const double length = xi.norm();
+  if (cone_ratio(p) == 0.0 || !(length > 0.0)) return Eigen::Vector2d::Zero();
+  return normal_indicator(p) * xi / length;
+}
+
 Eigen::Vector3d complementarity_residual(const LocalPoint& p) {
   Eigen::Vector3d residual = Eigen::Vector3d::Zero();
   if (p.bonded) {

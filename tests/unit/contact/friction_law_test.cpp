@@ -3,6 +3,8 @@
 // function (STYLE practice 9: the contact tangent is what Newton's convergence rests on).
 #include "styk/contact/friction_law.hpp"
 
+#include <cmath>
+
 #include <gtest/gtest.h>
 
 #include "slip_rows_check.hpp"
@@ -66,6 +68,32 @@ TEST(FrictionLaw, ResidualVanishesExactlyOnTheLaw) {
   EXPECT_EQ(classify(p), NodeStatus::Slip);
   p.lambda[2] *= 0.5;  // off the cone: a residual
   EXPECT_GT(complementarity_residual(p).norm(), 0.1);
+}
+
+// cone_ratio is |xi| / b, the quantity classify() compares with 1, and traction_on_cone returns
+// the trial traction scaled onto the cone's radius b (the return mapping), for points inside and
+// outside the cone alike; both are 0 where no cone applies.
+TEST(FrictionLaw, ConeRatioAndTractionOnCone) {
+  LocalPoint p = slipping_point();
+  // b = lambda_n + c_n (d_n - gap0) = 2 + 1.7 * 0.01; xi = lambda_t + c_t (d_t - d_ref).
+  const double b = 2.0 + 1.7 * 0.01;
+  const Eigen::Vector2d xi(0.7 + 2.3 * 0.8, -0.4 + 2.3 * 0.45);
+  EXPECT_NEAR(cone_ratio(p), xi.norm() / b, 1e-14);
+  EXPECT_GT(cone_ratio(p), 1.0);
+  EXPECT_LT((traction_on_cone(p) - b * xi.normalized()).norm(), 1e-14);
+  p.d.tail<2>() = p.d_ref.tail<2>();  // inside the cone: |lambda_t| = 0.806 < b
+  EXPECT_EQ(classify(p), NodeStatus::Stick);
+  EXPECT_NEAR(cone_ratio(p), std::hypot(0.7, 0.4) / b, 1e-14);
+  EXPECT_NEAR(traction_on_cone(p).norm(), b, 1e-14);
+  EXPECT_NEAR(traction_on_cone(p).normalized().dot(Eigen::Vector2d(0.7, -0.4).normalized()), 1.0,
+              1e-14);
+  p.tied = true;
+  EXPECT_EQ(cone_ratio(p), 0.0);
+  EXPECT_EQ(traction_on_cone(p).norm(), 0.0);
+  p.tied = false;
+  p.lambda[0] = -1.0;
+  p.d[0] = p.gap0 - 0.1;  // open
+  EXPECT_EQ(cone_ratio(p), 0.0);
 }
 
 }  // namespace

@@ -92,6 +92,18 @@ LocalRows linearise(const LocalPoint& point, NodeStatus status);
 // steps only halve the error far from the cone, where a node arrives after leaving stick.)
 Eigen::Vector2d slip_function(const LocalPoint& point);
 
+// |xi| / b: the trial traction over the cone's radius at a closed node with tangential
+// components (classify() says slip above 1, stick at or below it); 0 when the node is open, tied,
+// bonded or has no tangential component. Near 1 a node sits at the law's kink, where both the
+// stick and the slip rows are valid linearisations (active_set.cpp, the slip-front anticipation).
+double cone_ratio(const LocalPoint& point);
+
+// The return mapping of the trial traction onto the cone: b xi / |xi| (t1, t2; components that do
+// not take part 0). A slip row linearised at a point inside the cone has beta = b / |xi| > 1, which
+// turns the sign of its cross-slip coupling (I - beta P); at this point it is the kink's slip
+// element. Zero when cone_ratio() is 0 or xi = 0.
+Eigen::Vector2d traction_on_cone(const LocalPoint& point);
+
 // Residual of the complementarity conditions in force units: lambda - proj(lambda + c (...)),
 // the projection onto R+ (normal) and onto the disk of radius max(lambda_n, 0) (tangential; an
 // unbounded disk when tied and closed). Zero exactly at a solution.
