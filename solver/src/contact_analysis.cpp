@@ -12,6 +12,7 @@
 
 #include "analysis_setup.hpp"
 #include "assembly.hpp"
+#include "augmented_lu.hpp"
 #include "body_loads.hpp"
 #include "contact_increment_report.hpp"
 #include "contact_operator.hpp"
@@ -268,7 +269,7 @@ class ContactAnalysis {
     if (report_ != nullptr && report_->linear_solver.empty()) {
       report_->linear_solver =
           factor_.solver->description() +
-          (factor_.structure ? " + sparse contact solve (UMFPACK LU of K with the closed rows)"
+          (factor_.structure ? " + sparse contact solve (MUMPS LU of K with the contact rows)"
                              : " + dense contact active set");
       report_->dofs = prepared_.active_dofs() - static_cast<long long>(pinned.size());
     }
@@ -279,6 +280,12 @@ class ContactAnalysis {
   // to twice that again) would pass a quarter of the memory limit. Distributed runs hold S.
   bool sparse_contact_solve() const {
     if (share_ || contact_solve_ == ContactSolveKind::Dense) return false;
+    if (!augmented_lu_available()) {
+      if (contact_solve_ == ContactSolveKind::Sparse)
+        throw InputError(SourceLoc{model_.source, 0},
+                         "the sparse contact solve needs a build with PETSc (MUMPS)");
+      return false;
+    }
     if (contact_solve_ == ContactSolveKind::Sparse) return true;
     const double rows = 3.0 * static_cast<double>(constraints_.size());
     const double limit = context_.memory_limit_gb > 0.0 ? context_.memory_limit_gb * 1e9
@@ -380,8 +387,7 @@ class ContactAnalysis {
     if (factor_.structure)
       phases_.info("contact step " + std::to_string(k + 1) + ": sparse contact solve, " +
                    std::to_string(factor_.structure->factorisations()) +
-                   " LU factorisations so far, " + std::to_string(factor_.structure->reused()) +
-                   " Newton steps solved by refinement with an earlier factor");
+                   " LU factorisations so far");
     total_time_ += model_.steps[k].procedure.total_time;
     previous_ = ramp.end;
   }

@@ -2,137 +2,18 @@
 
 #include <algorithm>
 #include <cmath>
-#include <cstdio>
+#include <stdexcept>
 #include <string>
-#include <type_traits>
 
-#include <umfpack.h>
-
-#include "styk/core/diagnostics.hpp"
+#include "augmented_lu.hpp"
 
 namespace styk::solver_detail {
-
-static_assert(std::is_same_v<SuiteSparse_long, long>, "UMFPACK's dl interface takes long indices");
-
 namespace {
 
 // How many constraints' exact diagonal blocks calibrate the estimate (one blocked solve).
 constexpr int kCalibrationSample = 24;
 
-// The augmented matrix of one Newton step in CSR (UMFPACK reads it as the CSC of its transpose).
-// Its pattern is the same for every Newton step of a structure, so UMFPACK analyses it once.
-struct AugmentedMatrix {
-  std::vector<long> ptr, col;
-  std::vector<double> value;
-  long size() const { return static_cast<long>(ptr.size()) - 1; }
-  void add(long c, double v) {
-    col.push_back(c);
-    value.push_back(v);
-  }
-  void end_row() { ptr.push_back(static_cast<long>(col.size())); }
-};
-
-std::string umfpack_failure(const char* what, int status) {
-  return std::string("sparse contact solve: UMFPACK ") + what + " failed (status " +
-         std::to_string(status) + ")";
-}
-
-// max_i |A x - b|_i / (|A| |x| + |b|)_i: the componentwise backward error of x (Oettli-Prager).
-// Row by row, so the contact rows are judged at their own scale, not at K's.
-double backward_error(const AugmentedMatrix& A, const std::vector<double>& x,
-                      const std::vector<double>& b) {
-  double worst = 0.0;
-  for (long i = 0; i < A.size(); ++i) {
-    double sum = -b[i], scale = std::abs(b[i]);
-    for (long p = A.ptr[i]; p < A.ptr[i + 1]; ++p) {
-      sum += A.value[p] * x[A.col[p]];
-      scale += std::abs(A.value[p] * x[A.col[p]]);
-    }
-    if (!std::isfinite(sum)) return 1.0;
-    if (scale > 0.0) worst = std::max(worst, std::abs(sum) / scale);
-  }
-  return worst;
-}
-
-// A solve by a factor of an earlier step's matrix is kept when iterative refinement brings it to
-// a direct solve's backward error (UMFPACK's refinement stops once it stalls); a fresh factor's
-// solve beyond the looser bound means the system is numerically singular.
-constexpr double kReusedBackwardError = 1e-14;
-constexpr double kSingularBackwardError = 1e-8;
-constexpr double kReuseRefinementSteps = 8;
-
 }  // namespace
-
-struct SparseContactStructure::Factor {
-  void* symbolic = nullptr;
-  void* numeric = nullptr;  // of the last matrix factorised, tried first on the next one
-  double control[UMFPACK_CONTROL];
-  double info[UMFPACK_INFO];
-  int factorisations = 0, reused = 0;
-
-  Factor() {
-    umfpack_dl_defaults(control);
-    // K's pattern is symmetric and its diagonal a good pivot: the symmetric strategy with METIS
-    // on A + A^T (the default unsymmetric strategy orders columns only and fills far more).
-    control[UMFPACK_STRATEGY] = UMFPACK_STRATEGY_SYMMETRIC;
-    control[UMFPACK_ORDERING] = UMFPACK_ORDERING_METIS;
-  }
-  ~Factor() {
-    if (numeric != nullptr) umfpack_dl_free_numeric(&numeric);
-    if (symbolic != nullptr) umfpack_dl_free_symbolic(&symbolic);
-  }
-  Factor(const Factor&) = delete;
-  Factor& operator=(const Factor&) = delete;
-
-  // Solves A x = b: first by refinement with the kept factor, else with a new one. False when A
-  // is singular.
-  bool solve(const AugmentedMatrix& A, const std::vector<double>& b, std::vector<double>& x) {
-    if (numeric != nullptr) {
-      control[UMFPACK_IRSTEP] = kReuseRefinementSteps;
-      const int status = umfpack_dl_solve(UMFPACK_At, A.ptr.data(), A.col.data(), A.value.data(),
-                                          x.data(), b.data(), numeric, control, info);
-      if (status == UMFPACK_OK && backward_error(A, x, b) <= kReusedBackwardError) {
-        ++reused;
-        return true;
-      }
-      umfpack_dl_free_numeric(&numeric);
-    }
-    if (!factorise(A)) return false;
-    control[UMFPACK_IRSTEP] = 2;  // UMFPACK's default
-    // The arrays are A's rows, i.e. the columns of A^T: UMFPACK_At solves with A itself.
-    const int status = umfpack_dl_solve(UMFPACK_At, A.ptr.data(), A.col.data(), A.value.data(),
-                                        x.data(), b.data(), numeric, control, info);
-    if (status == UMFPACK_WARNING_singular_matrix) return false;
-    check(status, "solve");
-    return backward_error(A, x, b) <= kSingularBackwardError;
-  }
-
-  bool factorise(const AugmentedMatrix& A) {
-    const long n = A.size();
-    if (symbolic == nullptr)
-      check(umfpack_dl_symbolic(n, n, A.ptr.data(), A.col.data(), A.value.data(), &symbolic,
-                                control, info),
-            "analysis");
-    const int status = umfpack_dl_numeric(A.ptr.data(), A.col.data(), A.value.data(), symbolic,
-                                          &numeric, control, info);
-    ++factorisations;
-    if (status == UMFPACK_WARNING_singular_matrix) {
-      umfpack_dl_free_numeric(&numeric);
-      return false;
-    }
-    check(status, "factorisation");
-    return true;
-  }
-
-  void check(int status, const char* what) const {
-    if (status == UMFPACK_ERROR_out_of_memory)
-      throw ResourceLimitError(umfpack_failure(what, status) +
-                               ": out of memory for the LU factor of the stiffness with the "
-                               "contact rows; a coarser mesh away from the contact zone, or "
-                               "--contact-solver dense when the contact rows are few");
-    if (status != UMFPACK_OK) throw std::runtime_error(umfpack_failure(what, status));
-  }
-};
 
 SparseContactStructure::SparseContactStructure(const StiffnessMatrix& K,
                                                const DofPartition& partition,
@@ -140,7 +21,7 @@ SparseContactStructure::SparseContactStructure(const StiffnessMatrix& K,
     : partition_(partition),
       rows_(std::move(rows)),
       active_dofs_(active_dofs),
-      factor_(std::make_unique<Factor>()) {
+      lu_(std::make_unique<AugmentedLu>()) {
   // K_ff over free indices (free_dofs are increasing, so the columns stay sorted).
   k_ptr_.push_back(0);
   for (int f = 0; f < partition_.free_count(); ++f) {
@@ -256,7 +137,6 @@ AugmentedMatrix augment(const std::vector<long>& k_ptr, const std::vector<long>&
   for (std::size_t r = 0; r < rows.unknowns.size(); ++r)
     unknown_of_row[rows.unknowns[r]] = static_cast<int>(r);
   AugmentedMatrix A;
-  A.ptr.push_back(0);
   std::vector<std::vector<std::pair<long, double>>> multiplier_columns(nf);  // per free dof
   for (std::size_t i = 0; i < free_rows.size(); ++i)
     for (const auto& [f, v] : free_rows[i])
@@ -320,7 +200,7 @@ bool SparseContactStructure::solve(const contact::NewtonRows& rows, Eigen::Vecto
   std::vector<double> b(A.size(), 0.0), solution(A.size(), 0.0);
   for (long r = 0; r < n; ++r) b[nf + position_[rows.unknowns[r]]] = rows.rhs[r];
   for (long a = 0; a < k; ++a) b[nf + carried_ + a] = rows.h[a];
-  if (!factor_->solve(A, b, solution)) return false;
+  if (!lu_->solve(A, b, solution)) return false;
   x.resize(n + k);
   for (long r = 0; r < n; ++r) x[r] = solution[nf + position_[rows.unknowns[r]]];
   for (long a = 0; a < k; ++a) x[n + a] = solution[nf + carried_ + a];
@@ -333,8 +213,7 @@ bool SparseContactStructure::solve(const contact::NewtonRows& rows, Eigen::Vecto
   return true;
 }
 
-int SparseContactStructure::factorisations() const { return factor_->factorisations; }
-int SparseContactStructure::reused() const { return factor_->reused; }
+int SparseContactStructure::factorisations() const { return lu_->factorisations(); }
 
 Eigen::VectorXd SparseContactStructure::times(const Eigen::VectorXd& lambda) const {
   std::vector<double> F(active_dofs_, 0.0);

@@ -1,5 +1,5 @@
 // The contact iteration's view of the structure without the dense compliance S (docs/contact.md,
-// "Sparse contact solve"): each Newton step is one sparse LU (UMFPACK) of K augmented with the
+// "Sparse contact solve"): each Newton step is one sparse LU (MUMPS) of K augmented with the
 // closed contact rows, S lambda comes from the factor of K, and S's diagonal blocks are
 // estimated from K's diagonal, calibrated against exact blocks of a sample of constraints.
 #pragma once
@@ -9,6 +9,7 @@
 
 #include <Eigen/Core>
 
+#include "augmented_lu.hpp"
 #include "contact_operator.hpp"
 #include "linear_solver.hpp"
 #include "stiffness_matrix.hpp"
@@ -38,7 +39,6 @@ class SparseContactStructure final : public contact::StructureOperator {
   int reused() const;  // Newton steps solved by refinement with an earlier factor
 
  private:
-  struct Factor;  // UMFPACK's symbolic and numeric objects
   void estimate_blocks();
   void calibrate_blocks();
 
@@ -56,7 +56,7 @@ class SparseContactStructure final : public contact::StructureOperator {
   std::vector<double> k_value_;
   std::vector<Eigen::Matrix3d> blocks_;
   double calibration_ = 1.0;
-  std::unique_ptr<Factor> factor_;
+  std::unique_ptr<AugmentedLu> lu_;
 };
 
 }  // namespace styk::solver_detail
