@@ -50,10 +50,11 @@ def write_deck(styk, work, fraction):
     return deck
 
 
-def run(styk, deck, work):
+def run(styk, deck, work, extra=()):
+    """Solves `deck` with `styk solve ... extra`; wall time, peak memory and the log's counts."""
     start = time.monotonic()
-    proc = subprocess.run(["/usr/bin/time", "-f", "maxrss %M", styk, "solve", deck, "-o", work],
-                          stderr=subprocess.PIPE, stdout=subprocess.DEVNULL, text=True)
+    proc = subprocess.run(["/usr/bin/time", "-f", "maxrss %M", styk, "solve", deck, "-o", work,
+                           *extra], stderr=subprocess.PIPE, stdout=subprocess.DEVNULL, text=True)
     wall = time.monotonic() - start
     log = proc.stderr
     phases = styk_phases(log)
@@ -70,6 +71,7 @@ def run(styk, deck, work):
         "iterations": len(re.findall(r": iteration \d+:", log)),
         "refined": log.count("previous factor refined"),
         "failed": log.count("did not converge"),
+        "log": log,
     }
 
 

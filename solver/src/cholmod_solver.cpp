@@ -39,6 +39,7 @@ class CholmodSolver final : public LinearSolver {
   }
 
   std::string description() const override { return description_; }
+  double factor_nonzeros() const override { return common_->get()->lnz; }
 
   void prepare(StiffnessMatrix& K, const DofPartition& partition) override {
     partition_ = partition;

@@ -16,6 +16,7 @@
 #include "body_loads.hpp"
 #include "contact_increment_report.hpp"
 #include "contact_operator.hpp"
+#include "contact_solve_choice.hpp"
 #include "distributed_solver.hpp"
 #include "element_states.hpp"
 #include "floating_bodies.hpp"
@@ -251,11 +252,16 @@ class ContactAnalysis {
     const DofPartition partition = partition_dofs(prepared_.active_dofs(), pinned);
     factor_.structure.reset();
     factor_.S.resize(0, 0);
-    if (sparse_contact_solve())  // K's values are read before the factor may release them
+    factor_.solver->prepare(K_, partition);
+    if (sparse_contact_solve(factor_.solver->factor_nonzeros())) {
+      // CHOLMOD keeps its own copy of K_ff and released K's values: assembled again for the
+      // structure's copy, then released (the next step's factorisation reassembles as before).
+      if (!K_.pristine()) assemble();
       factor_.structure = std::make_shared<SparseContactStructure>(
           K_, partition, B_.reduced_rows(prepared_.active_dofs(), kinematic_),
           prepared_.active_dofs());
-    factor_.solver->prepare(K_, partition);
+      K_.release_values();
+    }
     {
       const PhaseRecorder::Scope phase(phases_, "contact compliance");
       if (factor_.structure)
@@ -276,9 +282,9 @@ class ContactAnalysis {
   }
 
   // Whether the contact iteration sees the structure through the sparse solve: when asked to,
-  // or when the dense compliance (3 m x 3 m doubles; the dense Newton system and its LU take up
-  // to twice that again) would pass a quarter of the memory limit. Distributed runs hold S.
-  bool sparse_contact_solve() const {
+  // or by the automatic rule (contact_solve_choice.hpp) from the size of the contact layer and of
+  // K's factor. Distributed runs hold S.
+  bool sparse_contact_solve(double factor_nonzeros) const {
     if (share_ || contact_solve_ == ContactSolveKind::Dense) return false;
     if (!augmented_lu_available()) {
       if (contact_solve_ == ContactSolveKind::Sparse)
@@ -287,10 +293,13 @@ class ContactAnalysis {
       return false;
     }
     if (contact_solve_ == ContactSolveKind::Sparse) return true;
-    const double rows = 3.0 * static_cast<double>(constraints_.size());
-    const double limit = context_.memory_limit_gb > 0.0 ? context_.memory_limit_gb * 1e9
-                                                        : 0.8 * physical_memory_bytes();
-    return 8.0 * rows * rows > 0.25 * limit;
+    ContactSolveSize size;
+    size.constraints = static_cast<double>(constraints_.size());
+    for (int i = 0; i < B_.rows(); ++i) size.used_rows += B_.row_used(i) ? 1.0 : 0.0;
+    size.factor_nonzeros = factor_nonzeros;
+    size.memory_limit_bytes = context_.memory_limit_gb > 0.0 ? context_.memory_limit_gb * 1e9
+                                                             : 0.8 * physical_memory_bytes();
+    return sparse_contact_pays(size);
   }
 
   // The structure's displacement (global) and the contact-row images d = B u of a step end's

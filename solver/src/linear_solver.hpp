@@ -75,6 +75,10 @@ class LinearSolver {
 
   virtual int iterations() const { return 0; }  // of the last solve (iterative solvers)
 
+  // Entries of the direct factor of K_ff from its symbolic analysis (deterministic, unlike a
+  // timing); 0 when the backend does not say.
+  virtual double factor_nonzeros() const { return 0.0; }
+
   // Solves K_ff X = F_f for `columns` right-hand sides at once, prescribed dofs held at zero (the
   // contact compliance needs one column per contact constraint). F and X are column-major,
   // active_dofs() rows; prescribed rows of X are zero. The default solves column by column;
