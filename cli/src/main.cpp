@@ -41,7 +41,8 @@ int main(int argc, char** argv) {
                    "Contact iteration: auto, dense (the compliance over the contact rows; fastest "
                    "while it fits), sparse (one sparse LU of K with the closed rows per "
                    "iteration; for thousands of contact nodes); auto picks sparse when the dense "
-                   "compliance would pass a quarter of the memory limit")
+                   "compliance would pass a quarter of the memory limit or a sparse step is "
+                   "expected to be cheaper")
       ->check(CLI::IsMember({"auto", "dense", "sparse"}));
   solve_cmd
       ->add_option("--threads", solve.threads, "Threads for assembly and recovery (0 = all cores)")

@@ -4,10 +4,11 @@ namespace styk::solver_detail {
 namespace {
 
 // A Newton step's time, measured side by side (bench/contact/README.md, "Thousands of closed
-// contact nodes"): the sparse path's MUMPS LU took 0.3-0.55 us per entry of K's Cholesky factor
-// (the flat joints of write_plate_stack.py, 5.4-59 M entries; SPEC 4.2 model A, 27 M), the dense
-// LU (2/3) r^3 flops at ~5e10 flop/s on the two cores. The larger figure keeps bulky models, whose
-// factors are dense-front heavy, on the dense path: model B (7200 rows, 212 M) stays dense by 20x.
+// contact nodes"): a sparse Newton step took 0.6-0.8 us per entry of K's Cholesky factor on the
+// flat joints of write_plate_stack.py (5.4-59 M entries) and 0.27 us on SPEC 4.2 model A (27 M),
+// the dense LU (2/3) r^3 flops at ~5e10 flop/s on the two cores. At 0.5 us bulky models stay on
+// the dense path by a wide margin (model B, 7200 rows and 212 M entries: by 20x) and the 2601-node
+// joint, even in the measurement (27.0 s sparse, 28.7 s dense), goes sparse for its memory.
 constexpr double kSparseSecondsPerFactorEntry = 0.5e-6;
 constexpr double kDenseFlopsPerSecond = 5e10;
 constexpr double kDenseMemoryShare = 0.25;

@@ -22,8 +22,8 @@ TEST(ContactSolveChoice, BulkyJointsKeepTheDenseCompliance) {
   EXPECT_FALSE(sparse_contact_pays(size(2400, 7200, 212.0e6)));  // model B, 212 M
 }
 
-// The flat joint of write_plate_stack.py: 2601 nodes 19.2 s sparse against 25.0 s dense, 5041
-// nodes 61.2 s against 160.0 s (and 1.2 GB against 7.6 GB).
+// The flat joint of write_plate_stack.py: 2601 nodes 27.0 s sparse against 28.7 s dense (0.63
+// against 2.20 GB), 5041 nodes 55.0 s against 184.8 s (1.20 against 7.61 GB).
 TEST(ContactSolveChoice, ThinJointsWithManyContactNodesGoSparse) {
   EXPECT_TRUE(sparse_contact_pays(size(2601, 7803, 5.4e6)));
   EXPECT_TRUE(sparse_contact_pays(size(5041, 15123, 11.8e6)));

@@ -50,9 +50,10 @@ struct SolveOptions {
   // picks GAMG); every rank ends with the whole results. docs/solver.md "Distributed runs".
   bool distributed = false;
   // How the contact iteration sees the structure (docs/contact.md, "Sparse contact solve"):
-  // Dense holds the compliance S over the contact rows (fastest while it fits), Sparse solves
-  // each Newton step as one sparse LU of K with the closed rows, Automatic picks Sparse when S
-  // would take more than a quarter of the memory limit. Serial runs only (distributed: dense).
+  // Dense holds the compliance S over the contact rows, Sparse solves each Newton step as one
+  // sparse LU of K with the contact rows, Automatic picks Sparse when S would take more than a
+  // quarter of the memory limit or a sparse step is expected to cost less than a dense one
+  // (solver/src/contact_solve_choice.hpp). Serial runs only (distributed: dense).
   ContactSolveKind contact_solve = ContactSolveKind::Automatic;
 };
 
