@@ -1,7 +1,6 @@
 // The sparse LU behind the sparse contact solve (sparse_contact_structure.hpp): the augmented
 // matrix of one Newton step (K with the contact rows; unsymmetric where nodes slip, zero
-// diagonals on the constraint rows) factorised by MUMPS through PETSc, its analysis kept for the
-// next step, whose pattern is the same.
+// diagonals on the constraint rows) equilibrated, factorised by MUMPS through PETSc and refined.
 #pragma once
 
 #include <memory>
@@ -33,9 +32,9 @@ class AugmentedLu {
   AugmentedLu(const AugmentedLu&) = delete;
   AugmentedLu& operator=(const AugmentedLu&) = delete;
 
-  // Factorises A (analysed on the first call; later matrices must have the same pattern) and
-  // solves A x = b. False when A is numerically singular. Throws ResourceLimitError when the
-  // factor does not fit in memory, std::runtime_error when this build has no PETSc.
+  // Analyses and factorises A and solves A x = b. False when A is numerically singular. Throws
+  // ResourceLimitError when the factor does not fit in memory, std::runtime_error when this build
+  // has no PETSc.
   bool solve(const AugmentedMatrix& A, const std::vector<double>& b, std::vector<double>& x);
 
   int factorisations() const { return factorisations_; }
