@@ -66,7 +66,8 @@ Setup set_up(const std::vector<ContactConstraint>& constraints, const LinearCont
   for (int k = 0; k < m; ++k) {
     for (int c = 0; c < 3; ++c) {
       const int row = 3 * k + c;
-      const bool allowed = c == 0 || constraints[k].scale(c) > 0.0;
+      const bool held = c > 0 && constraints[k].mortar && !system.held.empty() && system.held[k][c];
+      const bool allowed = (c == 0 || constraints[k].scale(c) > 0.0) && !held;
       // A component whose dofs are all prescribed moves nothing: its force goes to the reactions.
       const bool degenerate =
           blocks[k](c, c) <= 1e-12 * max_diag &&

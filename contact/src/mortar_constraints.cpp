@@ -148,6 +148,7 @@ bool apply_mortar_row(const Model& model, const MortarRow& row, ContactConstrain
   c.area = row.area / row.own;
   c.gap_scale = row.own;
   c.node_to_node = false;
+  c.mortar = true;
   return true;
 }
 

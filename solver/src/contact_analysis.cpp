@@ -302,6 +302,29 @@ class ContactAnalysis {
     return sparse_contact_pays(size);
   }
 
+  // Per constraint: the tangential directions of mortar rows that the slave node's prescribed
+  // dofs fix (contact::LinearContactSystem::held), in the node's own system (*TRANSFORM).
+  std::vector<std::array<bool, 3>> held_directions(const std::vector<int>& prescribed) const {
+    std::vector<char> is_prescribed(prepared_.active_dofs(), 0);
+    for (int dof : prescribed) is_prescribed[dof] = 1;
+    std::vector<std::array<bool, 3>> held(constraints_.size(), {false, false, false});
+    for (std::size_t j = 0; j < constraints_.size(); ++j) {
+      const contact::ContactConstraint& c = constraints_[j];
+      if (!c.mortar) continue;
+      const int a = prepared_.active_of_node[c.slave];
+      const Eigen::Matrix3d* R = kinematic_.rotations().of(a);
+      for (int k = 0; k < 3; ++k) {
+        const int dof = prepared_.dof(a, k);
+        if (dof < 0 || !is_prescribed[dof]) continue;
+        const Eigen::Vector3d axis =
+            R != nullptr ? Eigen::Vector3d(R->col(k)) : Eigen::Vector3d::Unit(k);
+        held[j][1] = held[j][1] || std::abs(c.t1.dot(axis)) > 1.0 - 1e-9;
+        held[j][2] = held[j][2] || std::abs(c.t2.dot(axis)) > 1.0 - 1e-9;
+      }
+    }
+    return held;
+  }
+
   // The structure's displacement (global) and the contact-row images d = B u of a step end's
   // loads: mechanical + thermal forces, turned to the nodal systems and reduced by the equations.
   std::vector<double> solve_global(const std::vector<double>& mechanical,
@@ -366,6 +389,7 @@ class ContactAnalysis {
     system.S = factor_.S;
     system.structure = factor_.structure;
     system.G = factor_.G;
+    system.held = held_directions(prescribed);
     // Per zone: the fluid pressure of the last converged increment (the step's start value first).
     fluid_before_ = penetration_[k].start;
     sliding_.clear();

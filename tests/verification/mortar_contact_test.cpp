@@ -300,6 +300,16 @@ TEST_F(MortarContact, UniformShearSticks) {
   expect_uniform_shear(registry(), {"C3D20", 3}, {"C3D20", 4}, 0.5, 0.2, 0.8, ContactStatus::Stick);
 }
 
+// Quadratic slaves on a linear master in stick: the slave rows on the y = 0 rollers reach free
+// interior master nodes, and with their y components kept the stuck rows over-determined the
+// system ("singular contact system"); the slave's held direction is taken out of the multiplier
+// space (LinearContactSystem::held, docs/contact.md "Mortar contact").
+TEST_F(MortarContact, UniformShearSticksWithQuadraticSlavesOnALinearMaster) {
+  expect_uniform_shear(registry(), {"C3D20", 3}, {"C3D8", 4}, 0.5, 0.2, 0.8, ContactStatus::Stick);
+  expect_uniform_shear(registry(), {"C3D21", 3}, {"C3D8", 4}, 0.5, 0.2, 0.8, ContactStatus::Stick);
+  expect_uniform_shear(registry(), {"C3D28", 3}, {"C3D8", 4}, 0.5, 0.2, 0.8, ContactStatus::Stick);
+}
+
 TEST_F(MortarContact, UniformShearSlips) {
   expect_uniform_shear(registry(), {"C3D8", 3}, {"C3D8", 4}, 0.1, 0.1, 1.0, ContactStatus::Slip);
   expect_uniform_shear(registry(), {"C3D8", 4}, {"C3D8", 3}, 0.1, 0.1, 1.0, ContactStatus::Slip);

@@ -11,6 +11,7 @@
 // large to hold: structure_operator.hpp), so constraints hold to round-off.
 #pragma once
 
+#include <array>
 #include <functional>
 #include <memory>
 #include <string>
@@ -44,6 +45,11 @@ struct LinearContactSystem {
   // Instead of S (then empty) for contact layers too large for it: S through the structure's
   // sparse factorisation (structure_operator.hpp).
   std::shared_ptr<StructureOperator> structure;
+  // Per constraint (empty: none): the tangential components whose direction the slave node's
+  // supports prescribe. A mortar row's multiplier drops them (the mortar remedy at boundaries
+  // where slave and master are both held along the face: the row also reaches free interior
+  // master nodes, and with the held directions kept the stuck rows over-determine the system).
+  std::vector<std::array<bool, 3>> held;
   Eigen::MatrixXd G;       // 3 m x k
   Eigen::VectorXd h;       // k
   FluidPenetration fluid;  // empty: no pressure penetration

@@ -59,6 +59,7 @@ struct ContactConstraint {
   // of a quadratic slave face (3/5, docs/contact.md "Mortar contact"). gap0, the springs and the
   // row's d are in row units; the results divide by it.
   double gap_scale = 1.0;
+  bool mortar = false;  // a mortar row (dual multiplier of a slave node), not a node's projection
   FrictionLaw law;
   // Penalty laws of *SURFACE BEHAVIOR (penalty_law.hpp): the spring stiffness K A of the node
   // (force per length; 0: exact contact, the default) and whether the spring is TIED (never
