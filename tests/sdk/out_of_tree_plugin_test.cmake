@@ -61,9 +61,13 @@ set(launcher "")
 if(COMPILER_LAUNCHER)
   set(launcher -DCMAKE_CXX_COMPILER_LAUNCHER=${COMPILER_LAUNCHER})
 endif()
+set(sanitize "")
+if(SANITIZE_FLAGS)
+  set(sanitize "-DCMAKE_CXX_FLAGS=${SANITIZE_FLAGS}" "-DCMAKE_SHARED_LINKER_FLAGS=${SANITIZE_FLAGS}")
+endif()
 run_step("configure the template" ${CMAKE_COMMAND}
   -S ${STYK_SOURCE_DIR}/plugins/template -B ${SCRATCH}/tmpl8 -G ${GENERATOR}
-  -DCMAKE_BUILD_TYPE=Release -DCMAKE_CXX_COMPILER=${CXX_COMPILER} ${launcher}
+  -DCMAKE_BUILD_TYPE=Release -DCMAKE_CXX_COMPILER=${CXX_COMPILER} ${launcher} ${sanitize}
   -DCMAKE_PREFIX_PATH=${prefix})
 run_step("build the template" ${CMAKE_COMMAND} --build ${SCRATCH}/tmpl8)
 run_step("install the template" ${CMAKE_COMMAND} --install ${SCRATCH}/tmpl8)
