@@ -22,26 +22,21 @@
 #include "styk/studies/results/convergence.hpp"
 #include "styk/studies/study/families.hpp"
 #include "styk/studies/study/run.hpp"
+#include "support/plugin_registry_suite.hpp"
 
 namespace styk::studies {
 namespace {
 
 constexpr double kTolerance = 0.3;
 
-class AtlasRates : public ::testing::Test {
+class AtlasRates : public test::PluginRegistrySuite<> {
  protected:
-  static void SetUpTestSuite() { full_ = test::registry_with_plugins().release(); }
-  static void TearDownTestSuite() {
-    delete full_;
-    full_ = nullptr;
-  }
-
   // Runs levels first..first+2 of `problem` for `family` in this process (one solve each).
   static std::vector<RunRecord> series(const std::string& problem, const std::string& family,
                                        int first) {
     std::vector<RunRecord> runs;
     for (int level = first; level < first + 3; ++level) {
-      runs.push_back(run_in_process({"accuracy", problem, family, level, 1}, full_->registry));
+      runs.push_back(run_in_process({"accuracy", problem, family, level, 1}, registry()));
       EXPECT_TRUE(runs.back().ok())
           << problem << " " << family << " level " << level << ": " << runs.back().failure;
     }
@@ -64,10 +59,7 @@ class AtlasRates : public ::testing::Test {
     EXPECT_NEAR(order(runs, Measure::DisplacementL2), f->order + 1, kTolerance);
     EXPECT_NEAR(order(runs, Measure::Energy), f->order, kTolerance);
   }
-
-  static test::FullRegistry* full_;
 };
-test::FullRegistry* AtlasRates::full_ = nullptr;
 
 TEST_F(AtlasRates, EveryFamilyConvergesAtItsOrderOnTheLameCylinder) {
   for (const ElementFamily& f : families_of_kind(ElementKind::Solid))

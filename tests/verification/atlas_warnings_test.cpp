@@ -16,18 +16,13 @@
 #include "styk/studies/study/problems.hpp"
 #include "styk/studies/study/run.hpp"
 #include "styk/studies/study/stability_verdict.hpp"
+#include "support/plugin_registry_suite.hpp"
 
 namespace styk::studies {
 namespace {
 
-class AtlasWarnings : public ::testing::Test {
+class AtlasWarnings : public test::PluginRegistrySuite<> {
  protected:
-  static void SetUpTestSuite() { full_ = test::registry_with_plugins().release(); }
-  static void TearDownTestSuite() {
-    delete full_;
-    full_ = nullptr;
-  }
-
   static RunRecord run(const std::string& sweep, const std::string& family, double value,
                        bool solved = true) {
     const ReferenceProblem* p = find_problem(sweep);
@@ -35,7 +30,7 @@ class AtlasWarnings : public ::testing::Test {
     const auto it = std::find(p->values.begin(), p->values.end(), value);
     EXPECT_NE(it, p->values.end()) << value;
     const int level = static_cast<int>(it - p->values.begin());
-    RunRecord r = run_in_process({"stability", sweep, family, level, 1}, full_->registry);
+    RunRecord r = run_in_process({"stability", sweep, family, level, 1}, registry());
     if (solved) {
       EXPECT_TRUE(r.ok()) << r.failure;
     }
@@ -58,9 +53,8 @@ class AtlasWarnings : public ::testing::Test {
   // The smallest min/max det J over the 2 x 2 x 2 Gauss points of any C3D8I element of a sweep's
   // model at `level`.
   static double smallest_jacobian_ratio(const std::string& sweep, int level) {
-    const Model model =
-        build_problem_model(find_problem(sweep)->setup(level), "C3D8I", full_->registry);
-    const TElement& element = *full_->registry.find("C3D8I");
+    const Model model = build_problem_model(find_problem(sweep)->setup(level), "C3D8I", registry());
+    const TElement& element = *registry().find("C3D8I");
     const IntegrationRule rule = element.rule(RuleKind::Full);
     double smallest = 1.0;
     for (int e = 0; e < model.element_count(); ++e) {
@@ -81,10 +75,7 @@ class AtlasWarnings : public ::testing::Test {
     }
     return smallest;
   }
-
-  static test::FullRegistry* full_;
 };
-test::FullRegistry* AtlasWarnings::full_ = nullptr;
 
 // Sweep "poisson" (0.5 - nu): the SPEC §3.1.7 cylinder on 4 x 6 elements.
 TEST_F(AtlasWarnings, LockingWarningsFireFromEachFamilysOnset) {

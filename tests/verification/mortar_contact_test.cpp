@@ -14,7 +14,6 @@
 #include <filesystem>
 #include <fstream>
 #include <map>
-#include <memory>
 #include <optional>
 #include <sstream>
 #include <string>
@@ -32,6 +31,7 @@
 #include "styk/mesher/split.hpp"
 #include "styk/solver/analysis.hpp"
 #include "support/ccx_runner.hpp"
+#include "support/plugin_registry_suite.hpp"
 #include "support/test_scratch.hpp"
 
 namespace styk {
@@ -128,14 +128,7 @@ void add_traction(Model& model, const ElementRegistry& registry, const std::stri
         model.steps[0].cloads.push_back({node, d + 1, traction[d] * area, {}});
 }
 
-class MortarContact : public ::testing::Test {
- protected:
-  static void SetUpTestSuite() { full_ = test::registry_with_plugins(); }
-  static void TearDownTestSuite() { full_.reset(); }
-  static const ElementRegistry& registry() { return full_->registry; }
-  static std::unique_ptr<test::FullRegistry> full_;
-};
-std::unique_ptr<test::FullRegistry> MortarContact::full_;
+class MortarContact : public test::PluginRegistrySuite<> {};
 
 struct Spread {
   double low = INFINITY, high = -INFINITY;

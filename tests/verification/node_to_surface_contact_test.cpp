@@ -9,7 +9,6 @@
 // - SPEC §3.2.2 concentric cylinders with 4 and 6 elements around the quarter on the two sides.
 #include <algorithm>
 #include <cmath>
-#include <memory>
 #include <optional>
 #include <string>
 
@@ -22,6 +21,7 @@
 #include "styk/mesher/convert.hpp"
 #include "styk/mesher/split.hpp"
 #include "styk/solver/analysis.hpp"
+#include "support/plugin_registry_suite.hpp"
 
 namespace styk {
 namespace {
@@ -75,14 +75,7 @@ Model flat_patch(const Side& slave, const Side& master, double master_young) {
   return model;
 }
 
-class NodeToSurfaceContact : public ::testing::Test {
- protected:
-  static void SetUpTestSuite() { full_ = test::registry_with_plugins(); }
-  static void TearDownTestSuite() { full_.reset(); }
-  static const ElementRegistry& registry() { return full_->registry; }
-  static std::unique_ptr<test::FullRegistry> full_;
-};
-std::unique_ptr<test::FullRegistry> NodeToSurfaceContact::full_;
+class NodeToSurfaceContact : public test::PluginRegistrySuite<> {};
 
 struct PatchResult {
   double low = INFINITY, high = -INFINITY;  // extreme nodal pressures of the closed nodes

@@ -24,6 +24,7 @@
 #include "styk/mesher/interface.hpp"
 #include "styk/mesher/merge.hpp"
 #include "styk/solver/analysis.hpp"
+#include "support/plugin_registry_suite.hpp"
 
 namespace styk {
 namespace {
@@ -107,17 +108,7 @@ void expect_pair_forces(const Stack& s, const std::map<Where, double>& expected,
   EXPECT_LT(s.result.contact_equilibrium.relative_residual, 1e-8);
 }
 
-class StackedContact : public ::testing::Test {
- protected:
-  static void SetUpTestSuite() { full_ = test::registry_with_plugins().release(); }
-  static void TearDownTestSuite() {
-    delete full_;
-    full_ = nullptr;
-  }
-  static const ElementRegistry& registry() { return full_->registry; }
-  static test::FullRegistry* full_;
-};
-test::FullRegistry* StackedContact::full_ = nullptr;
+class StackedContact : public test::PluginRegistrySuite<> {};
 
 TEST_F(StackedContact, C3D14PairForcesTab29) {
   const Stack s = solve_stack(registry(), "C3D14");

@@ -19,19 +19,13 @@
 #include "styk/io/dat_reader.hpp"
 #include "styk/studies/verify/report.hpp"
 #include "support/ccx_runner.hpp"
+#include "support/plugin_registry_suite.hpp"
 
 namespace styk::verify {
 namespace {
 
-class Spec3_1Solids : public ::testing::Test {
+class Spec3_1Solids : public test::PluginRegistrySuite<> {
  protected:
-  static void SetUpTestSuite() { full_ = test::registry_with_plugins().release(); }
-  static void TearDownTestSuite() {
-    delete full_;
-    full_ = nullptr;
-  }
-  static const ElementRegistry& registry() { return full_->registry; }
-
   static const BenchmarkCase& bench(const std::string& name) {
     static const std::vector<BenchmarkCase> cases = benchmark_cases();
     const BenchmarkCase* c = find_case(cases, name);
@@ -61,10 +55,7 @@ class Spec3_1Solids : public ::testing::Test {
     for (const auto& [id, u] : blocks.back().u) U.at(model.node_index(id)) = u;
     return {ours, measure_displacements(c, model, U)};
   }
-
-  static test::FullRegistry* full_;
 };
-test::FullRegistry* Spec3_1Solids::full_ = nullptr;
 
 struct Expected {
   const char* name;  // case of studies/verify

@@ -14,6 +14,7 @@
 #include "hex_model_builder.hpp"
 #include "styk/mesher/convert.hpp"
 #include "styk/solver/analysis.hpp"
+#include "support/plugin_registry_suite.hpp"
 
 namespace styk {
 namespace {
@@ -78,16 +79,7 @@ Model sector_cylinders(Symmetry symmetry) {
   return model;
 }
 
-class SectorContact : public ::testing::TestWithParam<Symmetry> {
- protected:
-  static void SetUpTestSuite() { full_ = test::registry_with_plugins().release(); }
-  static void TearDownTestSuite() {
-    delete full_;
-    full_ = nullptr;
-  }
-  static test::FullRegistry* full_;
-};
-test::FullRegistry* SectorContact::full_ = nullptr;
+class SectorContact : public test::PluginRegistrySuite<::testing::TestWithParam<Symmetry>> {};
 
 // SPEC §3.2.2: analytic contact pressure 3.294 (uniform); the quarter model gives 3.2944 with
 // C3D21 (docs/contact.md). Asserted: every slave node within 2 % of 3.294, uniform within 1 % of
@@ -95,8 +87,7 @@ test::FullRegistry* SectorContact::full_ = nullptr;
 // zero to round-off (the transform/equation really acts).
 TEST_P(SectorContact, LamePressureMatchesTheQuarterModel) {
   const Model model = sector_cylinders(GetParam());
-  const Results results =
-      run_static_analysis(model, full_->registry, SolveOptions{}, nullptr, nullptr);
+  const Results results = run_static_analysis(model, registry(), SolveOptions{}, nullptr, nullptr);
   const IncrementResult& r = results.increments.back();
   ASSERT_FALSE(r.contact.empty());
   double mean = 0.0;
@@ -125,10 +116,10 @@ TEST_P(SectorContact, SparseContactSolveGivesTheDenseAnswer) {
   const Model model = sector_cylinders(GetParam());
   SolveOptions options;
   options.contact_solve = ContactSolveKind::Dense;
-  const Results dense = run_static_analysis(model, full_->registry, options, nullptr, nullptr);
+  const Results dense = run_static_analysis(model, registry(), options, nullptr, nullptr);
   options.contact_solve = ContactSolveKind::Sparse;
   AnalysisReport report;
-  const Results sparse = run_static_analysis(model, full_->registry, options, nullptr, &report);
+  const Results sparse = run_static_analysis(model, registry(), options, nullptr, &report);
   EXPECT_NE(report.linear_solver.find("sparse contact solve"), std::string::npos);
   test::expect_same_contact_answer(dense, sparse, 1e-8);
 }

@@ -25,6 +25,7 @@
 #include "stiffness_matrix.hpp"
 #include "styk/contact/active_set.hpp"
 #include "styk/solver/analysis.hpp"
+#include "support/plugin_registry_suite.hpp"
 
 namespace styk {
 namespace {
@@ -86,17 +87,7 @@ Solved solve(const BeamSystem& beams, const contact::ActiveSetOptions& options) 
   return out;
 }
 
-class IterationPath : public ::testing::Test {
- protected:
-  static void SetUpTestSuite() { full_ = test::registry_with_plugins().release(); }
-  static void TearDownTestSuite() {
-    delete full_;
-    full_ = nullptr;
-  }
-  static const ElementRegistry& registry() { return full_->registry; }
-  static test::FullRegistry* full_;
-};
-test::FullRegistry* IterationPath::full_ = nullptr;
+class IterationPath : public test::PluginRegistrySuite<> {};
 
 // Largest difference of the multipliers of two solutions, relative to the largest multiplier of
 // the first, and the number of constraints whose statuses differ.

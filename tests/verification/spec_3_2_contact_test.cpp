@@ -15,23 +15,14 @@
 #include "styk/mesher/convert.hpp"
 #include "styk/mesher/merge.hpp"
 #include "styk/solver/analysis.hpp"
+#include "support/plugin_registry_suite.hpp"
 
 namespace styk {
 namespace {
 
 constexpr double kPi = 3.14159265358979323846;
 
-class ContactSpec32 : public ::testing::Test {
- protected:
-  static void SetUpTestSuite() { full_ = test::registry_with_plugins().release(); }
-  static void TearDownTestSuite() {
-    delete full_;
-    full_ = nullptr;
-  }
-  static const ElementRegistry& registry() { return full_->registry; }
-  static test::FullRegistry* full_;
-};
-test::FullRegistry* ContactSpec32::full_ = nullptr;
+class ContactSpec32 : public test::PluginRegistrySuite<> {};
 
 void convert_layer(mesher::Mesh& mesh, const std::string& type, const std::string& surface) {
   if (type == "C3D21") mesher::convert_elements(mesh, test::shared_registry(), "C3D21", surface);

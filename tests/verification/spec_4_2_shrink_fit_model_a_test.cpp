@@ -17,6 +17,7 @@
 #include "styk/core/diagnostics.hpp"
 #include "styk/mesher/builders.hpp"
 #include "styk/solver/analysis.hpp"
+#include "support/plugin_registry_suite.hpp"
 
 namespace styk {
 namespace {
@@ -25,14 +26,8 @@ constexpr double kPi = 3.14159265358979323846;
 constexpr double kMu = 0.2;
 constexpr double kTopAnnulus = kPi * (15.0 * 15.0 - 10.0 * 10.0) / 4.0;  // quarter, mm^2
 
-class ShrinkFitModelA : public ::testing::Test {
+class ShrinkFitModelA : public test::PluginRegistrySuite<> {
  protected:
-  static void SetUpTestSuite() { full_ = test::registry_with_plugins().release(); }
-  static void TearDownTestSuite() {
-    delete full_;
-    full_ = nullptr;
-  }
-  static const ElementRegistry& registry() { return full_->registry; }
   static Model model_a(const std::string& pressures) {
     return mesher::run_builder("shrink-fit",
                                {{"around", "4"},
@@ -44,9 +39,7 @@ class ShrinkFitModelA : public ::testing::Test {
                                registry())
         .model;
   }
-  static test::FullRegistry* full_;
 };
-test::FullRegistry* ShrinkFitModelA::full_ = nullptr;
 
 // The axial friction capacity of the fit at an increment: mu times the sum of the normal contact
 // forces (the force on each slave node projected on its normal).

@@ -14,21 +14,12 @@
 #include "hex_model_builder.hpp"
 #include "spec_4_2_shrink_fit_model.hpp"
 #include "styk/solver/analysis.hpp"
+#include "support/plugin_registry_suite.hpp"
 
 namespace styk {
 namespace {
 
-class ShrinkFitSpec42 : public ::testing::Test {
- protected:
-  static void SetUpTestSuite() { full_ = test::registry_with_plugins().release(); }
-  static void TearDownTestSuite() {
-    delete full_;
-    full_ = nullptr;
-  }
-  static const ElementRegistry& registry() { return full_->registry; }
-  static test::FullRegistry* full_;
-};
-test::FullRegistry* ShrinkFitSpec42::full_ = nullptr;
+class ShrinkFitSpec42 : public test::PluginRegistrySuite<> {};
 
 // Prints the solver's log when STYK_TEST_LOG is set (for looking at the iteration).
 class LogSink : public ProgressSink {

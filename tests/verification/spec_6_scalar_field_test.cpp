@@ -39,6 +39,7 @@
 #include "styk/io/vtu_export.hpp"
 #include "styk/mesher/builders.hpp"
 #include "styk/solver/analysis.hpp"
+#include "support/plugin_registry_suite.hpp"
 
 namespace styk {
 namespace {
@@ -46,20 +47,12 @@ namespace {
 constexpr double kT1 = 100.0, kT2 = 25.0, kR1 = 2.0, kR2 = 3.0;
 constexpr double kPi = 3.14159265358979323846;
 
-class ScalarFieldTest : public ::testing::Test {
+class ScalarFieldTest : public test::PluginRegistrySuite<> {
  protected:
-  static void SetUpTestSuite() { full_ = test::registry_with_plugins().release(); }
-  static void TearDownTestSuite() {
-    delete full_;
-    full_ = nullptr;
-  }
-  static const ElementRegistry& registry() { return full_->registry; }
   static Results solve(const Model& model) {
     return run_static_analysis(model, registry(), SolveOptions{}, nullptr, nullptr);
   }
-  static test::FullRegistry* full_;
 };
-test::FullRegistry* ScalarFieldTest::full_ = nullptr;
 
 // ---- §6.2 cylinder wall ----------------------------------------------------------------------
 

@@ -3,28 +3,27 @@
 // linear (and, in the element's own space, quadratic) fields at the nodes and the centre.
 #include <cmath>
 #include <functional>
-#include <memory>
 #include <string>
 
 #include <gtest/gtest.h>
 
 #include "hex_model_builder.hpp"
 #include "stress_averaging.hpp"
+#include "support/plugin_registry_suite.hpp"
 
 namespace styk::solver_detail {
 namespace {
 
 using Field = std::function<double(const Vec3&)>;
 
-class ExtrapolationTest : public ::testing::Test {
+class ExtrapolationTest : public test::PluginRegistrySuite<> {
  protected:
   static void SetUpTestSuite() {
-    full_ = test::registry_with_plugins();
-    for (const PluginDiagnostic& d : full_->diagnostics) ADD_FAILURE() << d.message;
+    PluginRegistrySuite::SetUpTestSuite();
+    for (const PluginDiagnostic& d : plugin_diagnostics()) ADD_FAILURE() << d.message;
   }
-  static void TearDownTestSuite() { full_.reset(); }
   static const TElement& element(const std::string& type) {
-    const TElement* e = full_->registry.find(type);
+    const TElement* e = registry().find(type);
     if (e == nullptr) throw std::invalid_argument(type + " is not registered");
     return *e;
   }
@@ -42,9 +41,6 @@ class ExtrapolationTest : public ::testing::Test {
       EXPECT_NEAR(at_nodes(i), f(e.natural_nodes()[i]), 1e-11) << type << " node " << i + 1;
     EXPECT_NEAR(op.to_centroid.dot(at_points), f({0.0, 0.0, 0.0}), 1e-11) << type << " centre";
   }
-
-  // Loaded once for the suite (plug-in loading is the slow part).
-  static inline std::unique_ptr<test::FullRegistry> full_;
 };
 
 const Field kLinear = [](const Vec3& x) { return 3.0 - 2.0 * x[0] + 0.5 * x[1] + 7.0 * x[2]; };
