@@ -51,16 +51,17 @@ Eigen::VectorXd displacements(const LinearContactSystem& system, const Loads& lo
 Eigen::Matrix3d compliance_block(const LinearContactSystem& system, int j);
 Eigen::VectorXd compliance_times(const LinearContactSystem& system, const Eigen::VectorXd& v);
 
-// The factor of the last linearised system an increment solved, which the next iteration tries
-// first (ActiveSetOptions::reuse_factor_size): while the closed set keeps its unknowns and the
-// Newton steps shrink, the system changes little, and a few refinement steps with the old factor
-// replace a new factorisation (DenseLu::refine).
+// The factor of the last linearised system an increment solved, which later iterations try
+// first (ActiveSetOptions::reuse_factor_size): while the closed set keeps its unknowns and few
+// statuses change, the system changes little, and GMRES preconditioned with the old factor
+// replaces a new factorisation (DenseLu::solve_by_krylov).
 struct LinearisedFactor {
-  std::vector<int> unknowns;  // of the factorised system
+  std::vector<int> unknowns;         // of the factorised system
+  std::vector<NodeStatus> statuses;  // under which it was linearised
   std::unique_ptr<contact_detail::DenseLu> lu;
-  // Off after an iteration solved by refinement failed to lower the contact residual tenfold:
-  // near the tolerance the refined solve's backward error (within sqrt(n) eps of a direct one,
-  // not equal to it) can be what stalls the iteration, so the next solve factorises.
+  // Off after an iteration solved with the old factor failed to lower the contact residual
+  // tenfold: near the tolerance that solve's backward error (within sqrt(n) eps of a direct
+  // one's, not equal to it) can be what stalls the iteration, so the next solve factorises.
   bool refine_next = true;
   int reused = 0;  // solves served by an older factor
 };

@@ -4,6 +4,8 @@
 #include <limits>
 #include <stdexcept>
 
+#include <unsupported/Eigen/IterativeSolvers>
+
 // LAPACK (Fortran calling convention; OpenBLAS exports these names).
 extern "C" {
 void dgetrf_(const int* m, const int* n, double* a, const int* lda, int* ipiv, int* info);
@@ -30,6 +32,12 @@ double largest_row_sum(const Eigen::MatrixXd& M) {
 }
 
 }  // namespace
+
+// GMRES's preconditioner: this factor's solve.
+struct DenseLu::Preconditioner {
+  const DenseLu& lu;
+  Eigen::VectorXd solve(const Eigen::VectorXd& r) const { return lu.solve(r); }
+};
 
 DenseLu::DenseLu(Eigen::MatrixXd A, Storage storage)
     : lu_(std::move(A)), transposed_(storage == Storage::transposed) {
@@ -67,11 +75,32 @@ Eigen::VectorXd DenseLu::solve(const Eigen::VectorXd& b) const {
   return x;
 }
 
-bool DenseLu::refine(const Eigen::MatrixXd& A, const Eigen::VectorXd& b, Eigen::VectorXd& x,
-                     int max_steps, int& steps) const {
-  steps = 0;
+bool DenseLu::solve_by_krylov(const Eigen::MatrixXd& A, const Eigen::VectorXd& b,
+                              Eigen::VectorXd& x, int max_iterations, int& iterations) const {
+  iterations = 0;
   if (!factorised() || A.rows() != lu_.rows() || A.cols() != lu_.cols() || b.size() != A.rows())
     return false;
+  x = solve(b);
+  if (!x.allFinite()) return false;
+  // Eigen's GMRES (unsupported/Eigen/IterativeSolvers) through its function template, which takes
+  // any matrix expression: the stored A^T is used as A^T's transpose without a copy of n^2
+  // doubles. No restart: a change of rank r needs about r + 1 iterations.
+  const Eigen::Index restart = max_iterations;
+  Eigen::Index taken = max_iterations;
+  double tolerance = 1e-13;  // of the preconditioned residual: the refinement below finishes
+  const Preconditioner preconditioner{*this};
+  if (transposed_)
+    Eigen::internal::gmres(A.transpose(), b, x, preconditioner, taken, restart, tolerance);
+  else
+    Eigen::internal::gmres(A, b, x, preconditioner, taken, restart, tolerance);
+  iterations = static_cast<int>(taken);
+  int steps = 0;
+  return refine_from(A, b, x, 2, steps);
+}
+
+bool DenseLu::refine_from(const Eigen::MatrixXd& A, const Eigen::VectorXd& b, Eigen::VectorXd& x,
+                          int max_steps, int& steps) const {
+  steps = 0;
   // ||A||_inf: the row sums of A, the column sums of a stored A^T.
   const double tolerance = std::sqrt(static_cast<double>(A.rows())) *
                            std::numeric_limits<double>::epsilon() *
@@ -79,7 +108,6 @@ bool DenseLu::refine(const Eigen::MatrixXd& A, const Eigen::VectorXd& b, Eigen::
   // Refined while the residual still falls (to the floor of a residual computed in double), as a
   // direct solve's backward error is usually well below the test's bound: the contact iteration's
   // complementarity tolerance needs that accuracy, not just the bound.
-  x = solve(b);
   double last = std::numeric_limits<double>::infinity();
   bool reached = false;
   for (;; ++steps) {

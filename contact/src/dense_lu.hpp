@@ -26,17 +26,24 @@ class DenseLu {
   double rcond() const;
   Eigen::VectorXd solve(const Eigen::VectorXd& b) const;
 
-  // Solves A x = b for a matrix A close to the factorised one (the same contact system one
-  // Newton step later) by iterative refinement with this factor as the preconditioner:
-  // x += LU^-1 (b - A x), while each step at least halves the residual (up to `max_steps`). True
-  // when the residual it stops at is within a direct solve's backward error,
-  // ||b - A x||_inf <= sqrt(n) eps ||A||_inf ||x||_inf (LAPACK dsgesv's test); false otherwise (x
-  // is then meaningless and A wants a factorisation of its own). `steps`: the steps taken. A is
-  // given in this factor's storage (A^T for Storage::transposed).
-  bool refine(const Eigen::MatrixXd& A, const Eigen::VectorXd& b, Eigen::VectorXd& x, int max_steps,
-              int& steps) const;
+  // Solves A x = b for a matrix A close to the factorised one (the same contact system some
+  // Newton steps later, a few nodes' statuses changed, so whole rows rewritten): GMRES
+  // preconditioned by this factor, up to `max_iterations` (a change of r rows leaves LU^-1 A the
+  // identity plus a rank-r term, which GMRES resolves in about r + 1 iterations), then iterative
+  // refinement x += LU^-1 (b - A x) while it still lowers the residual. True when the residual it
+  // stops at is within a direct solve's backward error, ||b - A x||_inf <= sqrt(n) eps ||A||_inf
+  // ||x||_inf (LAPACK dsgesv's test); false otherwise (x is then meaningless and A wants a
+  // factorisation of its own). `iterations`: the GMRES iterations taken. A is given in this
+  // factor's storage (A^T for Storage::transposed).
+  bool solve_by_krylov(const Eigen::MatrixXd& A, const Eigen::VectorXd& b, Eigen::VectorXd& x,
+                       int max_iterations, int& iterations) const;
 
  private:
+  struct Preconditioner;
+  // Refinement from the given x, up to `max_steps` (see solve_by_krylov).
+  bool refine_from(const Eigen::MatrixXd& A, const Eigen::VectorXd& b, Eigen::VectorXd& x,
+                   int max_steps, int& steps) const;
+
   Eigen::MatrixXd lu_;  // the LU of the stored matrix (A or A^T)
   bool transposed_ = false;
   std::vector<int> pivots_;

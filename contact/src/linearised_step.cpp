@@ -125,18 +125,30 @@ bool equilibrate(LinearisedSystem& system) {
   return true;
 }
 
-// Solves the system (A consumed); false when it is singular. A system of the unknowns of the kept
-// factor tries it first: refinement that contracts at least twofold per step means
-// ||I - LU_old^-1 A|| < 1 in effect, so A is as far from singular as the factorised matrix was
-// (its rcond passed) and the singularity test below is not skipped for a singular A.
-bool solve_equilibrated(LinearisedSystem& system, const ActiveSetOptions& options,
-                        LinearisedFactor* factor, Eigen::VectorXd& x) {
+// The nodes whose statuses differ between two status sets of the same constraints.
+int status_changes(const std::vector<NodeStatus>& a, const std::vector<NodeStatus>& b) {
+  if (a.size() != b.size()) return static_cast<int>(std::max(a.size(), b.size()));
+  int changes = 0;
+  for (std::size_t j = 0; j < a.size(); ++j) changes += a[j] != b[j] ? 1 : 0;
+  return changes;
+}
+
+// Solves the system (A consumed) under `status`; false when it is singular. A system of the
+// unknowns of the kept factor, with few statuses changed since, tries GMRES with it first. That
+// solve is accepted only at a direct solve's backward error and skips the condition test below
+// (which the kept factor passed); a body held only by contact that loses its hold is caught
+// before the solve (body_hold), not by that test.
+bool solve_equilibrated(LinearisedSystem& system, const std::vector<NodeStatus>& status,
+                        const ActiveSetOptions& options, LinearisedFactor* factor,
+                        Eigen::VectorXd& x) {
   if (!equilibrate(system)) return false;
   const bool reusable =
       factor != nullptr && system.At.rows() >= options.reuse_factor_size && system.At.rows() > 0;
-  if (reusable && factor->refine_next && factor->lu && factor->unknowns == system.unknowns) {
-    int steps = 0;
-    if (factor->lu->refine(system.At, system.rhs, x, options.max_refinement_steps, steps)) {
+  if (reusable && factor->refine_next && factor->lu && factor->unknowns == system.unknowns &&
+      status_changes(factor->statuses, status) <= options.reuse_status_changes) {
+    int iterations = 0;
+    if (factor->lu->solve_by_krylov(system.At, system.rhs, x, options.reuse_krylov_iterations,
+                                    iterations)) {
       ++factor->reused;
       return true;
     }
@@ -148,6 +160,7 @@ bool solve_equilibrated(LinearisedSystem& system, const ActiveSetOptions& option
   if (reusable) {
     factor->lu = std::move(lu);
     factor->unknowns = system.unknowns;
+    factor->statuses = status;
   }
   return x.allFinite();
 }
@@ -181,7 +194,7 @@ bool solve_linearised(const std::vector<ContactConstraint>& constraints,
     return true;
   }
   LinearisedSystem linearised = assemble_dense(system, rows);
-  if (!solve_equilibrated(linearised, options, factor, x)) return false;
+  if (!solve_equilibrated(linearised, status, options, factor, x)) return false;
   for (int j = 0; j < n; ++j) out.lambda[rows.unknowns[j]] = x[j];
   out.alpha = x.tail(k);
   out.d = displacements(system, loads, out);

@@ -179,8 +179,8 @@ LinearContactSystem sheared_patch(int m) {
   return s;
 }
 
-// ActiveSetOptions::reuse_factor_size: solving by refinement with the previous iteration's factor
-// gives the increment of the plain factorisations (same iterations, same multipliers to 1e-10).
+// ActiveSetOptions::reuse_factor_size: solving by GMRES with an earlier iteration's factor gives
+// the increment of the plain factorisations (same iterations, same multipliers to 1e-10).
 TEST(ActiveSet, ReusedFactorGivesTheSameIncrement) {
   const int m = 40;
   const std::vector<ContactConstraint> cs(m, constraint(FrictionLaw::Kind::Coulomb, 0.3, 0.3, 0));

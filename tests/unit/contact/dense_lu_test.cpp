@@ -1,5 +1,5 @@
 // The active-set step's dense solve (contact/src/dense_lu.hpp): a kept factor solves a nearby
-// system (the next Newton step's) by iterative refinement to a direct solve's accuracy, and
+// system (a later Newton step's) by GMRES and refinement to a direct solve's accuracy, and
 // refuses one it cannot.
 #include <gtest/gtest.h>
 
@@ -44,7 +44,7 @@ TEST(DenseLu, SolvesToTheDirectSolutionsAccuracy) {
   EXPECT_GT(lu.rcond(), 1e-9);
 }
 
-TEST(DenseLu, RefinesANearbySystemWithTheOldFactor) {
+TEST(DenseLu, SolvesANearbySystemWithTheOldFactor) {
   const int n = 300;
   const Eigen::MatrixXd A = with_condition(n, 1e4, 5);
   // The next system: A changed by 1e-6 of its norm in 30 rows (a Newton step's slip rows).
@@ -57,17 +57,38 @@ TEST(DenseLu, RefinesANearbySystemWithTheOldFactor) {
   // The old factor alone is off by about cond * 1e-6 * sqrt(30 n).
   EXPECT_GT(relative_error(old_factor.solve(b), reference), 1e-4);
   Eigen::VectorXd x;
-  int steps = 0;
-  ASSERT_TRUE(old_factor.refine(next, b, x, 10, steps));
-  EXPECT_GE(steps, 2);
-  EXPECT_LE(steps, 10);
+  int iterations = 0;
+  ASSERT_TRUE(old_factor.solve_by_krylov(next, b, x, 10, iterations));
+  EXPECT_GE(iterations, 2);
+  EXPECT_LE(iterations, 10);
   // As accurate as a direct solve of `next` (cond 1e4: ~1e-12).
   EXPECT_LT(relative_error(x, reference), 1e-11);
   EXPECT_LT(relative_error(DenseLu(next).solve(b), reference), 1e-11);
 }
 
+// Statuses of a few nodes changed: r whole rows rewritten (not a small change), which LU^-1 A
+// turns into the identity plus a rank-r term. GMRES with the old factor resolves it in r + 1
+// iterations at most (r = 6 here; with a budget of 10), to a direct solve's accuracy; a budget
+// below r + 1 is refused.
+TEST(DenseLu, ResolvesRewrittenRowsInAboutAsManyIterations) {
+  const int n = 300, r = 6;
+  const Eigen::MatrixXd A = with_condition(n, 1e4, 21);
+  Eigen::MatrixXd next = A;
+  std::srand(23);
+  next.middleRows(100, r) = Eigen::MatrixXd::Random(r, n);
+  const Eigen::VectorXd b = Eigen::VectorXd::LinSpaced(n, -1.0, 1.0);
+  const Eigen::VectorXd reference = next.fullPivLu().solve(b);
+  const DenseLu old_factor(A);
+  Eigen::VectorXd x;
+  int iterations = 0;
+  ASSERT_TRUE(old_factor.solve_by_krylov(next, b, x, 10, iterations));
+  EXPECT_LE(iterations, r + 1);
+  EXPECT_LT(relative_error(x, reference), 1e-10);
+  EXPECT_FALSE(old_factor.solve_by_krylov(next, b, x, r - 2, iterations));
+}
+
 // The contact step hands over A^T (assembled row by row of A): the same solution and condition
-// estimate as A itself, and refinement with a stored transpose.
+// estimate as A itself, and the solve with the old factor with a stored transpose.
 TEST(DenseLu, TransposedStorageSolvesWithA) {
   const int n = 250;
   const Eigen::MatrixXd A = with_condition(n, 1e4, 13);
@@ -84,8 +105,8 @@ TEST(DenseLu, TransposedStorageSolvesWithA) {
   std::srand(17);
   next.topRows(20) += 1e-6 * Eigen::MatrixXd::Random(20, n);
   Eigen::VectorXd x;
-  int steps = 0;
-  ASSERT_TRUE(transposed.refine(next.transpose(), b, x, 10, steps));
+  int iterations = 0;
+  ASSERT_TRUE(transposed.solve_by_krylov(next.transpose(), b, x, 10, iterations));
   EXPECT_LT(relative_error(x, next.fullPivLu().solve(b)), 1e-11);
 }
 
@@ -94,12 +115,13 @@ TEST(DenseLu, RefusesASystemTooFarFromTheFactor) {
   const DenseLu old_factor(with_condition(n, 1e4, 7));
   const Eigen::MatrixXd other = with_condition(n, 1e4, 8);
   Eigen::VectorXd x;
-  int steps = 0;
-  EXPECT_FALSE(old_factor.refine(other, Eigen::VectorXd::Ones(n), x, 10, steps));
-  // And one whose refinement would need more steps than allowed.
+  int iterations = 0;
+  EXPECT_FALSE(old_factor.solve_by_krylov(other, Eigen::VectorXd::Ones(n), x, 10, iterations));
+  EXPECT_EQ(iterations, 10);
+  // And one that would need more iterations than allowed (20 rows changed, 2 allowed).
   Eigen::MatrixXd next = with_condition(n, 1e4, 7);
   next.topRows(20) += 2e-2 * Eigen::MatrixXd::Random(20, n);
-  EXPECT_FALSE(old_factor.refine(next, Eigen::VectorXd::Ones(n), x, 1, steps));
+  EXPECT_FALSE(old_factor.solve_by_krylov(next, Eigen::VectorXd::Ones(n), x, 2, iterations));
 }
 
 TEST(DenseLu, SingularSystemsAreReported) {
