@@ -136,8 +136,10 @@ int status_changes(const std::vector<NodeStatus>& a, const std::vector<NodeStatu
 // Solves the system (A consumed) under `status`; false when it is singular. A system of the
 // unknowns of the kept factor, with few statuses changed since, tries GMRES with it first. That
 // solve is accepted only at a direct solve's backward error and skips the condition test below
-// (which the kept factor passed); a body held only by contact that loses its hold is caught
-// before the solve (body_hold), not by that test.
+// (which the kept factor passed). A body held only by contact that loses its hold is caught
+// before the solve (body_hold), not by that test; a system that the few changed statuses made
+// singular otherwise (slip directions leaving a rotation free) is refused only when its
+// right-hand side lies outside its range, where no solve reaches that backward error.
 bool solve_equilibrated(LinearisedSystem& system, const std::vector<NodeStatus>& status,
                         const ActiveSetOptions& options, LinearisedFactor* factor,
                         Eigen::VectorXd& x) {
