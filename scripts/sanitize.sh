@@ -14,11 +14,13 @@ build=${STYK_ASAN_BUILD_DIR:-build-asan}
 jobs=${STYK_JOBS:-$(nproc)}
 
 scripts/install-deps.sh --test
-if [[ ! -f "$build/build.ninja" ]]; then
-  # RelWithDebInfo: -O2 keeps the suites' run time reasonable, -g names the lines in reports.
-  cmake -S . -B "$build" -G Ninja -DSTYK_SANITIZE=ON -DSTYK_GUI=ON \
-    -DCMAKE_BUILD_TYPE=RelWithDebInfo ${STYK_CMAKE_ARGS:-} >/dev/null
-fi
+# Configured every time (a few seconds), so that a build directory made before the GUI was
+# included gets it too. RelWithDebInfo: -O2 keeps the suites' run time reasonable, -g names the
+# lines in reports.
+generator=()
+[[ -f "$build/CMakeCache.txt" ]] || generator=(-G Ninja)
+cmake -S . -B "$build" "${generator[@]}" -DSTYK_SANITIZE=ON -DSTYK_GUI=ON \
+  -DCMAKE_BUILD_TYPE=RelWithDebInfo ${STYK_CMAKE_ARGS:-} >/dev/null
 targets=()
 for target in ${STYK_ASAN_TARGETS:-}; do targets+=(--target "$target"); done
 cmake --build "$build" -j "$jobs" "${targets[@]}"
