@@ -87,6 +87,21 @@ ContactOperator::ReducedRows ContactOperator::reduced_rows(
   return rows;
 }
 
+LinearSolver::SparseColumn ContactOperator::sparse_column(
+    const std::vector<std::pair<int, double>>& row, std::vector<int>& local,
+    std::vector<int>& wanted) {
+  LinearSolver::SparseColumn column;
+  for (const auto& [dof, v] : row) {
+    column.dof.push_back(dof);
+    column.value.push_back(v);
+    if (local[dof] < 0) {
+      local[dof] = static_cast<int>(wanted.size());
+      wanted.push_back(dof);
+    }
+  }
+  return column;
+}
+
 Eigen::MatrixXd ContactOperator::compliance(LinearSolver& solver, int active_dofs,
                                             const ModelConstraints& kinematic, int block) const {
   const ReducedRows row_terms = reduced_rows(active_dofs, kinematic);
@@ -99,18 +114,7 @@ Eigen::MatrixXd ContactOperator::compliance(LinearSolver& solver, int active_dof
   std::vector<LinearSolver::SparseColumn> F;
   std::vector<int> wanted;
   std::vector<int> local(active_dofs, -1);  // per active dof: index into wanted
-  for (int i : columns) {
-    LinearSolver::SparseColumn column;
-    for (const auto& [j, v] : row_terms[i]) {
-      column.dof.push_back(j);
-      column.value.push_back(v);
-      if (local[j] < 0) {
-        local[j] = static_cast<int>(wanted.size());
-        wanted.push_back(j);
-      }
-    }
-    F.push_back(std::move(column));
-  }
+  for (int i : columns) F.push_back(sparse_column(row_terms[i], local, wanted));
   // S_ij = (B R P)_i x_j: row i's reduced terms dotted with the solution at the wanted dofs.
   solver.solve_sparse_columns(F, wanted, active_dofs, block,
                               [&](const std::vector<int>& solved, const Eigen::MatrixXd& X) {

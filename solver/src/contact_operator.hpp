@@ -45,6 +45,13 @@ class ContactOperator {
   using ReducedRows = std::vector<std::vector<std::pair<int, double>>>;
   ReducedRows reduced_rows(int active_dofs, const ModelConstraints& kinematic) const;
 
+  // One reduced row as a sparse right-hand side of K. Its dofs not yet among `wanted` (the dofs
+  // the solution is wanted at) are appended there; `local` maps an active dof to its index in
+  // `wanted`, -1 until it is added.
+  static LinearSolver::SparseColumn sparse_column(const std::vector<std::pair<int, double>>& row,
+                                                  std::vector<int>& local,
+                                                  std::vector<int>& wanted);
+
  private:
   std::vector<int> ptr_;  // row i: entries ptr_[i] .. ptr_[i+1]
   std::vector<int> dof_;  // active dof

@@ -88,16 +88,7 @@ void SparseContactStructure::calibrate_blocks() {
   for (int s = 0; s < sample; ++s) {
     const int j = candidates[static_cast<std::size_t>(s) * candidates.size() / sample];
     sampled.push_back(j);
-    LinearSolver::SparseColumn column;
-    for (const auto& [dof, v] : rows_[3 * j]) {
-      column.dof.push_back(dof);
-      column.value.push_back(v);
-      if (local[dof] < 0) {
-        local[dof] = static_cast<int>(wanted.size());
-        wanted.push_back(dof);
-      }
-    }
-    F.push_back(std::move(column));
+    F.push_back(ContactOperator::sparse_column(rows_[3 * j], local, wanted));
   }
   std::vector<double> ratio(sample, 0.0);
   solver_->solve_sparse_columns(F, wanted, active_dofs_, sample,
