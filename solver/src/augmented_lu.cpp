@@ -17,7 +17,7 @@ void AugmentedMatrix::end_row() {
 }
 
 double backward_error(const AugmentedMatrix& A, const std::vector<double>& x,
-                      const std::vector<double>& b) {
+                      const std::vector<double>& b, std::vector<double>* residual) {
   double worst = 0.0;
   for (int i = 0; i < A.size(); ++i) {
     double sum = -b[i], scale = std::abs(b[i]);
@@ -25,6 +25,7 @@ double backward_error(const AugmentedMatrix& A, const std::vector<double>& x,
       sum += A.value[p] * x[A.col[p]];
       scale += std::abs(A.value[p] * x[A.col[p]]);
     }
+    if (residual) (*residual)[i] = -sum;
     if (!std::isfinite(sum)) return 1.0;
     if (scale > 0.0) worst = std::max(worst, std::abs(sum) / scale);
   }

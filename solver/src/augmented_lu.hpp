@@ -21,9 +21,10 @@ struct AugmentedMatrix {
 };
 
 // max_i |A x - b|_i / (|A| |x| + |b|)_i: the componentwise backward error of x (Oettli-Prager),
-// row by row, so the contact rows are judged at their own scale, not at K's.
+// row by row, so the contact rows are judged at their own scale, not at K's. `residual` (when
+// given, of A's size) receives b - A x from the same pass.
 double backward_error(const AugmentedMatrix& A, const std::vector<double>& x,
-                      const std::vector<double>& b);
+                      const std::vector<double>& b, std::vector<double>* residual = nullptr);
 
 class AugmentedLu {
  public:
@@ -40,9 +41,10 @@ class AugmentedLu {
   int factorisations() const { return factorisations_; }
 
  private:
-  void refine(const AugmentedMatrix& A, const std::vector<double>& row,
-              const std::vector<double>& column, const std::vector<double>& b,
-              std::vector<double>& x) const;
+  // Returns the backward error of the x it leaves.
+  double refine(const AugmentedMatrix& A, const std::vector<double>& row,
+                const std::vector<double>& column, const std::vector<double>& b,
+                std::vector<double>& x) const;
   void solve_scaled(std::vector<double>& rhs, std::vector<double>& solution) const;
 
   struct Mumps;

@@ -134,18 +134,17 @@ bool AugmentedLu::solve(const AugmentedMatrix& A, const std::vector<double>& b,
                              std::to_string(static_cast<int>(error)) + ")");
   }
   MatDestroy(&M);
-  refine(A, scaled.row, scaled.column, b, x);
-  return backward_error(A, x, b) <= kSingularBackwardError;
+  return refine(A, scaled.row, scaled.column, b, x) <= kSingularBackwardError;
 }
 
 // x = A^-1 b through the equilibrated factor, then iterative refinement on A itself while the
 // componentwise backward error falls (MUMPS' own refinement, ICNTL(10), left 4e-6 on the
 // cantilevers' slip rows; three steps of this bring it to ~1e-15).
-void AugmentedLu::refine(const AugmentedMatrix& A, const std::vector<double>& row,
-                         const std::vector<double>& column, const std::vector<double>& b,
-                         std::vector<double>& x) const {
+double AugmentedLu::refine(const AugmentedMatrix& A, const std::vector<double>& row,
+                           const std::vector<double>& column, const std::vector<double>& b,
+                           std::vector<double>& x) const {
   const int n = A.size();
-  std::vector<double> residual = b, correction(n, 0.0);
+  std::vector<double> residual = b, next_residual(n), correction(n, 0.0);
   std::fill(x.begin(), x.end(), 0.0);
   double error = std::numeric_limits<double>::infinity();
   for (int step = 0; step <= kRefinementSteps; ++step) {
@@ -154,17 +153,15 @@ void AugmentedLu::refine(const AugmentedMatrix& A, const std::vector<double>& ro
     solve_scaled(rhs, correction);
     std::vector<double> next = x;
     for (int i = 0; i < n; ++i) next[i] += column[i] * correction[i];
-    const double next_error = backward_error(A, next, b);
+    // One pass over A for both: the error decides, the residual feeds the next step.
+    const double next_error = backward_error(A, next, b, &next_residual);
     if (!(next_error < error)) break;
     x = std::move(next);
+    std::swap(residual, next_residual);
     error = next_error;
     if (error <= kConvergedBackwardError) break;
-    for (int i = 0; i < n; ++i) {
-      double sum = b[i];
-      for (int p = A.ptr[i]; p < A.ptr[i + 1]; ++p) sum -= A.value[p] * x[A.col[p]];
-      residual[i] = sum;
-    }
   }
+  return error;
 }
 
 void AugmentedLu::solve_scaled(std::vector<double>& rhs, std::vector<double>& solution) const {

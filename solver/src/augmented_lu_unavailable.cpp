@@ -15,9 +15,11 @@ bool AugmentedLu::solve(const AugmentedMatrix&, const std::vector<double>&, std:
   throw std::runtime_error("the sparse contact solve needs PETSc with MUMPS");
 }
 
-void AugmentedLu::refine(const AugmentedMatrix&, const std::vector<double>&,
-                         const std::vector<double>&, const std::vector<double>&,
-                         std::vector<double>&) const {}
+double AugmentedLu::refine(const AugmentedMatrix&, const std::vector<double>&,
+                           const std::vector<double>&, const std::vector<double>&,
+                           std::vector<double>&) const {
+  return 1.0;
+}
 void AugmentedLu::solve_scaled(std::vector<double>&, std::vector<double>&) const {}
 
 bool augmented_lu_available() { return false; }
