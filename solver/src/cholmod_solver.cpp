@@ -13,6 +13,7 @@
 
 #include "blas_kernels.hpp"
 #include "cholmod_handles.hpp"
+#include "extended_refinement.hpp"
 #include "linear_solver.hpp"
 #include "node_ordering.hpp"
 #include "parallel.hpp"
@@ -76,7 +77,9 @@ class CholmodSolver final : public LinearSolver {
     check_residual(b.get(), x.get());
 
     const double* xv = static_cast<const double*>(x->x);
-    for (std::size_t i = 0; i < n; ++i) u[partition.free_dofs[i]] = xv[i];
+    std::vector<double> free_u(xv, xv + n);
+    refine(f, prescribed_value, free_u);
+    for (std::size_t i = 0; i < n; ++i) u[partition.free_dofs[i]] = free_u[i];
     return u;
   }
 
@@ -308,6 +311,51 @@ class CholmodSolver final : public LinearSolver {
       }
     }
     return -1;
+  }
+
+  // Refinement in extended precision (extended_refinement.hpp): the answer of the assembled
+  // system, whichever factorisation (and, distributed, whichever number of ranks) found it.
+  void refine(const std::vector<double>& f, const std::vector<double>& prescribed_value,
+              std::vector<double>& x) {
+    cholmod_common* c = common_->get();
+    const auto n = static_cast<std::size_t>(partition_.free_count());
+    const ExtendedResidual residual = [&](const std::vector<double>& y, std::vector<double>& r) {
+      r = extended_free_residual(f, prescribed_value, y);
+    };
+    const Correction correct = [&](const std::vector<double>& r) {
+      CholmodDense b(cholmod_l_allocate_dense(n, 1, n, CHOLMOD_REAL, c), CholmodDenseDeleter{c});
+      if (!b) throw std::runtime_error("CHOLMOD: out of memory for the right-hand side");
+      std::copy(r.begin(), r.end(), static_cast<double*>(b->x));
+      CholmodDense d(cholmod_l_solve(CHOLMOD_A, L_.get(), b.get(), c), CholmodDenseDeleter{c});
+      if (!d) throw std::runtime_error("CHOLMOD: the triangular solves failed");
+      const double* dv = static_cast<const double*>(d->x);
+      return std::vector<double>(dv, dv + n);
+    };
+    refine_in_extended_precision(x, residual, correct);
+  }
+
+  // f_f - K_fp u_p - K_ff x over the free dofs, in extended precision, rounded once. K_ff is
+  // the upper triangle A_ (column j holds rows i <= j): entry (i, j) acts on both rows.
+  std::vector<double> extended_free_residual(const std::vector<double>& f,
+                                             const std::vector<double>& prescribed_value,
+                                             const std::vector<double>& x) const {
+    const DofPartition& partition = partition_;
+    const std::size_t n = x.size();
+    std::vector<long double> r(n);
+    for (std::size_t i = 0; i < n; ++i) r[i] = f[partition.free_dofs[i]];
+    for (const CouplingEntry& entry : coupling_)
+      r[entry.free_row] -= static_cast<long double>(entry.value) * prescribed_value[entry.dof];
+    const auto* Ap = static_cast<const SuiteSparse_long*>(A_->p);
+    const auto* Ai = static_cast<const SuiteSparse_long*>(A_->i);
+    const auto* Ax = static_cast<const double*>(A_->x);
+    for (std::size_t j = 0; j < n; ++j)
+      for (SuiteSparse_long p = Ap[j]; p < Ap[j + 1]; ++p) {
+        const auto i = static_cast<std::size_t>(Ai[p]);
+        const long double a = Ax[p];
+        r[i] -= a * x[j];
+        if (i != j) r[j] -= a * x[i];
+      }
+    return std::vector<double>(r.begin(), r.end());
   }
 
   // The solve is accepted when its normwise backward error

@@ -8,6 +8,7 @@
 
 #include "analysis_setup.hpp"
 #include "assembly.hpp"
+#include "extended_refinement.hpp"
 #include "parallel.hpp"
 #include "phase_recorder.hpp"
 #include "scalar_element.hpp"
@@ -124,14 +125,16 @@ class ScalarSolve final : public ScalarLinearSolve {
     Eigen::VectorXd rhs(free_.size());
     for (std::size_t i = 0; i < free_.size(); ++i) rhs(i) = f(free_[i]);
     rhs -= Kfp_ * phi;
-    const Eigen::VectorXd x = factor_->solve(rhs);
+    const Eigen::VectorXd first = factor_->solve(rhs);
     const double scale = rhs.norm();
-    if (factor_->info() != Eigen::Success || !x.allFinite() ||
-        (scale > 0.0 && !((Kff_ * x - rhs).norm() <= 1e-8 * scale)))
+    if (factor_->info() != Eigen::Success || !first.allFinite() ||
+        (scale > 0.0 && !((Kff_ * first - rhs).norm() <= 1e-8 * scale)))
       throw InputError(where,
                        "the conductance matrix is nearly singular: badly distorted "
                        "elements or conductivities of very different magnitudes");
-    for (std::size_t i = 0; i < free_.size(); ++i) phi(free_[i]) = x(i);
+    std::vector<double> x(first.data(), first.data() + first.size());
+    refine(f, phi, x);
+    for (std::size_t i = 0; i < free_.size(); ++i) phi(free_[i]) = x[i];
     return phi;
   }
 
@@ -140,6 +143,28 @@ class ScalarSolve final : public ScalarLinearSolve {
   }
 
  private:
+  // Refinement in extended precision (extended_refinement.hpp), as the mechanical solves: the
+  // answer of the assembled system, serial or distributed. `phi` holds the prescribed values.
+  void refine(const Eigen::VectorXd& f, const Eigen::VectorXd& phi, std::vector<double>& x) const {
+    const ExtendedResidual residual = [&](const std::vector<double>& y, std::vector<double>& r) {
+      std::vector<long double> sum(free_.size());
+      for (std::size_t i = 0; i < free_.size(); ++i) sum[i] = f(free_[i]);
+      for (int j = 0; j < Kfp_.outerSize(); ++j)
+        for (SparseMatrix::InnerIterator it(Kfp_, j); it; ++it)
+          sum[it.row()] -= static_cast<long double>(it.value()) * phi(j);
+      for (int j = 0; j < Kff_.outerSize(); ++j)
+        for (SparseMatrix::InnerIterator it(Kff_, j); it; ++it)
+          sum[it.row()] -= static_cast<long double>(it.value()) * y[j];
+      r.assign(sum.begin(), sum.end());
+    };
+    const Correction correct = [&](const std::vector<double>& r) {
+      const Eigen::VectorXd d =
+          factor_->solve(Eigen::Map<const Eigen::VectorXd>(r.data(), r.size()));
+      return std::vector<double>(d.data(), d.data() + d.size());
+    };
+    refine_in_extended_precision(x, residual, correct);
+  }
+
   std::vector<int> free_of_unknown_;
   std::vector<int> free_;
   SparseMatrix Kff_, Kfp_;

@@ -166,7 +166,9 @@ TEST_F(AtlasWarnings, BeamLockingWarningBracketsTheThinLimit) {
 // elements under a uniform load that part is small: the error levels off at 0.52 %, and the
 // warning, which weighs the locked part by (l / L)^2 / 3 = 0.52 % (solver/src/beam_warnings.cpp),
 // stays silent. At L/h = 1e4 (A / I = 1.2e9) the direct solver accepts the quadratic beams on
-// their backward error (docs/solver.md §5): B32 and B22 stay at 3.6e-6, the FULL ones at 0.52 %.
+// their backward error (docs/solver.md §5): B32 and B22 stay at 2.7e-6 (round-off of a system that
+// ill-conditioned: 3.6e-6 before the solves were refined in extended precision), the FULL ones at
+// 0.52 %.
 // (One element per member is warned of: tests/verification/beam_warnings_test.cpp.)
 TEST_F(AtlasWarnings, QuadraticFullBeamsStaySilentWhereTheyStayAccurate) {
   for (const char* family : {"B32-FULL", "B22-FULL"}) {
@@ -178,7 +180,7 @@ TEST_F(AtlasWarnings, QuadraticFullBeamsStaySilentWhereTheyStayAccurate) {
     const RunRecord r = run("thin-beam", family, 10000, false);
     ASSERT_TRUE(r.ok()) << family << ": " << r.failure;
     const bool full = std::string(family).find("FULL") != std::string::npos;
-    EXPECT_NEAR(*r.error_of(kStabilityMeasure), full ? 0.0052 : 3.6e-6, full ? 1e-4 : 1e-7)
+    EXPECT_NEAR(*r.error_of(kStabilityMeasure), full ? 0.0052 : 2.7e-6, full ? 1e-4 : 1e-7)
         << family;
     EXPECT_TRUE(r.warnings.empty()) << family;
   }
