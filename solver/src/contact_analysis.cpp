@@ -190,7 +190,8 @@ class ContactAnalysis {
   std::optional<RankShare> rank_share(const SolveOptions& options) const {
     if (!options.distributed) return std::nullopt;
     const PhaseRecorder::Scope phase(phases_, "partition");
-    RankShare share = share_of_rank(model_, prepared_, K_.graph(), join_mpi_world());
+    RankShare share = share_of_rank(model_, prepared_, K_.graph(), join_mpi_world(),
+                                    kinematic_.equations().dependent_dofs());
     phases_.info("partition: " + std::to_string(share.rows.size) + " ranks, " +
                  std::to_string(share.cut_node_pairs) + " node pairs couple two ranks");
     return share;
@@ -207,7 +208,7 @@ class ContactAnalysis {
   void assemble() {
     const PhaseRecorder::Scope phase(phases_, "assemble");
     assemble_stiffness(model_, prepared_, *stiffness_states_, K_, threads_,
-                       share_ ? &share_->owns_element : nullptr);
+                       share_ ? &share_->assembles_element : nullptr);
     kinematic_.apply(K_);
   }
 

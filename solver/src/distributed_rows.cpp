@@ -27,15 +27,4 @@ RankRows split_rows_by_nodes(const std::vector<int>& dof_offset, int rank, int s
   return rows;
 }
 
-std::vector<int> rows_with_values(const CsrView& K) {
-  std::vector<int> rows;
-  for (int r = 0; r < K.rows; ++r)
-    for (int p = K.row_ptr[r]; p < K.row_ptr[r + 1]; ++p)
-      if (K.values[p] != 0.0) {
-        rows.push_back(r);
-        break;
-      }
-  return rows;
-}
-
 }  // namespace styk::solver_detail

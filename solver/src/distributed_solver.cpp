@@ -1,5 +1,7 @@
 #include "distributed_solver.hpp"
 
+#include <algorithm>
+
 #include "rank_partition.hpp"
 
 namespace styk::solver_detail {
@@ -39,8 +41,8 @@ class DistributedSolver final : public LinearSolver {
     }
     const CsrView view{K.row_ptr().data(), K.col().data(), K.values().data(), K.rows()};
     system_.reset();
-    system_ = std::make_unique<DistributedSystem>(rows_, view, rows_with_values(view), partition,
-                                                  std::move(settings), context_.phases);
+    system_ = std::make_unique<DistributedSystem>(rows_, view, partition, std::move(settings),
+                                                  context_.phases);
     // PETSc holds its own copy of this rank's rows: free K's values before the factor or the
     // multigrid hierarchy takes its memory (a later step that needs them reassembles).
     K.release_values();
@@ -73,16 +75,27 @@ class DistributedSolver final : public LinearSolver {
 }  // namespace
 
 RankShare share_of_rank(const Model& model, const PreparedModel& prepared, const NodeGraph& graph,
-                        const MpiWorld& world) {
+                        const MpiWorld& world, const std::vector<int>& rows_every_rank_needs) {
   RankShare share;
   share.rows = partition_rows_by_graph(graph, prepared.dof_offset, world.rank, world.size);
   share.cut_node_pairs = cut_node_pairs(graph, prepared.dof_offset, share.rows);
-  share.owns_element.assign(model.element_count(), 0);
+  // The active nodes whose rows this rank needs whole.
+  const int active_nodes = prepared.active_nodes();
+  std::vector<char> needed(active_nodes, 0);
+  for (int a = 0; a < active_nodes; ++a)
+    needed[a] = share.rows.owner(share.rows.row(prepared.dof_offset[a])) == world.rank;
+  for (int dof : rows_every_rank_needs) {
+    const auto at = std::upper_bound(prepared.dof_offset.begin(),
+                                     prepared.dof_offset.begin() + active_nodes + 1, dof);
+    needed[static_cast<int>(at - prepared.dof_offset.begin()) - 1] = 1;
+  }
+  share.assembles_element.assign(model.element_count(), 0);
   for (int e = 0; e < model.element_count(); ++e) {
     const int* nodes = model.element_nodes(e);
-    const int a = prepared.active_of_node[nodes[0]];
-    share.owns_element[e] =
-        a >= 0 && share.rows.owner(share.rows.row(prepared.dof_offset[a])) == world.rank;
+    for (int k = 0; k < model.elements[e].node_count && !share.assembles_element[e]; ++k) {
+      const int a = prepared.active_of_node[nodes[k]];
+      share.assembles_element[e] = a >= 0 && needed[a];
+    }
   }
   return share;
 }

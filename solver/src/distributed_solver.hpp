@@ -13,15 +13,19 @@
 namespace styk::solver_detail {
 
 struct RankShare {
-  RankRows rows;                   // the rows (active dofs) this rank owns
-  std::vector<char> owns_element;  // per element: assembled by this rank
-  long long cut_node_pairs = 0;    // node pairs of the graph coupling two ranks
+  RankRows rows;                        // the rows (active dofs) this rank owns
+  std::vector<char> assembles_element;  // per element: assembled by this rank
+  long long cut_node_pairs = 0;         // node pairs of the graph coupling two ranks
 };
 
-// Rows shared by a graph partition of `graph` (rank_partition.hpp); an element belongs to the
-// rank owning its first active node.
+// Rows shared by a graph partition of `graph` (rank_partition.hpp). A rank assembles every element
+// touching a node whose rows it needs whole: its own, and the nodes of `rows_every_rank_needs`
+// (the equations' dependent dofs, whose rows the elimination spreads into their masters' and
+// neighbours' rows). The elements along the cut are assembled by both ranks, and each owned row
+// is summed over the same elements in the same order as serially (assemble_stiffness): the
+// distributed matrix is the serial one bit for bit, with no exchange of partial sums.
 RankShare share_of_rank(const Model& model, const PreparedModel& prepared, const NodeGraph& graph,
-                        const MpiWorld& world);
+                        const MpiWorld& world, const std::vector<int>& rows_every_rank_needs);
 
 // `direct`: MUMPS Cholesky, otherwise CG + GAMG with `tolerance`. prepare() takes K holding this
 // rank's part only (its own elements, *TRANSFORM/*EQUATION applied). Throws std::runtime_error in

@@ -8,6 +8,7 @@
 #include <cstdio>
 #include <stdexcept>
 
+#include "extended_refinement.hpp"
 #include "ksp_progress.hpp"
 #include "p_multigrid.hpp"
 #include "petsc_runtime.hpp"
@@ -109,19 +110,16 @@ std::vector<double> owned_coordinates(const RankRows& rows, const std::vector<do
   return out;
 }
 
-// One line per rank on rank 0's progress: its rows, the rows its elements gave and how long adding
-// them took (how evenly the work is split).
-void report_rank_shares(const RankRows& rows, int contributed, double seconds,
-                        const PhaseRecorder& phases) {
-  const double mine[3] = {static_cast<double>(rows.end() - rows.begin()),
-                          static_cast<double>(contributed), seconds};
-  std::vector<double> all(3 * static_cast<std::size_t>(rows.size));
-  MPI_Gather(mine, 3, MPI_DOUBLE, all.data(), 3, MPI_DOUBLE, 0, PETSC_COMM_WORLD);
+// One line per rank on rank 0's progress: its rows and how long adding them took (how evenly the
+// work is split).
+void report_rank_shares(const RankRows& rows, double seconds, const PhaseRecorder& phases) {
+  const double mine[2] = {static_cast<double>(rows.end() - rows.begin()), seconds};
+  std::vector<double> all(2 * static_cast<std::size_t>(rows.size));
+  MPI_Gather(mine, 2, MPI_DOUBLE, all.data(), 2, MPI_DOUBLE, 0, PETSC_COMM_WORLD);
   if (rows.rank != 0) return;
   for (int r = 0; r < rows.size; ++r)
     phases.info(
-        format("rank %.0f: owns %.0f rows, ", r, all[3 * r], 0.0) +
-        format("its elements gave %.0f rows, added in %.2f s", all[3 * r + 1], all[3 * r + 2]));
+        format("rank %.0f: owns %.0f rows, added in %.2f s", r, all[2 * r], all[2 * r + 1]));
 }
 
 // The distributed vector x on every rank: scattered into `all` (the whole solution) and copied
@@ -145,7 +143,6 @@ InputError singular_matrix(const DistributedSettings& settings) {
 }  // namespace
 
 DistributedSystem::DistributedSystem(const RankRows& rows, const CsrView& K,
-                                     const std::vector<int>& contributed_rows,
                                      const DofPartition& partition, DistributedSettings settings,
                                      const PhaseRecorder& phases)
     : petsc_(std::make_unique<Petsc>(phases)),
@@ -165,17 +162,23 @@ DistributedSystem::DistributedSystem(const RankRows& rows, const CsrView& K,
     petsc_check(MatSetBlockSize(A, settings_.block_size), "MatSetBlockSize");
   preallocate(A, rows_, K);
 
-  // This rank's part of the free rows and of the coupling K_fp; and of the free diagonal, whose
+  // This rank's free rows and their coupling K_fp; and its part of the free diagonal, whose
   // global mean becomes the prescribed rows' diagonal.
   double diagonal_sum = 0.0;
   std::vector<PetscInt> columns;
   std::vector<PetscScalar> values;
-  for (int row : contributed_rows) {
+  for (int global_row = rows_.begin(); global_row < rows_.end(); ++global_row) {
+    const int row = rows_.dof(global_row);
     if (free_of[row] < 0) continue;
     columns.clear();
     values.clear();
+    if (settings_.direct) kept_.dof.push_back(row);
     for (int p = K.row_ptr[row]; p < K.row_ptr[row + 1]; ++p) {
       const int c = K.col[p];
+      if (settings_.direct && K.values[p] != 0.0) {
+        kept_.col.push_back(c);
+        kept_.values.push_back(K.values[p]);
+      }
       if (free_of[c] < 0) {
         if (K.values[p] != 0.0) coupling_.push_back({row, c, K.values[p]});
         continue;
@@ -184,9 +187,10 @@ DistributedSystem::DistributedSystem(const RankRows& rows, const CsrView& K,
       columns.push_back(rows_.row(c));
       values.push_back(K.values[p]);
     }
-    const PetscInt global_row = rows_.row(row);
-    petsc_check(MatSetValues(A, 1, &global_row, static_cast<PetscInt>(columns.size()),
-                             columns.data(), values.data(), ADD_VALUES),
+    if (settings_.direct) kept_.row_ptr.push_back(static_cast<int>(kept_.col.size()));
+    const PetscInt petsc_row = global_row;
+    petsc_check(MatSetValues(A, 1, &petsc_row, static_cast<PetscInt>(columns.size()),
+                             columns.data(), values.data(), INSERT_VALUES),
                 "MatSetValues");
   }
   MPI_Allreduce(MPI_IN_PLACE, &diagonal_sum, 1, MPI_DOUBLE, MPI_SUM, PETSC_COMM_WORLD);
@@ -196,11 +200,10 @@ DistributedSystem::DistributedSystem(const RankRows& rows, const CsrView& K,
   for (int row = rows_.begin(); row < rows_.end(); ++row)
     if (free_of[rows_.dof(row)] < 0) {
       const PetscInt global_row = row;
-      petsc_check(MatSetValues(A, 1, &global_row, 1, &global_row, &diagonal_, ADD_VALUES),
+      petsc_check(MatSetValues(A, 1, &global_row, 1, &global_row, &diagonal_, INSERT_VALUES),
                   "MatSetValues");
     }
-  report_rank_shares(rows_, static_cast<int>(contributed_rows.size()), seconds_since(start),
-                     phases_);
+  report_rank_shares(rows_, seconds_since(start), phases_);
   petsc_check(MatAssemblyBegin(A, MAT_FINAL_ASSEMBLY), "MatAssemblyBegin");
   petsc_check(MatAssemblyEnd(A, MAT_FINAL_ASSEMBLY), "MatAssemblyEnd");
   petsc_check(MatSetOption(A, MAT_SYMMETRIC, PETSC_TRUE), "MatSetOption");
@@ -256,6 +259,42 @@ std::string DistributedSystem::description() const {
 
 std::vector<double> DistributedSystem::solve(const std::vector<double>& f,
                                              const std::vector<double>& prescribed_value) {
+  const auto start = std::chrono::steady_clock::now();
+  double relative = 0.0;
+  std::vector<double> u = solve_once(f, prescribed_value, &relative);
+  if (!settings_.direct) return u;
+  const RefinementOutcome refined = refine(f, u);
+  phases_.info(
+      format("MUMPS: solved in %.2f s, relative residual %.2g, ", seconds_since(start), relative) +
+      format("%.0f corrections in extended precision (last %.2g of the solution)",
+             refined.corrections, refined.last_change));
+  return u;
+}
+
+RefinementOutcome DistributedSystem::refine(const std::vector<double>& f, std::vector<double>& u) {
+  // The residual of this rank's free rows (whole rows: the solve reads only the owner's rows of
+  // its right-hand side); every rank holds the whole correction and x, so the stopping decisions
+  // agree across ranks.
+  const ExtendedResidual residual = [&](const std::vector<double>& x, std::vector<double>& r) {
+    std::fill(r.begin(), r.end(), 0.0);
+    for (std::size_t k = 0; k < kept_.dof.size(); ++k) {
+      const int first = kept_.row_ptr[k];
+      const int dof = kept_.dof[k];
+      r[dof] = static_cast<double>(extended_row_residual(f[dof], kept_.col.data() + first,
+                                                         kept_.values.data() + first,
+                                                         kept_.row_ptr[k + 1] - first, x));
+    }
+  };
+  const std::vector<double> zero(u.size(), 0.0);
+  const Correction correct = [&](const std::vector<double>& r) {
+    return solve_once(r, zero, nullptr);
+  };
+  return refine_in_extended_precision(u, residual, correct);
+}
+
+std::vector<double> DistributedSystem::solve_once(const std::vector<double>& f,
+                                                  const std::vector<double>& prescribed_value,
+                                                  double* relative_residual) {
   Vec b = petsc_->b, x = petsc_->x;
   petsc_check(VecSet(b, 0.0), "VecSet");
   const std::vector<int>& free_of = partition_.free_of_dof;
@@ -306,10 +345,8 @@ std::vector<double> DistributedSystem::solve(const std::vector<double>& f,
       throw InputError(settings_.where,
                        "the " + settings_.what + " matrix is nearly singular: the distributed " +
                            format("solve left a relative residual of %.3g", relative));
-    if (settings_.direct)
-      phases_.info(format("MUMPS: solved in %.2f s, relative residual %.2g", seconds_since(start),
-                          relative));
-    else
+    if (relative_residual != nullptr) *relative_residual = relative;
+    if (!settings_.direct)
       phases_.info(format("CG + GAMG: %.0f iterations in %.2f s, relative residual %.2g",
                           static_cast<double>(its), seconds_since(start), relative));
   }

@@ -12,6 +12,7 @@
 #include <string>
 #include <vector>
 
+#include "extended_refinement.hpp"
 #include "linear_coarse_space.hpp"
 #include "linear_solver.hpp"
 #include "phase_recorder.hpp"
@@ -64,16 +65,19 @@ struct DistributedSettings {
 
 class DistributedSystem {
  public:
-  // `contributed_rows`: the rows of `K` holding this rank's part (sorted). Collective.
-  DistributedSystem(const RankRows& rows, const CsrView& K,
-                    const std::vector<int>& contributed_rows, const DofPartition& partition,
+  // `K` holds the rows this rank owns whole (the values of other rows are not read): every rank
+  // assembles the elements touching its rows (share_of_rank), so each row is summed in the
+  // serial order and the distributed matrix is the serial one bit for bit. Collective.
+  DistributedSystem(const RankRows& rows, const CsrView& K, const DofPartition& partition,
                     DistributedSettings settings, const PhaseRecorder& phases);
   ~DistributedSystem();
   DistributedSystem(const DistributedSystem&) = delete;
   DistributedSystem& operator=(const DistributedSystem&) = delete;
 
   // The solution on all active dofs, on every rank. `f` is the same on every rank (each owner
-  // adds its rows); `prescribed_value` is indexed by active dof. Collective.
+  // adds its rows); `prescribed_value` is indexed by active dof. Collective. The direct solver
+  // refines its answer with residuals in extended precision (extended_refinement.hpp): the
+  // serial solver's answer to the last bits.
   std::vector<double> solve(const std::vector<double>& f,
                             const std::vector<double>& prescribed_value);
   // Direct solver only: K_ff X = F for `columns` right-hand sides at once (column-major, active
@@ -88,10 +92,20 @@ class DistributedSystem {
   struct Petsc;
   std::unique_ptr<Petsc> petsc_;
   RankRows rows_;
+  std::vector<double> solve_once(const std::vector<double>& f,
+                                 const std::vector<double>& prescribed_value,
+                                 double* relative_residual);
+  RefinementOutcome refine(const std::vector<double>& f, std::vector<double>& u);
   DofPartition partition_;
   DistributedSettings settings_;
   const PhaseRecorder& phases_;
   std::vector<CouplingEntry> coupling_;  // this rank's part of K_fp (free_row = active dof)
+  // Direct solver: this rank's free rows of K, whole (prescribed columns included), for the
+  // refinement's residual (extended_refinement.hpp); columns are active dofs.
+  struct KeptRows {
+    std::vector<int> dof, row_ptr{0}, col;
+    std::vector<double> values;
+  } kept_;
   double diagonal_ = 1.0;
   int iterations_ = 0;
 };
@@ -99,8 +113,5 @@ class DistributedSystem {
 // False when PETSC_OPTIONS has "-styk_p_multigrid false" (plain GAMG on quadratic meshes, for
 // comparisons) or the build has no PETSc.
 bool p_multigrid_requested();
-
-// The rows of `K` with a nonzero value (this rank's part after assembling its own elements).
-std::vector<int> rows_with_values(const CsrView& K);
 
 }  // namespace styk::solver_detail

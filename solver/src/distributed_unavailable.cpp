@@ -7,7 +7,7 @@ namespace styk::solver_detail {
 
 struct DistributedSystem::Petsc {};
 
-DistributedSystem::DistributedSystem(const RankRows& rows, const CsrView&, const std::vector<int>&,
+DistributedSystem::DistributedSystem(const RankRows& rows, const CsrView&,
                                      const DofPartition& partition, DistributedSettings settings,
                                      const PhaseRecorder& phases)
     : rows_(rows), partition_(partition), settings_(std::move(settings)), phases_(phases) {

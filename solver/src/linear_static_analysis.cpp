@@ -122,11 +122,12 @@ Results run_linear_static_analysis(const Model& model, const ElementRegistry& re
   std::optional<RankShare> share;
   if (options.distributed) {
     const PhaseRecorder::Scope phase(phases, "partition");
-    share = share_of_rank(model, prepared, K->graph(), join_mpi_world());
+    share = share_of_rank(model, prepared, K->graph(), join_mpi_world(),
+                          constraints.equations().dependent_dofs());
     phases.info("partition: " + std::to_string(share->rows.size) + " ranks, " +
                 std::to_string(share->cut_node_pairs) + " node pairs couple two ranks");
   }
-  const std::vector<char>* owned_elements = share ? &share->owns_element : nullptr;
+  const std::vector<char>* owned_elements = share ? &share->assembles_element : nullptr;
   // The elements' material state of step k (materials, temperatures, initial stresses).
   auto states_of = [&](std::size_t k) {
     return ElementStates(model, prepared, k, temperatures[k].empty() ? nullptr : &temperatures[k]);

@@ -32,16 +32,13 @@ class DistributedScalarSolve final : public ScalarLinearSolve {
     // K is symmetric and compressed column-major: its columns are its rows.
     const CsrView view{K.outerIndexPtr(), K.innerIndexPtr(), K.valuePtr(), n};
     // Every rank assembled the whole conductance: each adds the rows it owns.
-    std::vector<int> own;
-    for (int row = rows.begin(); row < rows.end(); ++row) own.push_back(rows.dof(row));
-    std::sort(own.begin(), own.end());
     DistributedSettings settings;
     settings.direct = true;
     settings.residual_limit = 1e-8;  // as the serial solve
     settings.what = "conductance";
     settings.where = where;
-    system_ = std::make_unique<DistributedSystem>(rows, view, own, partition_, std::move(settings),
-                                                  phases);
+    system_ =
+        std::make_unique<DistributedSystem>(rows, view, partition_, std::move(settings), phases);
   }
 
   int free_count() const override { return partition_.free_count(); }
