@@ -78,7 +78,7 @@ class CholmodSolver final : public LinearSolver {
 
     const double* xv = static_cast<const double*>(x->x);
     std::vector<double> free_u(xv, xv + n);
-    refine(f, prescribed_value, free_u);
+    if (context_.refine_solutions) refine(f, prescribed_value, free_u);
     for (std::size_t i = 0; i < n; ++i) u[partition.free_dofs[i]] = free_u[i];
     return u;
   }

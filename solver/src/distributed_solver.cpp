@@ -22,6 +22,7 @@ class DistributedSolver final : public LinearSolver {
     const PreparedModel& prepared = context_.prepared;
     DistributedSettings settings;
     settings.direct = direct_;
+    settings.refine = context_.refine_solutions;
     settings.tolerance = tolerance_;
     settings.block_size = prepared.has_rotations() ? 1 : 3;
     settings.where = SourceLoc{context_.model.source, 0};

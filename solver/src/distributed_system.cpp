@@ -172,10 +172,11 @@ DistributedSystem::DistributedSystem(const RankRows& rows, const CsrView& K,
     if (free_of[row] < 0) continue;
     columns.clear();
     values.clear();
-    if (settings_.direct) kept_.dof.push_back(row);
+    const bool keep = settings_.direct && settings_.refine;
+    if (keep) kept_.dof.push_back(row);
     for (int p = K.row_ptr[row]; p < K.row_ptr[row + 1]; ++p) {
       const int c = K.col[p];
-      if (settings_.direct && K.values[p] != 0.0) {
+      if (keep && K.values[p] != 0.0) {
         kept_.col.push_back(c);
         kept_.values.push_back(K.values[p]);
       }
@@ -187,7 +188,7 @@ DistributedSystem::DistributedSystem(const RankRows& rows, const CsrView& K,
       columns.push_back(rows_.row(c));
       values.push_back(K.values[p]);
     }
-    if (settings_.direct) kept_.row_ptr.push_back(static_cast<int>(kept_.col.size()));
+    if (keep) kept_.row_ptr.push_back(static_cast<int>(kept_.col.size()));
     const PetscInt petsc_row = global_row;
     petsc_check(MatSetValues(A, 1, &petsc_row, static_cast<PetscInt>(columns.size()),
                              columns.data(), values.data(), INSERT_VALUES),
@@ -263,11 +264,16 @@ std::vector<double> DistributedSystem::solve(const std::vector<double>& f,
   double relative = 0.0;
   std::vector<double> u = solve_once(f, prescribed_value, &relative);
   if (!settings_.direct) return u;
+  const std::string solved =
+      format("MUMPS: solved in %.2f s, relative residual %.2g", seconds_since(start), relative);
+  if (!settings_.refine) {
+    phases_.info(solved);
+    return u;
+  }
   const RefinementOutcome refined = refine(f, u);
-  phases_.info(
-      format("MUMPS: solved in %.2f s, relative residual %.2g, ", seconds_since(start), relative) +
-      format("%.0f corrections in extended precision (last %.2g of the solution)",
-             refined.corrections, refined.last_change));
+  phases_.info(solved + format(", %.0f corrections in extended precision (last %.2g of the "
+                               "solution)",
+                               refined.corrections, refined.last_change));
   return u;
 }
 

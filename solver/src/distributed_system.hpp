@@ -59,6 +59,7 @@ struct DistributedSettings {
   // coordinates per coarse node; none: plain GAMG.
   std::optional<LinearCoarseSpace> coarse;
   std::vector<double> corner_coordinates;
+  bool refine = true;  // direct solver: refine solve()'s answer (extended_refinement.hpp)
   std::string what = "stiffness";  // names the matrix in messages
   SourceLoc where;                 // the deck, for a singular matrix
 };

@@ -21,8 +21,8 @@ using ExtendedResidual = std::function<void(const std::vector<double>& x, std::v
 using Correction = std::function<std::vector<double>(const std::vector<double>& r)>;
 
 struct RefinementOutcome {
-  int corrections = 0;         // corrections applied
-  double last_change = 0.0;    // ||d||_inf / ||x||_inf of the last correction computed
+  int corrections = 0;       // corrections applied
+  double last_change = 0.0;  // ||d||_inf / ||x||_inf of the last correction computed
 };
 
 // Refines x in place. Stops after applying a correction of at most 1e-9 of x (the contraction is

@@ -49,6 +49,8 @@ struct SolverContext {
   const PhaseRecorder& phases;
   int threads = 1;
   double memory_limit_gb = 0.0;  // SolveOptions::memory_limit_gb
+  // Direct solvers refine solve()'s answer in extended precision (extended_refinement.hpp).
+  bool refine_solutions = true;
 };
 
 // Thrown by a direct solver whose factor would not fit in memory (the analysis may then switch to
