@@ -399,6 +399,28 @@ TEST_F(MortarContact, ConcentricCylindersFourSlaveElementsOnSix) {
   ::testing::Test::RecordProperty("versus_matching_C3D21_4_on_6", sci(difference));
 }
 
+// Why the C3D21 layer with 4 elements around the quarter misses 0.5 %: its slave faces
+// interpolate the circle with quadratics, whose curvature varies along an element by a relative
+// O(alpha^2) (alpha: the element's angle), and the hoop stiffness turns that into pressure. On
+// matching meshes (no pairing error) the worst nodal deviation from Lamé falls with the square of
+// the element angle: measured 4 around 0.767 %, 6 around 0.344 %, 8 around 0.194 %, ratios 2.23
+// and 3.96 against (6/4)^2 = 2.25 and (8/4)^2 = 4 (asserted within 0.15 and 0.3). So the 0.5 % of
+// the non-matching 4-on-6 target needs 6 C3D21 elements around the quarter (0.344 %) or the C3D28
+// layer (cubic faces, 0.06 % with 4 around, above); it is not a property of the mortar pairing.
+TEST_F(MortarContact, C3D21LayerDeviationFallsWithTheSquareOfTheElementAngle) {
+  const int around[3] = {4, 6, 8};
+  double worst[3] = {0.0, 0.0, 0.0};
+  for (int k = 0; k < 3; ++k) {
+    const PressureMap pressures =
+        expect_uniform_lame(registry(), around[k], around[k], "C3D21", 0.008);
+    for (const auto& [at, p] : pressures) worst[k] = std::max(worst[k], std::abs(p / 3.294 - 1.0));
+  }
+  std::printf("C3D21 layer, matching: 4 around %.4g, 6 around %.4g, 8 around %.4g\n", worst[0],
+              worst[1], worst[2]);
+  EXPECT_NEAR(worst[0] / worst[1], 2.25, 0.15);
+  EXPECT_NEAR(worst[0] / worst[2], 4.0, 0.3);
+}
+
 // On matching meshes the mortar weights are 1 on the coincident master node (the dual function's
 // integral against the master's shape functions is D_j delta_jk) when the two faces are the same
 // surface. On the 4 on 4 cylinders the C3D21 slave face (9 nodes) and the C3D20 master face (8

@@ -6,9 +6,9 @@
 #include <cstdio>
 #include <vector>
 
+#include <gtest/gtest.h>
 #include <Eigen/SparseCholesky>
 #include <Eigen/SparseCore>
-#include <gtest/gtest.h>
 
 #include "extended_refinement.hpp"
 
