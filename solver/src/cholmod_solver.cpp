@@ -331,7 +331,8 @@ class CholmodSolver final : public LinearSolver {
       const double* dv = static_cast<const double*>(d->x);
       return std::vector<double>(dv, dv + n);
     };
-    refine_in_extended_precision(x, residual, correct);
+    const RefinementOutcome outcome = refine_in_extended_precision(x, residual, correct);
+    context_.phases.info("CHOLMOD: " + describe(outcome));
   }
 
   // f_f - K_fp u_p - K_ff x over the free dofs, in extended precision, rounded once. K_ff is

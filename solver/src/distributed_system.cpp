@@ -271,9 +271,7 @@ std::vector<double> DistributedSystem::solve(const std::vector<double>& f,
     return u;
   }
   const RefinementOutcome refined = refine(f, u);
-  phases_.info(solved + format(", %.0f corrections in extended precision (last %.2g of the "
-                               "solution)",
-                               refined.corrections, refined.last_change));
+  phases_.info(solved + ", " + describe(refined));
   return u;
 }
 

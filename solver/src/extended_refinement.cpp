@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdio>
 #include <limits>
 
 namespace styk::solver_detail {
@@ -38,6 +39,14 @@ RefinementOutcome refine_in_extended_precision(std::vector<double>& x,
     previous = size;
   }
   return outcome;
+}
+
+std::string describe(const RefinementOutcome& outcome) {
+  char last[64];
+  std::snprintf(last, sizeof last, "%.2g", outcome.last_change);
+  return std::to_string(outcome.corrections) +
+         (outcome.corrections == 1 ? " correction" : " corrections") +
+         " in extended precision (the last " + last + " of the solution)";
 }
 
 long double extended_row_residual(long double b_i, const int* col, const double* values, int count,

@@ -11,6 +11,7 @@
 #pragma once
 
 #include <functional>
+#include <string>
 #include <vector>
 
 namespace styk::solver_detail {
@@ -24,6 +25,9 @@ struct RefinementOutcome {
   int corrections = 0;       // corrections applied
   double last_change = 0.0;  // ||d||_inf / ||x||_inf of the last correction computed
 };
+
+// "1 correction in extended precision (the last 8.6e-13 of the solution)", for progress lines.
+std::string describe(const RefinementOutcome& outcome);
 
 // Refines x in place. Stops after applying a correction of at most 1e-9 of x (the contraction is
 // about the first error's relative size, so what is left is ~1e-18: below the rounding unit),
