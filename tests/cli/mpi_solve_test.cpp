@@ -233,6 +233,8 @@ bool results_left(const fs::path& out) {
 // ranks, and every rank runs the same active-set iteration on the compliance it solved. Issue 17's
 // acceptance: the serial active set and answer within 1e-8. The SPEC 3.2.3 cantilevers (mu 0.2:
 // stick and slip) and the SPEC 3.2.1 punch (a body held only by contact: a pinned rigid motion).
+// Measured: cantilevers pressure 5.2e-10 (the active set's tolerance), U 2.4e-12, S 2.0e-12;
+// punch pressure 1.7e-13, U 1.1e-14.
 TEST(MpiSolve, TwoRanksGiveTheSerialContactStateAndAnswer) {
   const fs::path dir = test::test_scratch_dir("mpi_contact");
   for (const std::string deck :
@@ -256,6 +258,9 @@ TEST(MpiSolve, TwoRanksGiveTheSerialContactStateAndAnswer) {
         pressure_b.push_back(b.contact[j].pressure);
       }
       EXPECT_GT(closed, 0) << deck;
+      std::printf("%s, increment %zu against serial: pressure %.3g, U %.3g, S %.3g\n", deck.c_str(),
+                  k + 1, relative_difference(pressure_a, pressure_b), relative_difference(a.U, b.U),
+                  relative_difference(a.S, b.S));
       EXPECT_LT(relative_difference(pressure_a, pressure_b), 1e-8) << deck;
       EXPECT_LT(relative_difference(a.U, b.U), 1e-8) << deck;
       EXPECT_LT(relative_difference(a.S, b.S), 1e-8) << deck;
@@ -265,6 +270,7 @@ TEST(MpiSolve, TwoRanksGiveTheSerialContactStateAndAnswer) {
 
 // The same with cyclic symmetry (the contact rows through the *EQUATION reduction) and a
 // prescribed rotation over two steps: the SPEC 4.2 model B sector sample, turned to full slip.
+// Measured over its 23 increments: shear 1.2e-12 ... 5.8e-10, U 6.8e-14 ... 5.5e-13.
 TEST(MpiSolve, TwoRanksGiveTheSerialContactStateOfACyclicSector) {
   const fs::path dir = test::test_scratch_dir("mpi_contact_sector");
   const std::string deck = "spec-4.2-shrink-fit-B-sector-c3d21-rotation";
@@ -288,6 +294,8 @@ TEST(MpiSolve, TwoRanksGiveTheSerialContactStateOfACyclicSector) {
         shear_b.push_back(b.contact[j].shear[c]);
       }
     }
+    std::printf("sector, increment %zu against serial: shear %.3g, U %.3g\n", k + 1,
+                relative_difference(shear_a, shear_b), relative_difference(a.U, b.U));
     EXPECT_LT(relative_difference(shear_a, shear_b), 1e-8) << "increment " << k;
     EXPECT_LT(relative_difference(a.U, b.U), 1e-8) << "increment " << k;
   }
