@@ -27,9 +27,10 @@ struct RankShare {
 RankShare share_of_rank(const Model& model, const PreparedModel& prepared, const NodeGraph& graph,
                         const MpiWorld& world, const std::vector<int>& rows_every_rank_needs);
 
-// `direct`: MUMPS Cholesky, otherwise CG + GAMG with `tolerance`. prepare() takes K holding this
-// rank's part only (its own elements, *TRANSFORM/*EQUATION applied). Throws std::runtime_error in
-// a build without PETSc.
+// `direct`: MUMPS Cholesky, otherwise CG + GAMG with `tolerance`. prepare() takes K assembled from
+// the rank's share of elements (RankShare::assembles_element, *TRANSFORM/*EQUATION applied), whose
+// owned rows are whole; other rows are not read. Throws std::runtime_error in a build without
+// PETSc.
 std::unique_ptr<LinearSolver> make_distributed_solver(const SolverContext& context,
                                                       const RankRows& rows, bool direct,
                                                       double tolerance);

@@ -167,12 +167,12 @@ DistributedSystem::DistributedSystem(const RankRows& rows, const CsrView& K,
   double diagonal_sum = 0.0;
   std::vector<PetscInt> columns;
   std::vector<PetscScalar> values;
+  const bool keep = settings_.direct && settings_.refine;  // the rows for the refinement
   for (int global_row = rows_.begin(); global_row < rows_.end(); ++global_row) {
     const int row = rows_.dof(global_row);
     if (free_of[row] < 0) continue;
     columns.clear();
     values.clear();
-    const bool keep = settings_.direct && settings_.refine;
     if (keep) kept_.dof.push_back(row);
     for (int p = K.row_ptr[row]; p < K.row_ptr[row + 1]; ++p) {
       const int c = K.col[p];
