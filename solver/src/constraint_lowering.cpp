@@ -34,7 +34,7 @@ Eigen::Matrix3d EquationBuilder::axes_of(int node) const {
 
 void EquationBuilder::add(const std::vector<DirectionalTerm>& terms, int dependent_node,
                           const SourceLoc& where, int component) {
-  if (static_cast<std::size_t>(3 * model_.node_count()) > eliminated_.size()) {
+  if (3 * static_cast<std::size_t>(model_.node_count()) > eliminated_.size()) {
     eliminated_.resize(3 * static_cast<std::size_t>(model_.node_count()), 0);
     transform_of_node_.resize(model_.node_count(), -1);
   }

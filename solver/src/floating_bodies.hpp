@@ -26,14 +26,13 @@ struct FloatingBodies {
   int count() const { return static_cast<int>(modes.cols()); }
 };
 
-// `restraints`: every prescribed dof and equation (ModelConstraints::restraints); `known`: the
+// `given`: every prescribed dof and equation (ModelConstraints::restraints); `known`: the
 // nodal dofs the linear solver eliminates (prescribed and *EQUATION-dependent), sorted; the modes
 // are zero in the prescribed nodal directions and the fixing dofs are chosen among the others.
 // `rotations` gives the nodal systems of *TRANSFORM nodes. `touches_contact` flags active nodes
 // that belong to a contact constraint.
 FloatingBodies find_floating_bodies(const Model& model, const PreparedModel& prepared,
-                                    const NodeGraph& graph,
-                                    const std::vector<Restraint>& restraints,
+                                    const NodeGraph& graph, const std::vector<Restraint>& given,
                                     const std::vector<int>& prescribed,
                                     const std::vector<int>& known, const NodeRotations& rotations,
                                     const std::vector<char>& touches_contact);

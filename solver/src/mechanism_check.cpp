@@ -199,7 +199,7 @@ void check_rigid_body_modes(const Model& model, const PreparedModel& prepared,
     const std::optional<Vector6> free =
         free_rigid_motion(G, node_motions(model, prepared, part, centroid, size));
     if (!free) continue;
-    const Vector6 mode = *free;
+    const Vector6& mode = *free;
     const Eigen::Vector3d omega = mode.tail<3>();
     if (omega.norm() < 1e-6) continue;  // a translation; already excluded above
     const Eigen::Vector3d t = mode.head<3>();

@@ -41,11 +41,11 @@ struct Restraint {
 std::vector<Restraint> with_ring_restraints(const PreparedModel& prepared,
                                             std::vector<Restraint> restraints);
 
-// The same check for general restraints. A part is a connected component of `graph` (which links
-// the nodes of an equation), and a rigid motion of a part must violate some restraint. Parts
-// linked by equations are checked as one body: a hinge between them is left to the
+// The same check for general restraints (`given`). A part is a connected component of `graph`
+// (which links the nodes of an equation), and a rigid motion of a part must violate some restraint.
+// Parts linked by equations are checked as one body: a hinge between them is left to the
 // factorisation's pivot check.
 void check_rigid_body_modes(const Model& model, const PreparedModel& prepared,
-                            const NodeGraph& graph, const std::vector<Restraint>& restraints);
+                            const NodeGraph& graph, const std::vector<Restraint>& given);
 
 }  // namespace styk::solver_detail
