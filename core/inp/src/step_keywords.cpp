@@ -4,6 +4,7 @@
 
 #include "deck_reader.hpp"
 #include "numbers.hpp"
+#include "writer_parts.hpp"
 
 namespace styk::inp {
 
@@ -80,9 +81,15 @@ void DeckReader::on_static(const KeywordLine& kw) {
         throw InputError(line->where,
                          std::string(names[i]) + " must be positive, read " + line->fields[i]);
     }
+    // A value as read, or the default it took (a data line may leave a field empty or out).
+    auto shown = [&](std::size_t i) {
+      return i < line->fields.size() && !line->fields[i].empty()
+                 ? line->fields[i]
+                 : shortest_number(values[i]) + ", the default";
+    };
     if (values[0] > values[1])
-      throw InputError(line->where, "the initial increment (" + line->fields[0] +
-                                        ") is larger than the step time (" + line->fields[1] + ")");
+      throw InputError(line->where, "the initial increment (" + shown(0) +
+                                        ") is larger than the step time (" + shown(1) + ")");
     proc.initial_increment = values[0];
     proc.total_time = values[1];
     if (line->fields.size() > 2 && !line->fields[2].empty()) proc.min_increment = values[2];
