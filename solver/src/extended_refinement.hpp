@@ -30,7 +30,8 @@ struct RefinementOutcome {
 std::string describe(const RefinementOutcome& outcome);
 
 // Refines x in place. Stops after applying a correction of at most 1e-9 of x (the contraction is
-// about the first error's relative size, so what is left is ~1e-18: below the rounding unit),
+// about the first error's relative size, so what is left is ~1e-18, or the residual's own
+// rounding cond(K) x 2^-64 where that is larger),
 // when a correction is not at most half the one before (not applied: the system is too
 // ill-conditioned for refinement to gain), or after `max_corrections`.
 RefinementOutcome refine_in_extended_precision(std::vector<double>& x,
