@@ -319,8 +319,9 @@ class CholmodSolver final : public LinearSolver {
               std::vector<double>& x) {
     cholmod_common* c = common_->get();
     const auto n = static_cast<std::size_t>(partition_.free_count());
+    const std::vector<long double> load = extended_free_load(f, prescribed_value);
     const ExtendedResidual residual = [&](const std::vector<double>& y, std::vector<double>& r) {
-      r = extended_free_residual(f, prescribed_value, y);
+      r = extended_free_residual(load, y);
     };
     const Correction correct = [&](const std::vector<double>& r) {
       CholmodDense b(cholmod_l_allocate_dense(n, 1, n, CHOLMOD_REAL, c), CholmodDenseDeleter{c});
@@ -335,17 +336,23 @@ class CholmodSolver final : public LinearSolver {
     context_.phases.info("CHOLMOD: " + describe(outcome));
   }
 
-  // f_f - K_fp u_p - K_ff x over the free dofs, in extended precision, rounded once. K_ff is
-  // the upper triangle A_ (column j holds rows i <= j): entry (i, j) acts on both rows.
-  std::vector<double> extended_free_residual(const std::vector<double>& f,
-                                             const std::vector<double>& prescribed_value,
-                                             const std::vector<double>& x) const {
+  // f_f - K_fp u_p over the free dofs, in extended precision (the same for every correction).
+  std::vector<long double> extended_free_load(const std::vector<double>& f,
+                                              const std::vector<double>& prescribed_value) const {
     const DofPartition& partition = partition_;
-    const std::size_t n = x.size();
-    std::vector<long double> r(n);
-    for (std::size_t i = 0; i < n; ++i) r[i] = f[partition.free_dofs[i]];
+    std::vector<long double> load(partition.free_count());
+    for (int i = 0; i < partition.free_count(); ++i) load[i] = f[partition.free_dofs[i]];
     for (const CouplingEntry& entry : coupling_)
-      r[entry.free_row] -= static_cast<long double>(entry.value) * prescribed_value[entry.dof];
+      load[entry.free_row] -= static_cast<long double>(entry.value) * prescribed_value[entry.dof];
+    return load;
+  }
+
+  // load - K_ff x over the free dofs, in extended precision, rounded once. K_ff is the upper
+  // triangle A_ (column j holds rows i <= j): entry (i, j) acts on both rows.
+  std::vector<double> extended_free_residual(const std::vector<long double>& load,
+                                             const std::vector<double>& x) const {
+    const std::size_t n = x.size();
+    std::vector<long double> r = load;
     const auto* Ap = static_cast<const SuiteSparse_long*>(A_->p);
     const auto* Ai = static_cast<const SuiteSparse_long*>(A_->i);
     const auto* Ax = static_cast<const double*>(A_->x);

@@ -146,12 +146,14 @@ class ScalarSolve final : public ScalarLinearSolve {
   // Refinement in extended precision (extended_refinement.hpp), as the mechanical solves: the
   // answer of the assembled system, serial or distributed. `phi` holds the prescribed values.
   void refine(const Eigen::VectorXd& f, const Eigen::VectorXd& phi, std::vector<double>& x) const {
+    // f_f - K_fp phi_p, the same for every correction.
+    std::vector<long double> load(free_.size());
+    for (std::size_t i = 0; i < free_.size(); ++i) load[i] = f(free_[i]);
+    for (int j = 0; j < Kfp_.outerSize(); ++j)
+      for (SparseMatrix::InnerIterator it(Kfp_, j); it; ++it)
+        load[it.row()] -= static_cast<long double>(it.value()) * phi(j);
     const ExtendedResidual residual = [&](const std::vector<double>& y, std::vector<double>& r) {
-      std::vector<long double> sum(free_.size());
-      for (std::size_t i = 0; i < free_.size(); ++i) sum[i] = f(free_[i]);
-      for (int j = 0; j < Kfp_.outerSize(); ++j)
-        for (SparseMatrix::InnerIterator it(Kfp_, j); it; ++it)
-          sum[it.row()] -= static_cast<long double>(it.value()) * phi(j);
+      std::vector<long double> sum = load;
       for (int j = 0; j < Kff_.outerSize(); ++j)
         for (SparseMatrix::InnerIterator it(Kff_, j); it; ++it)
           sum[it.row()] -= static_cast<long double>(it.value()) * y[j];
