@@ -438,9 +438,21 @@ class IncrementIteration {
       damping_ = 1.0;
       return false;
     }
+    if (!settled && unchanged && damping_ < 1.0 && full_step_allowed_ &&
+        options_.full_step_on_steady_statuses) {
+      // The damped step changed no status: Newton on that set, near its solution, converges
+      // quadratically with full steps; damped ones only cut the residual by 1 - damping each.
+      damped_level_ = damping_;
+      damping_ = 1.0;
+      return false;
+    }
     if (!settled && record.changes > 0 && revisits_without_progress(record, new_status, new_zone)) {
       record.cycle = true;
-      damping_ = std::max(damping_ * options_.cycle_damping, options_.min_damping);
+      // A full step taken early that led back into a cycle: damped steps to the end, halved from
+      // the level they had.
+      if (damped_level_ < 1.0) full_step_allowed_ = false;
+      damping_ = std::max(std::min(damping_, damped_level_) * options_.cycle_damping,
+                          options_.min_damping);
     }
     return settled;
   }
@@ -543,6 +555,8 @@ class IncrementIteration {
   std::vector<std::vector<int>> changed_history_;
   IncrementOutcome outcome_;
   double damping_ = 1.0;             // step length (< 1 after a cycle)
+  double damped_level_ = 1.0;        // the step length before an early full step (judge)
+  bool full_step_allowed_ = true;    // no early full step has led back into a cycle
   bool from_elastic_trial_ = false;  // the increment started from the elastic trial
   bool front_receded_ = false;       // some node went from slip back to stick
   bool closed_touching_ = false;     // the touching nodes have been closed after a singular solve

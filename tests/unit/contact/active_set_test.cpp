@@ -128,17 +128,21 @@ TEST(ActiveSet, CycleIsDetectedAndBroken) {
 }
 
 // ActiveSetOptions::cycle_damping steers the damped steps after a cycle: on the cycling system
-// above the step after the first detected cycle has the option's length (0.75 instead of the
-// default 0.5), every step length is a power of it or a full step, and the solution is the
-// defaults' (the LCP's unique one, 1e-10). On this system the milder damping converges in fewer
-// iterations (20 against 34 with 0.5; 0.25 does not converge in 50).
+// above, damped to the end (no early full step), the step after the first detected cycle has the
+// option's length (0.75 instead of the default 0.5), every step length is a power of it or a
+// full step, and the solution is the defaults' (the LCP's unique one, 1e-10). Damped to the end
+// the milder damping converges in fewer iterations (20 against 34 with 0.5; 0.25 does not
+// converge in 50).
 TEST(ActiveSet, CycleDampingFollowsTheOptions) {
   const std::vector<ContactConstraint> cs(3, constraint(FrictionLaw::Kind::Frictionless, 0, 0, 0));
   const LinearContactSystem s = cycling_system();
+  ActiveSetOptions damped_to_the_end;
+  damped_to_the_end.full_step_on_steady_statuses = false;
   ContactState reference;
-  const IncrementOutcome by_default = solve_increment(cs, s, reference, ActiveSetOptions{}, {});
+  const IncrementOutcome by_default = solve_increment(cs, s, reference, damped_to_the_end, {});
   ASSERT_TRUE(by_default.converged) << by_default.reason;
-  ActiveSetOptions options;
+  EXPECT_EQ(by_default.iterations, 34);
+  ActiveSetOptions options = damped_to_the_end;
   options.cycle_damping = 0.75;
   ContactState state;
   std::vector<IterationRecord> records;
@@ -154,6 +158,38 @@ TEST(ActiveSet, CycleDampingFollowsTheOptions) {
   }
   ASSERT_LT(first_cycle + 1, records.size());
   EXPECT_EQ(records[first_cycle + 1].damping, 0.75);
+  EXPECT_EQ(out.iterations, 20);
+  for (int i = 0; i < 3; ++i)
+    EXPECT_NEAR((state.nodes[i].lambda - reference.nodes[i].lambda).norm(), 0.0, 1e-10);
+}
+
+// ActiveSetOptions::full_step_on_steady_statuses: on the cycling system a damped step after the
+// cycle changes no status, and the full step that follows solves that status set exactly, the
+// LCP's solution: 6 iterations against 34 damped to the end, the same multipliers (1e-10).
+TEST(ActiveSet, FullStepOnceADampedStepChangesNoStatus) {
+  const std::vector<ContactConstraint> cs(3, constraint(FrictionLaw::Kind::Frictionless, 0, 0, 0));
+  const LinearContactSystem s = cycling_system();
+  ActiveSetOptions damped_to_the_end;
+  damped_to_the_end.full_step_on_steady_statuses = false;
+  ContactState reference;
+  ASSERT_TRUE(solve_increment(cs, s, reference, damped_to_the_end, {}).converged);
+  ContactState state;
+  std::vector<IterationRecord> records;
+  const IncrementOutcome out = solve_increment(
+      cs, s, state, ActiveSetOptions{}, [&](const IterationRecord& r) { records.push_back(r); });
+  ASSERT_TRUE(out.converged) << out.reason;
+  EXPECT_EQ(out.iterations, 6);
+  std::size_t first_cycle = records.size();
+  for (std::size_t i = 0; i < records.size(); ++i)
+    if (records[i].cycle && first_cycle == records.size()) first_cycle = i;
+  // Iteration 3 cycles; 4 and 5 are damped (4 still changes a status), 5 changes none, 6 is the
+  // full step with residual 0.
+  ASSERT_EQ(first_cycle, 2u);
+  EXPECT_EQ(records[3].damping, 0.5);
+  EXPECT_EQ(records[4].damping, 0.5);
+  EXPECT_EQ(records[4].changes, 0);
+  EXPECT_EQ(records[5].damping, 1.0);
+  EXPECT_LE(records[5].residual, 1e-12);
   for (int i = 0; i < 3; ++i)
     EXPECT_NEAR((state.nodes[i].lambda - reference.nodes[i].lambda).norm(), 0.0, 1e-10);
 }

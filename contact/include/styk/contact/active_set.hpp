@@ -155,6 +155,13 @@ struct ActiveSetOptions {
   // settles.
   double cycle_damping = 0.5;
   double min_damping = 1.0 / 64.0;
+  // A damped step that changes no status is followed by a full step on that status set (Newton
+  // near its solution) instead of damped steps to the tolerance; if that leads back into a cycle
+  // the damped steps resume, halved, to the end of the increment. Measured on the SPEC 3.2.3
+  // beams at mu = 3.8: a cycle at iteration 8, then 25 damped steps halving the residual each
+  // (33 iterations); with the full step 13. Same for mu = 4.2 (34 -> 12); no other bench/contact
+  // model damps.
+  bool full_step_on_steady_statuses = true;
   // Linearised systems of at least this many unknowns keep their LU factor, and a later
   // iteration with the same closed unknowns, whose statuses differ from the factorised ones at
   // `reuse_status_changes` nodes at most, first solves by GMRES preconditioned with that factor
