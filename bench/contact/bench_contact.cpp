@@ -4,6 +4,7 @@
 #include <algorithm>
 #include <chrono>
 #include <cstdio>
+#include <cstdlib>
 #include <map>
 #include <string>
 #include <vector>
@@ -59,6 +60,26 @@ struct Options {
     return only.empty() || std::find(only.begin(), only.end(), name) != only.end();
   }
 };
+
+// The friction coefficient a model name ends with ("beams_mu5.5" -> 5.5); exits on a malformed
+// one rather than running another model than the one asked for.
+double friction_of(const std::string& name, const std::string& prefix) {
+  const std::string digits = name.substr(prefix.size());
+  char* end = nullptr;
+  const double mu = std::strtod(digits.c_str(), &end);
+  if (digits.empty() || *end != '\0' || !(mu >= 0.0)) {
+    std::fprintf(stderr, "%s: not a friction coefficient after %s\n", name.c_str(), prefix.c_str());
+    std::exit(2);
+  }
+  return mu;
+}
+
+// The name of a friction coefficient as the model names spell it: 0.2, 10, 5.5.
+std::string format_mu(double mu) {
+  char text[32];
+  std::snprintf(text, sizeof text, "%g", mu);
+  return text;
+}
 
 void run(const char* name, const Model& model, const ElementRegistry& registry,
          const Options& options) {
@@ -118,11 +139,24 @@ int main(int argc, char** argv) {
     else
       run(name, build(), full->registry, options);
   };
-  maybe("beams_mu0.2", [] { return test::two_cantilevers_model(test::coulomb(0.2)); });
-  maybe("beams_mu10", [] { return test::two_cantilevers_model(test::coulomb(10.0)); });
-  maybe("beams_mu100", [] { return test::two_cantilevers_model(test::coulomb(100.0)); });
-  maybe("punch_mu0.04", [] { return test::punch_model(test::coulomb(0.04)); });
-  maybe("punch_mu0.75", [] { return test::punch_model(test::coulomb(0.75)); });
+  // The beams and the punch at the default friction coefficients, and at any other asked for by
+  // name (beams_mu5.5, punch_mu0.3): the iteration count of a slip front depends on mu.
+  const auto frictional = [&](const char* model, std::vector<double> defaults) {
+    const std::string prefix = std::string(model) + "_mu";
+    for (const std::string& name : options.only)
+      if (name.rfind(prefix, 0) == 0) defaults.push_back(friction_of(name, prefix));
+    std::sort(defaults.begin(), defaults.end());
+    defaults.erase(std::unique(defaults.begin(), defaults.end()), defaults.end());
+    for (double mu : defaults) {
+      const std::string name = prefix + format_mu(mu);
+      maybe(name.c_str(), [&] {
+        return prefix == "beams_mu" ? test::two_cantilevers_model(test::coulomb(mu))
+                                    : test::punch_model(test::coulomb(mu));
+      });
+    }
+  };
+  frictional("beams", {0.2, 10.0, 100.0});
+  frictional("punch", {0.04, 0.75});
   maybe("shrink_fit_2steps", [] { return test::shrink_fit_model(52.5); });
   // `styk mesh shrink-fit` model A at its default density (625 node pairs): heating with
   // mu = 0.2, then 52.5 and 72 MPa; the sleeve held axially by friction alone.
