@@ -141,22 +141,17 @@ int main(int argc, char** argv) {
   };
   // The beams and the punch at the default friction coefficients, and at any other asked for by
   // name (beams_mu5.5, punch_mu0.3): the iteration count of a slip front depends on mu.
-  const auto frictional = [&](const char* model, std::vector<double> defaults) {
+  const auto frictional = [&](const char* model, std::vector<double> defaults, auto&& build) {
     const std::string prefix = std::string(model) + "_mu";
     for (const std::string& name : options.only)
       if (name.rfind(prefix, 0) == 0) defaults.push_back(friction_of(name, prefix));
     std::sort(defaults.begin(), defaults.end());
     defaults.erase(std::unique(defaults.begin(), defaults.end()), defaults.end());
-    for (double mu : defaults) {
-      const std::string name = prefix + format_mu(mu);
-      maybe(name.c_str(), [&] {
-        return prefix == "beams_mu" ? test::two_cantilevers_model(test::coulomb(mu))
-                                    : test::punch_model(test::coulomb(mu));
-      });
-    }
+    for (double mu : defaults) maybe((prefix + format_mu(mu)).c_str(), [&] { return build(mu); });
   };
-  frictional("beams", {0.2, 10.0, 100.0});
-  frictional("punch", {0.04, 0.75});
+  frictional("beams", {0.2, 10.0, 100.0},
+             [](double mu) { return test::two_cantilevers_model(test::coulomb(mu)); });
+  frictional("punch", {0.04, 0.75}, [](double mu) { return test::punch_model(test::coulomb(mu)); });
   maybe("shrink_fit_2steps", [] { return test::shrink_fit_model(52.5); });
   // `styk mesh shrink-fit` model A at its default density (625 node pairs): heating with
   // mu = 0.2, then 52.5 and 72 MPa; the sleeve held axially by friction alone.

@@ -127,6 +127,34 @@ TEST(ActiveSet, CycleIsDetectedAndBroken) {
   EXPECT_EQ(solutions, 1);  // SPD compliance: the solution is unique
 }
 
+// The cycling system solved with `options`, every iteration recorded.
+struct CyclingRun {
+  IncrementOutcome outcome;
+  ContactState state;
+  std::vector<IterationRecord> records;
+  // The record of the first iteration that detected a cycle (records.size() if none).
+  std::size_t first_cycle() const {
+    for (std::size_t i = 0; i < records.size(); ++i)
+      if (records[i].cycle) return i;
+    return records.size();
+  }
+};
+
+CyclingRun solve_cycling_system(const ActiveSetOptions& options) {
+  const std::vector<ContactConstraint> cs(3, constraint(FrictionLaw::Kind::Frictionless, 0, 0, 0));
+  CyclingRun run;
+  run.outcome = solve_increment(cs, cycling_system(), run.state, options,
+                                [&](const IterationRecord& r) { run.records.push_back(r); });
+  return run;
+}
+
+// The options without the early full step: damped steps from the first cycle to the end.
+ActiveSetOptions damped_to_the_end() {
+  ActiveSetOptions options;
+  options.full_step_on_steady_statuses = false;
+  return options;
+}
+
 // ActiveSetOptions::cycle_damping steers the damped steps after a cycle: on the cycling system
 // above, damped to the end (no early full step), the step after the first detected cycle has the
 // option's length (0.75 instead of the default 0.5), every step length is a power of it or a
@@ -134,64 +162,47 @@ TEST(ActiveSet, CycleIsDetectedAndBroken) {
 // the milder damping converges in fewer iterations (20 against 34 with 0.5; 0.25 does not
 // converge in 50).
 TEST(ActiveSet, CycleDampingFollowsTheOptions) {
-  const std::vector<ContactConstraint> cs(3, constraint(FrictionLaw::Kind::Frictionless, 0, 0, 0));
-  const LinearContactSystem s = cycling_system();
-  ActiveSetOptions damped_to_the_end;
-  damped_to_the_end.full_step_on_steady_statuses = false;
-  ContactState reference;
-  const IncrementOutcome by_default = solve_increment(cs, s, reference, damped_to_the_end, {});
-  ASSERT_TRUE(by_default.converged) << by_default.reason;
-  EXPECT_EQ(by_default.iterations, 34);
-  ActiveSetOptions options = damped_to_the_end;
+  const CyclingRun by_default = solve_cycling_system(damped_to_the_end());
+  ASSERT_TRUE(by_default.outcome.converged) << by_default.outcome.reason;
+  EXPECT_EQ(by_default.outcome.iterations, 34);
+  ActiveSetOptions options = damped_to_the_end();
   options.cycle_damping = 0.75;
-  ContactState state;
-  std::vector<IterationRecord> records;
-  const IncrementOutcome out = solve_increment(
-      cs, s, state, options, [&](const IterationRecord& r) { records.push_back(r); });
-  ASSERT_TRUE(out.converged) << out.reason;
-  EXPECT_LT(out.iterations, by_default.iterations);
-  std::size_t first_cycle = records.size();
-  for (std::size_t i = 0; i < records.size(); ++i) {
-    const double powers = std::log(records[i].damping) / std::log(0.75);
-    EXPECT_NEAR(powers, std::round(powers), 1e-9) << "step length " << records[i].damping;
-    if (records[i].cycle && first_cycle == records.size()) first_cycle = i;
+  const CyclingRun milder = solve_cycling_system(options);
+  ASSERT_TRUE(milder.outcome.converged) << milder.outcome.reason;
+  EXPECT_LT(milder.outcome.iterations, by_default.outcome.iterations);
+  for (const IterationRecord& record : milder.records) {
+    const double powers = std::log(record.damping) / std::log(0.75);
+    EXPECT_NEAR(powers, std::round(powers), 1e-9) << "step length " << record.damping;
   }
-  ASSERT_LT(first_cycle + 1, records.size());
-  EXPECT_EQ(records[first_cycle + 1].damping, 0.75);
-  EXPECT_EQ(out.iterations, 20);
+  const std::size_t first_cycle = milder.first_cycle();
+  ASSERT_LT(first_cycle + 1, milder.records.size());
+  EXPECT_EQ(milder.records[first_cycle + 1].damping, 0.75);
+  EXPECT_EQ(milder.outcome.iterations, 20);
   for (int i = 0; i < 3; ++i)
-    EXPECT_NEAR((state.nodes[i].lambda - reference.nodes[i].lambda).norm(), 0.0, 1e-10);
+    EXPECT_NEAR((milder.state.nodes[i].lambda - by_default.state.nodes[i].lambda).norm(), 0.0,
+                1e-10);
 }
 
 // ActiveSetOptions::full_step_on_steady_statuses: on the cycling system a damped step after the
 // cycle changes no status, and the full step that follows solves that status set exactly, the
 // LCP's solution: 6 iterations against 34 damped to the end, the same multipliers (1e-10).
 TEST(ActiveSet, FullStepOnceADampedStepChangesNoStatus) {
-  const std::vector<ContactConstraint> cs(3, constraint(FrictionLaw::Kind::Frictionless, 0, 0, 0));
-  const LinearContactSystem s = cycling_system();
-  ActiveSetOptions damped_to_the_end;
-  damped_to_the_end.full_step_on_steady_statuses = false;
-  ContactState reference;
-  ASSERT_TRUE(solve_increment(cs, s, reference, damped_to_the_end, {}).converged);
-  ContactState state;
-  std::vector<IterationRecord> records;
-  const IncrementOutcome out = solve_increment(
-      cs, s, state, ActiveSetOptions{}, [&](const IterationRecord& r) { records.push_back(r); });
-  ASSERT_TRUE(out.converged) << out.reason;
-  EXPECT_EQ(out.iterations, 6);
-  std::size_t first_cycle = records.size();
-  for (std::size_t i = 0; i < records.size(); ++i)
-    if (records[i].cycle && first_cycle == records.size()) first_cycle = i;
+  const CyclingRun reference = solve_cycling_system(damped_to_the_end());
+  ASSERT_TRUE(reference.outcome.converged);
+  const CyclingRun run = solve_cycling_system(ActiveSetOptions{});
+  ASSERT_TRUE(run.outcome.converged) << run.outcome.reason;
+  EXPECT_EQ(run.outcome.iterations, 6);
   // Iteration 3 cycles; 4 and 5 are damped (4 still changes a status), 5 changes none, 6 is the
   // full step with residual 0.
-  ASSERT_EQ(first_cycle, 2u);
+  const std::vector<IterationRecord>& records = run.records;
+  ASSERT_EQ(run.first_cycle(), 2u);
   EXPECT_EQ(records[3].damping, 0.5);
   EXPECT_EQ(records[4].damping, 0.5);
   EXPECT_EQ(records[4].changes, 0);
   EXPECT_EQ(records[5].damping, 1.0);
   EXPECT_LE(records[5].residual, 1e-12);
   for (int i = 0; i < 3; ++i)
-    EXPECT_NEAR((state.nodes[i].lambda - reference.nodes[i].lambda).norm(), 0.0, 1e-10);
+    EXPECT_NEAR((run.state.nodes[i].lambda - reference.state.nodes[i].lambda).norm(), 0.0, 1e-10);
 }
 
 // A frictional patch of m nodes on a coupled compliance (the inverse of a chain stiffness), pressed
