@@ -4,7 +4,9 @@
 // quote comes from a tested path. Each test asserts
 // - the physics against SPEC's reference (hand formula or the thesis' value) with the tolerance
 //   the coarse mesh allows, stated at the check; and
-// - the coarse figures themselves (measured 2026-11-26) to 0.5 %: the mesh and the loads are
+// - the coarse figures themselves (measured 2026-11-26; the shrink fit's contact pressures again
+//   2026-11-27, 0.75 % lower with the nodal area projected on the normal: its coarse quarter
+//   has 4 elements around, docs/contact.md "Nodal area") to 0.5 %: the mesh and the loads are
 //   fixed and the solve deterministic, so a change means the mechanics changed (contact iterations
 //   end at the active set's 1e-9; 0.5 % leaves room for a different but converged active-set path).
 // The pages are written once (conical fit, the quickest) and checked to list every figure, table
@@ -66,13 +68,13 @@ TEST(JointReports, ShrinkFit) {
   }
   expect_measured(r, "elongation", 0.12681);
   expect_measured(r, "diametral_growth", 0.0400343);
-  expect_measured(r, "pressure_mid", 111.667);
-  expect_measured(r, "pressure_edge", 164.343);
-  expect_measured(r, "pressure_max", 164.343);
+  expect_measured(r, "pressure_mid", 110.830);
+  expect_measured(r, "pressure_edge", 163.110);
+  expect_measured(r, "pressure_max", 163.110);
   expect_measured(r, "elongation_mu0.2", 0.12472);
   expect_measured(r, "diametral_growth_mu0.2", 0.0400229);
-  expect_measured(r, "pressure_mid_mu0.2", 128.078);
-  expect_measured(r, "pressure_edge_mu0.2", 113.51);
+  expect_measured(r, "pressure_mid_mu0.2", 127.118);
+  expect_measured(r, "pressure_edge_mu0.2", 112.659);
   expect_measured(r, "axial_capacity", 28.5705);
   expect_measured(r, "torque_full_slip", 569.4);
   expect_measured(r, "torque_end", 568.9);
@@ -83,14 +85,14 @@ TEST(JointReports, ShrinkFit) {
   }
   expect_measured(r, "shaft_mises", 126.469);
   expect_measured(r, "sleeve_mises", 294.752);
-  expect_measured(r, "pressure_edge_notchI", 35.1428);
-  expect_measured(r, "pressure_max_notchI", 133.119);
-  expect_measured(r, "pressure_mid_notchI", 91.9832);
+  expect_measured(r, "pressure_edge_notchI", 34.8793);
+  expect_measured(r, "pressure_max_notchI", 132.121);
+  expect_measured(r, "pressure_mid_notchI", 91.2934);
   expect_measured(r, "shaft_mises_notchI", 125.037);
   expect_measured(r, "sleeve_mises_notchI", 324.12);
-  expect_measured(r, "pressure_edge_notchII", 109.473);
-  expect_measured(r, "pressure_max_notchII", 112.798);
-  expect_measured(r, "pressure_mid_notchII", 112.798);
+  expect_measured(r, "pressure_edge_notchII", 108.653);
+  expect_measured(r, "pressure_max_notchII", 111.952);
+  expect_measured(r, "pressure_mid_notchII", 111.952);
   expect_measured(r, "shaft_mises_notchII", 123.521);
   expect_measured(r, "sleeve_mises_notchII", 310.519);
   EXPECT_EQ(r.tables.size(), 4u);

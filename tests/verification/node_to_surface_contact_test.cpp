@@ -186,16 +186,16 @@ Model cylinders(int inner_around, int outer_around) {
 }
 
 // SPEC §3.2.2: Lamé contact pressure 3.294 (uniform), asserted within 2 % on the interface means:
-// the resultant on the quarter interface, F_x = F_y = p r L = 6.588 (measured p = 3.2912 for 6
-// slave elements on 4, 3.2918 for 4 on 6), and the force per area sum(lambda) / sum(A) (3.2917,
-// 3.2916). The slave normals are radial to 1e-12 away from the symmetry planes (the two faces'
-// errors cancel at a shared node; measured 1e-15) and within the quadratic face's normal error on
-// them (bound h^2/3 = 0.0129 rad for 22.5° elements, measured 1.86e-3); the nodal areas add up to
-// the quarter bore, pi r L / 2 = pi, within the quadratic faces' interpolation of the circle
-// (asserted 1e-4 relative; measured -5e-6 with 6 elements, -2.5e-5 with 4). Nodal pressures
-// scatter around the mean by the node-to-surface transfer error, as on the flat patch (measured
-// -22 % ... +27 %, bounded at 30 %), where the matching 16 + 16 mesh of spec_3_2_contact_test.cpp
-// is uniform within 1 %.
+// the resultant on the quarter interface, F_x = F_y = p r L = 6.588 (measured p = 3.2914 for 6
+// slave elements on 4, 3.2918 for 4 on 6), and the force per area sum(lambda) / sum(A) (3.2918,
+// 3.2918; A: the nodal areas projected on the normals, docs/contact.md "Nodal area"). The slave
+// normals are radial to 1e-12 away from the symmetry planes (the two faces' errors cancel at a
+// shared node; measured 1e-15) and within the quadratic face's normal error on them (bound h^2/3 =
+// 0.0129 rad for 22.5° elements, measured 1.86e-3); the nodal areas add up to the quarter bore, pi
+// r L / 2 = pi, within the quadratic faces' interpolation of the circle (asserted 1e-4 relative;
+// measured -1.0e-5 with 6 elements, -4.9e-5 with 4). Nodal pressures scatter around the mean by the
+// node-to-surface transfer error, as on the flat patch (measured -22 % ... +27 %, bounded at 30 %),
+// where the matching 16 + 16 mesh of spec_3_2_contact_test.cpp is uniform within 1 %.
 void expect_lame(const ElementRegistry& registry, int inner_around, int outer_around) {
   SCOPED_TRACE("inner " + std::to_string(inner_around) + ", outer " + std::to_string(outer_around));
   const Model model = cylinders(inner_around, outer_around);
@@ -231,6 +231,9 @@ void expect_lame(const ElementRegistry& registry, int inner_around, int outer_ar
   ::testing::Test::RecordProperty(
       "area_error_" + std::to_string(inner_around) + "_" + std::to_string(outer_around),
       std::to_string(area / kPi - 1.0));
+  ::testing::Test::RecordProperty(
+      "force_per_area_" + std::to_string(inner_around) + "_" + std::to_string(outer_around),
+      std::to_string(force / area));
 }
 
 TEST_F(NodeToSurfaceContact, ConcentricCylindersSixSlaveElementsOnFour) {

@@ -35,8 +35,11 @@ void convert_layer(mesher::Mesh& mesh, const std::string& type, const std::strin
 // around x 1 axial elements per cylinder = 96 elements, 16 + 16 element faces in contact
 // (C3D21/C3D28 layers on both sides, matching nodes); symmetry ux = 0 on x = 0, uy = 0 on y = 0,
 // plane strain by uz = 0 everywhere. SPEC: analytic contact pressure 3.294 (uniform); thesis 3.3
-// with C3D21 and C3D28. Asserted: every slave node's pressure within 2 % of 3.294 and within 1 %
-// of the mean (uniform along the interface).
+// with C3D21 and C3D28 (Lamé to more digits: 3.29396). Asserted: every slave node's pressure
+// within 0.05 % of 3.294 (measured C3D21 3.2938 ... 3.2941, C3D28 3.2939 ... 3.2941; with the
+// nodal area A_i instead of its projection on the normal, docs/contact.md "Nodal area", the
+// corner nodes were 0.048 % high and the mid-edge nodes 0.024 % low by the formula there,
+// alpha = 5.6 deg).
 Model concentric_cylinders(const std::string& type) {
   mesher::Mesh mesh;
   auto ring = [&](double r0, double r1, const std::string& elset) {
@@ -76,16 +79,19 @@ void expect_lame_pressure(const ElementRegistry& registry, const std::string& ty
   const Results results = run_static_analysis(model, registry, SolveOptions{}, nullptr, nullptr);
   const IncrementResult& r = results.increments.back();
   ASSERT_FALSE(r.contact.empty());
-  double mean = 0.0;
+  double mean = 0.0, low = INFINITY, high = -INFINITY;
   for (const ContactNodeResult& c : r.contact) {
     EXPECT_NE(c.status, ContactStatus::Open);
-    EXPECT_NEAR(c.pressure, 3.294, 0.02 * 3.294) << type << " node " << model.node_ids[c.node];
+    EXPECT_NEAR(c.pressure, 3.294, 5e-4 * 3.294) << type << " node " << model.node_ids[c.node];
     EXPECT_NEAR(c.gap, 0.0, 1e-12);
     mean += c.pressure / static_cast<double>(r.contact.size());
+    low = std::min(low, c.pressure);
+    high = std::max(high, c.pressure);
   }
-  for (const ContactNodeResult& c : r.contact) EXPECT_NEAR(c.pressure, mean, 0.01 * mean);
   EXPECT_LT(r.contact_equilibrium.relative_residual, 1e-8);
   ::testing::Test::RecordProperty(type + "_mean_pressure", std::to_string(mean));
+  ::testing::Test::RecordProperty(type + "_low", std::to_string(low));
+  ::testing::Test::RecordProperty(type + "_high", std::to_string(high));
 }
 
 TEST_F(ContactSpec32, ConcentricCylindersC3D21) { expect_lame_pressure(registry(), "C3D21"); }
