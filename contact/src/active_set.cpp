@@ -507,17 +507,24 @@ class IncrementIteration {
 
   // Phase 3 at the cap: the reason and the nodes whose status changed in the last four
   // iterations.
-  // The residual has not reached a new low for ActiveSetOptions::stagnation_iterations
-  // iterations.
+  // Neither the residual nor the fluid's penetrated zone has reached a new extreme for
+  // ActiveSetOptions::stagnation_iterations iterations: a new low of the residual, or a zone larger
+  // than ever in the increment, is progress. The zone grows by the nodes it reaches and is bounded
+  // by the closed nodes, so its growth is finite progress even while the residual wavers (SPEC 4.6
+  // flange with the ring 30 thick, default mesh, at 6.5 MPa: the zone grows by one node per
+  // iteration from 226 to 238 in iterations 1-13, the residual 3.3e-3 ... 1.1e-2, then 1.2e-15).
   bool stagnated() const {
     const std::vector<IterationRecord>& history = outcome_.history;
     const auto window = static_cast<std::size_t>(std::max(options_.stagnation_iterations, 1));
     if (options_.stagnation_iterations <= 0 || history.size() <= window) return false;
     double before = std::numeric_limits<double>::infinity();
-    for (std::size_t i = 0; i + window < history.size(); ++i)
+    int zone_before = 0;
+    for (std::size_t i = 0; i + window < history.size(); ++i) {
       before = std::min(before, history[i].residual);
+      zone_before = std::max(zone_before, history[i].penetrated);
+    }
     for (std::size_t i = history.size() - window; i < history.size(); ++i)
-      if (history[i].residual < before) return false;
+      if (history[i].residual < before || history[i].penetrated > zone_before) return false;
     return true;
   }
 

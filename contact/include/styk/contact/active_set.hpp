@@ -92,11 +92,13 @@ struct IterationRecord {
 // body held by friction counts as free.
 struct ActiveSetOptions {
   int max_iterations = 50;
-  // An increment whose residual has not gone below its best so far for this many iterations is
-  // given up (the driver cuts it back) before max_iterations: SPEC 4.2 model B loaded past its
-  // friction capacity never went below its 3rd iteration's residual in 50 iterations (3 s each).
-  // The slowest converging increments measured take a new low at least every few iterations
-  // (bench/contact/README.md). 0: off.
+  // An increment whose residual has not gone below its best so far, and whose fluid zone (pressure
+  // penetration) has not grown beyond its largest so far, for this many iterations is given up
+  // (the driver cuts it back) before max_iterations: SPEC 4.2 model B loaded past its friction
+  // capacity never went below its 3rd iteration's residual in 50 iterations (3 s each). The
+  // slowest converging increments measured take a new low at least every few iterations
+  // (bench/contact/README.md), or have a fluid running through the interface one node per
+  // iteration (SPEC 4.6 flange, ring 30 thick: 12 iterations of growth, then converged). 0: off.
   int stagnation_iterations = 12;
   double tolerance = 1e-9;  // on IterationRecord::residual
   // Predictor: the multipliers and rigid motions of the last converged increment plus this
