@@ -104,11 +104,9 @@ std::string sci(double v) {
   return text;
 }
 
-// Nodal forces of a uniform traction on the faces of `surface`: traction times the nodal areas
-// integral N_i dA of each face (the consistent load), summed per node (a later *CLOAD line for the
-// same node and dof would replace an earlier one).
-void add_traction(Model& model, const ElementRegistry& registry, const std::string& surface,
-                  const Eigen::Vector3d& traction) {
+// The nodal areas integral N_i dA (SPEC §2.5) of the faces of `surface`, summed per node.
+std::map<int, double> summed_nodal_areas(const Model& model, const ElementRegistry& registry,
+                                         const std::string& surface) {
   std::map<int, double> area_of;
   for (const SurfaceFace& f : model.surfaces.at(surface).faces) {
     const Element& element = model.elements[f.element];
@@ -122,7 +120,15 @@ void add_traction(Model& model, const ElementRegistry& registry, const std::stri
     for (int k = 0; k < element.node_count; ++k)
       if (area[k] != 0.0) area_of[nodes[k]] += area[k];
   }
-  for (const auto& [node, area] : area_of)
+  return area_of;
+}
+
+// Nodal forces of a uniform traction on the faces of `surface`: traction times the nodal areas
+// integral N_i dA of each face (the consistent load), summed per node (a later *CLOAD line for the
+// same node and dof would replace an earlier one).
+void add_traction(Model& model, const ElementRegistry& registry, const std::string& surface,
+                  const Eigen::Vector3d& traction) {
+  for (const auto& [node, area] : summed_nodal_areas(model, registry, surface))
     for (int d = 0; d < 3; ++d)
       if (traction[d] != 0.0)
         model.steps[0].cloads.push_back({node, d + 1, traction[d] * area, {}});
@@ -414,19 +420,7 @@ TEST_F(MortarContact, ConcentricCylindersFourSlaveElementsOnSix) {
 TEST_F(MortarContact, ProjectedNodalAreaRemovesTheCurvatureError) {
   const Model model = cylinders(4, 4, "C3D21", ContactPair::Type::NodeToSurface);
   const Results results = run_static_analysis(model, registry(), SolveOptions{}, nullptr, nullptr);
-  std::map<int, double> scalar_area;
-  for (const SurfaceFace& f : model.surfaces.at("OUTER_IN").faces) {
-    const Element& element = model.elements[f.element];
-    ElementGeometry g;
-    g.X.resize(element.node_count, 3);
-    const int* nodes = model.element_nodes(f.element);
-    for (int k = 0; k < element.node_count; ++k)
-      for (int d = 0; d < 3; ++d) g.X(k, d) = model.coords[nodes[k]][d];
-    Eigen::VectorXd area;
-    registry().find(element.type)->nodal_areas(g, f.face - 1, area);
-    for (int k = 0; k < element.node_count; ++k)
-      if (area[k] != 0.0) scalar_area[nodes[k]] += area[k];
-  }
+  const std::map<int, double> scalar_area = summed_nodal_areas(model, registry(), "OUTER_IN");
   const double alpha2 = (kPi / 8.0) * (kPi / 8.0);
   int corners = 0, mid_edges = 0;
   for (const ContactNodeResult& c : results.increments.back().contact) {
