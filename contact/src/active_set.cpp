@@ -247,11 +247,13 @@ class IncrementIteration {
       next.alpha = at_.alpha + damping_ * (next.alpha - at_.alpha);
       next.d = displacements(system_, loads_, next);
     }
+    const int sweeps = front_predicted_ ? 0 : predict_front(next);
     IterationRecord record;
     record.iteration = iteration;
     record.damping = damping_;
     record.regularised = regularised;
     record.reused_factor = factor_.reused > reused_before;
+    record.sweeps = sweeps;
     const double scale = force_scale(next);
     std::vector<NodeStatus> new_status;
     std::vector<int> changed = classify_iterate(next, scale, new_status, record.residual);
@@ -283,6 +285,28 @@ class IncrementIteration {
     advance(std::move(next), std::move(new_status), std::move(new_zone), zone_changes > 0);
     if (options_.anticipate_on_cone) linearise_on_cone(anticipated);
     return converged ? Step::converged : Step::next;
+  }
+
+  // The front predictor (ActiveSetOptions::predictor_sweeps) on the elastic trial's solution:
+  // Gauss-Seidel sweeps on d = d0 - S lambda move the stick/slip front and the multipliers
+  // towards the solution, and the classification then starts the Newton steps from there. Only
+  // where S is held, no body is held by contact alone (the sweeps do not move the rigid motions)
+  // and every law is linear (the sweeps' projections solve a node's normal row exactly only
+  // there); no fluid (its zone follows the Newton iterate). Returns the sweeps run.
+  int predict_front(Iterate& next) {
+    front_predicted_ = true;
+    if (options_.predictor_sweeps <= 0 || !from_elastic_trial_ || k_ != 0 ||
+        system_.S.size() == 0 || !system_.fluid.empty() || nonlinear_springs_ || damping_ < 1.0)
+      return 0;
+    for (const ContactConstraint& c : constraints_)
+      if (c.bonded) return 0;
+    Iterate swept = next;
+    const int sweeps =
+        gauss_seidel_sweeps(constraints_, system_, setup_, state_.nodes, 1e-12 * force_scale(next),
+                            options_.predictor_sweeps, options_.predictor_settled_sweeps, swept);
+    if (!swept.lambda.allFinite() || !swept.d.allFinite()) return 0;
+    next = std::move(swept);
+    return sweeps;
   }
 
   // The EXPONENTIAL law carries at least A p0 / 100 on a closed node (its force at the clearance
@@ -566,6 +590,7 @@ class IncrementIteration {
   bool full_step_allowed_ = true;    // no early full step has led back into a cycle
   bool from_elastic_trial_ = false;  // the increment started from the elastic trial
   bool front_receded_ = false;       // some node went from slip back to stick
+  bool front_predicted_ = false;     // the front predictor has had its turn (the first solve)
   bool closed_touching_ = false;     // the touching nodes have been closed after a singular solve
   int exponential_stalls_ = 0;       // iterations in a row with nodes below the least force
   LinearisedFactor factor_;          // the last large linearised system's factor, for reuse

@@ -94,4 +94,12 @@ BodyHold body_hold(const std::vector<ContactConstraint>& constraints,
                    const std::vector<NodeStatus>& status, const Iterate& at,
                    const std::vector<ConstraintState>& previous, const ActiveSetOptions& options);
 
+// Nonsmooth block Gauss-Seidel sweeps on d = d0 - S lambda from `x` (S held densely, no bodies
+// held by contact alone), until the statuses are unchanged over `settled_sweeps` sweeps or
+// `max_sweeps` have run. Returns the sweeps run; `x` holds their multipliers and displacements.
+int gauss_seidel_sweeps(const std::vector<ContactConstraint>& constraints,
+                        const LinearContactSystem& system, const Setup& setup,
+                        const std::vector<ConstraintState>& previous, double eps, int max_sweeps,
+                        int settled_sweeps, Iterate& x);
+
 }  // namespace styk::contact::active_set_detail

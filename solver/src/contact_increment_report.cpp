@@ -120,6 +120,7 @@ std::string iteration_line(const contact::IterationRecord& r, bool fluid) {
          (r.anticipated > 0 ? format(" (%.0f of them ahead of the slip front)", r.anticipated)
                             : "") +
          (fluid ? format(", %.0f penetrated", r.penetrated) : "") +
+         (r.sweeps > 0 ? format(", front predicted by %.0f Gauss-Seidel sweeps", r.sweeps) : "") +
          (r.cycle ? format(", cycle detected: step length %.3g", r.damping) : "") +
          (r.regularised ? ", held by slipping nodes alone: slip springs" : "") +
          (r.reused_factor ? ", previous factor refined" : "");

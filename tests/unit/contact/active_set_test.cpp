@@ -1,7 +1,9 @@
 // The active-set iteration on small systems with known solutions.
 #include "styk/contact/active_set.hpp"
 
+#include <algorithm>
 #include <cmath>
+#include <vector>
 
 #include <Eigen/LU>
 
@@ -260,6 +262,82 @@ TEST(ActiveSet, ReusedFactorGivesTheSameIncrement) {
                           (plain.nodes[j].lambda - reusing.nodes[j].lambda).cwiseAbs().maxCoeff());
   }
   EXPECT_LT(difference, 1e-10 * largest);
+}
+
+// The front predictor (ActiveSetOptions::predictor_sweeps): Gauss-Seidel sweeps after the elastic
+// trial's solve, on systems whose S is held and where no body is held by contact alone. On the
+// sheared patch they change the path, not the solution (same statuses, multipliers to 1e-10 of
+// the largest); they do not run when switched off or where a body is held by contact alone.
+struct PatchRun {
+  IncrementOutcome outcome;
+  ContactState state;
+};
+
+PatchRun solve_patch(const LinearContactSystem& s, const ActiveSetOptions& options) {
+  const int m = static_cast<int>(s.d0.size() / 3);
+  const std::vector<ContactConstraint> cs(m, constraint(FrictionLaw::Kind::Coulomb, 0.3, 0.3, 0));
+  PatchRun run;
+  run.outcome = solve_increment(cs, s, run.state, options, {});
+  EXPECT_TRUE(run.outcome.converged) << run.outcome.reason;
+  return run;
+}
+
+TEST(ActiveSet, FrontPredictorChangesThePathNotTheSolution) {
+  const LinearContactSystem s = sheared_patch(40);
+  ActiveSetOptions off;
+  off.predictor_sweeps = 0;
+  const PatchRun with = solve_patch(s, ActiveSetOptions{});
+  const PatchRun without = solve_patch(s, off);
+  ASSERT_FALSE(with.outcome.history.empty() || without.outcome.history.empty());
+  EXPECT_GT(with.outcome.history.front().sweeps, 0);
+  EXPECT_EQ(without.outcome.history.front().sweeps, 0);
+  double largest = 0.0, difference = 0.0;
+  for (std::size_t j = 0; j < with.state.nodes.size(); ++j) {
+    EXPECT_EQ(with.state.nodes[j].status, without.state.nodes[j].status) << j;
+    largest = std::max(largest, without.state.nodes[j].lambda.cwiseAbs().maxCoeff());
+    difference = std::max(
+        difference,
+        (with.state.nodes[j].lambda - without.state.nodes[j].lambda).cwiseAbs().maxCoeff());
+  }
+  EXPECT_LT(difference, 1e-10 * largest);
+
+  // A body held by contact alone (one free rigid motion along the normals, balanced by a load):
+  // the sweeps would not move it, so they do not run.
+  LinearContactSystem held = s;
+  held.G = Eigen::MatrixXd::Zero(s.d0.size(), 1);
+  for (Eigen::Index j = 0; j < held.G.rows(); j += 3) held.G(j, 0) = 1.0;
+  held.h = Eigen::VectorXd::Constant(1, 20.0);
+  const PatchRun body = solve_patch(held, ActiveSetOptions{});
+  for (const IterationRecord& r : body.outcome.history) EXPECT_EQ(r.sweeps, 0);
+}
+
+// The sweeps alone solve the problem: run to the end (no early stop on settled statuses), the
+// iterate they leave after the trial's solve satisfies the complementarity conditions to the
+// tolerance. The statuses differ from the trial's (all sticking), so one Newton step on them
+// follows and confirms it: two iterations, the Newton path's statuses and multipliers.
+TEST(ActiveSet, GaussSeidelSweepsAloneReachTheSolution) {
+  const LinearContactSystem s = sheared_patch(40);
+  ActiveSetOptions sweeps_only;
+  sweeps_only.predictor_sweeps = 3000;
+  sweeps_only.predictor_settled_sweeps = 3000;
+  ActiveSetOptions off;
+  off.predictor_sweeps = 0;
+  const PatchRun swept = solve_patch(s, sweeps_only);
+  const PatchRun newton = solve_patch(s, off);
+  EXPECT_EQ(swept.outcome.iterations, 2);
+  EXPECT_EQ(swept.outcome.history.front().sweeps, 3000);
+  EXPECT_GT(swept.outcome.history.front().changes, 0);
+  EXPECT_LE(swept.outcome.history.front().residual, 1e-9);
+  EXPECT_GT(newton.outcome.iterations, 1);
+  double largest = 0.0, difference = 0.0;
+  for (std::size_t j = 0; j < swept.state.nodes.size(); ++j) {
+    EXPECT_EQ(swept.state.nodes[j].status, newton.state.nodes[j].status) << j;
+    largest = std::max(largest, newton.state.nodes[j].lambda.cwiseAbs().maxCoeff());
+    difference = std::max(
+        difference,
+        (swept.state.nodes[j].lambda - newton.state.nodes[j].lambda).cwiseAbs().maxCoeff());
+  }
+  EXPECT_LT(difference, 1e-8 * largest);
 }
 
 TEST(ActiveSet, NonConvergenceIsReportedWithTheFlippingNodes) {
