@@ -82,7 +82,8 @@ Polygon projected_boundary(const PlacedFace& f, const Plane& plane) {
   const Polygon corners = domain_corners(f);
   Polygon out;
   for (std::size_t i = 0; i < corners.size(); ++i) {
-    const Eigen::Vector2d a = corners[i], b = corners[(i + 1) % corners.size()];
+    const Eigen::Vector2d& a = corners[i];
+    const Eigen::Vector2d& b = corners[(i + 1) % corners.size()];
     const Eigen::Vector2d ya = projected_point(f, plane, a), yb = projected_point(f, plane, b);
     const Eigen::Vector2d chord = yb - ya;
     bool straight = true;
@@ -115,7 +116,8 @@ Polygon counter_clockwise(Polygon polygon) {
 Polygon clip_polygon(Polygon subject, const Polygon& clip, double length) {
   const double tolerance = 1e-12 * length * length;
   for (std::size_t i = 0; i < clip.size() && subject.size() >= 3; ++i) {
-    const Eigen::Vector2d a = clip[i], b = clip[(i + 1) % clip.size()];
+    const Eigen::Vector2d& a = clip[i];
+    const Eigen::Vector2d& b = clip[(i + 1) % clip.size()];
     auto side = [&](const Eigen::Vector2d& x) {
       const double s = cross(b - a, x - a);
       return std::abs(s) <= tolerance ? 0.0 : s;
