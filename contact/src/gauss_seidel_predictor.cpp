@@ -55,9 +55,8 @@ int gauss_seidel_sweeps(const std::vector<ContactConstraint>& constraints,
         x.lambda.segment<3>(3 * j) = now;
         x.d.noalias() -= system.S.middleCols<3>(3 * j) * change;
       }
-      const NodeStatus status =
-          classify(point_of(constraints[j], setup, j, now, x.d.segment<3>(3 * j),
-                            previous[j].d_ref, eps));
+      const NodeStatus status = classify(
+          point_of(constraints[j], setup, j, now, x.d.segment<3>(3 * j), previous[j].d_ref, eps));
       changes += status != last[j] ? 1 : 0;
       last[j] = status;
     }
