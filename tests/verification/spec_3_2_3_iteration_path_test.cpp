@@ -1,10 +1,9 @@
-// SPEC §3.2.3 two cantilevers at mu = 10 (docs/contact.md "Iteration, diagnostics, failure"):
-// the front predictor (ActiveSetOptions::predictor_sweeps) and the slip-front anticipation at the
-// kink (ActiveSetOptions::front_kink_band, anticipate_on_cone) only changes the active-set
-// iteration's path. The beams' linear contact system (S = B K^-1 B^T, d0 = B u of the pressure
-// alone) is built from the solver's pieces and solved by solve_increment with the anticipation of
-// before (kink band 0, no move onto the cone) and with the defaults; both paths reach the same
-// statuses and, converged further, the same multipliers.
+// SPEC §3.2.3 two cantilevers (docs/contact.md "Iteration, diagnostics, failure"): the front
+// predictor (ActiveSetOptions::predictor_sweeps), the slip-front anticipation at the kink
+// (front_kink_band, anticipate_on_cone) and the full step after a cycle only change the
+// active-set iteration's path. The beams' linear contact system (S = B K^-1 B^T, d0 = B u of the
+// pressure alone) is built from the solver's pieces and solved by solve_increment with and
+// without each; the paths reach the same statuses and, converged further, the same multipliers.
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
